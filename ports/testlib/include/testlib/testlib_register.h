@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/testlib/testlib_register.h: one driver runs many named tests.
+/// A library's test_driver.cxx DECLAREs each test, REGISTERs it in register_tests(),
+/// and calls testlib_main(); `driver test_name` then runs that one test.
+#pragma once
+
+#include <string>
+
+using TestMainFunction = int (*)(int, char*[]);
+
+void testlib_register_test(const std::string& name, TestMainFunction main_function);
+/// Runs the test named by argv[1] (or every registered test when none is named).
+int testlib_main(int argc, char* argv[]);
+
+/// Declares `name_main`, the entry point that a test file defines with TESTMAIN.
+#define DECLARE(testname) int testname##_main(int argc, char* argv[])
+#define REGISTER(testname) testlib_register_test(#testname, &testname##_main)
+/// The driver's main(): the driver file defines register_tests() with its REGISTER lines.
+#define DEFINE_MAIN                     \
+  int main(int argc, char* argv[]) {    \
+    register_tests();                   \
+    return testlib_main(argc, argv);    \
+  }
+
+void register_tests();

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The README's test command: installs what is missing, builds the host trees (double, s40_23,
+# and double with ASan+UBSan) and the ARM trees (s40_23, double soft-float), and runs ctest in
+# each; ARM tests run on qemu-arm -cpu pxa270. Fails if any build or test fails.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
+jobs=${EDGETRACK_JOBS:-$(nproc)}
+
+"$top/toolchains/install-deps.sh"
+
+arm_toolchain=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
+# name | cmake arguments
+trees=(
+  "host-double|-DEDGETRACK_REAL=double"
+  "host-s40_23|-DEDGETRACK_REAL=s40_23"
+  "host-asan|-DEDGETRACK_REAL=double -DEDGETRACK_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
+  "arm-s40_23|-DEDGETRACK_REAL=s40_23 ${arm_toolchain[*]}"
+  "arm-double|-DEDGETRACK_REAL=double ${arm_toolchain[*]}"
+)
+
+failed=()
+start=$SECONDS
+for entry in "${trees[@]}"; do
+  name=${entry%%|*}
+  read -r -a args <<<"${entry#*|}"
+  dir="$build_root/$name"
+  echo "=== $name: configure and build"
+  t0=$SECONDS
+  mkdir -p "$build_root"
+  if ! cmake -S "$top" -B "$dir" -G Ninja "${args[@]}" >"$dir.configure.log" 2>&1; then
+    cat "$dir.configure.log"; failed+=("$name (configure)"); continue
+  fi
+  if ! cmake --build "$dir" -j "$jobs" >"$dir.build.log" 2>&1; then
+    tail -n 60 "$dir.build.log"; failed+=("$name (build)"); continue
+  fi
+  echo "=== $name: ctest"
+  if ! ctest --test-dir "$dir" -j "$jobs" --output-on-failure --timeout 900; then
+    failed+=("$name (tests)")
+  fi
+  echo "=== $name: $((SECONDS - t0)) s"
+done
+
+echo "=== all trees: $((SECONDS - start)) s"
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "FAILED: ${failed[*]}"
+  exit 1
+fi
+echo "All trees built and passed their tests."

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Installs the Debian 12 packages edgetrack builds and tests with; silent when all are there.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config           # host build
+  g++-arm-linux-gnueabi qemu-user            # ARMv5TE soft-float build, run on qemu-arm -cpu pxa270
+  libcminpack-dev libeigen3-dev              # upstream MINPACK and Eigen's LM, for comparisons
+  libvisp-dev visp-images-data               # upstream ViSP 3.5 and its real image sequences
+  libopencv-dev libosmesa6-dev               # host image/video I/O and offscreen GL
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
