@@ -35,6 +35,9 @@ for entry in "${trees[@]}"; do
   if ! cmake --build "$dir" -j "$jobs" >"$dir.build.log" 2>&1; then
     tail -n 60 "$dir.build.log"; failed+=("$name (build)"); continue
   fi
+  if [[ $name == arm-* ]] && ! "$top/toolchains/check-soft-float.sh" "$dir"; then
+    failed+=("$name (VFP instructions in a soft-float build)"); continue
+  fi
   echo "=== $name: ctest"
   if ! ctest --test-dir "$dir" -j "$jobs" --output-on-failure --timeout 900; then
     failed+=("$name (tests)")
