@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_math.h: the constants (pi, pi_over_2, pi_over_4 and the others
+/// the paper had to add) and the small generic helpers (abs, sqr, cube, sgn, max, min, hypot).
+/// The constants are doubles, as upstream; `vnl_math::constant<T>::pi` and friends give the
+/// same values already converted to T at compile time, so fixed-point code never converts a
+/// double at run time.
+#pragma once
+
+#include <cmath>
+
+namespace vnl_math {
+
+constexpr double e = 2.71828182845904523536;
+constexpr double log2e = 1.44269504088896340736;
+constexpr double log10e = 0.43429448190325182765;
+constexpr double ln2 = 0.69314718055994530942;
+constexpr double ln10 = 2.30258509299404568402;
+constexpr double pi = 3.14159265358979323846;
+constexpr double twopi = 6.28318530717958647692;
+constexpr double pi_over_2 = 1.57079632679489661923;
+constexpr double pi_over_4 = 0.78539816339744830962;
+constexpr double pi_over_180 = 0.01745329251994329577;
+constexpr double one_over_pi = 0.31830988618379067154;
+constexpr double two_over_pi = 0.63661977236758134308;
+constexpr double deg_per_rad = 57.2957795130823208768;
+constexpr double sqrt2pi = 2.50662827463100050242;
+constexpr double two_over_sqrtpi = 1.12837916709551257390;
+constexpr double sqrt2 = 1.41421356237309504880;
+constexpr double sqrt1_2 = 0.70710678118654752440;
+constexpr double sqrt1_3 = 0.57735026918962573106;
+
+/// The constants above as T, computed at compile time.
+template <class T>
+struct constant {
+  static constexpr T pi = T(vnl_math::pi);
+  static constexpr T twopi = T(vnl_math::twopi);
+  static constexpr T pi_over_2 = T(vnl_math::pi_over_2);
+  static constexpr T pi_over_4 = T(vnl_math::pi_over_4);
+  static constexpr T pi_over_180 = T(vnl_math::pi_over_180);
+  static constexpr T deg_per_rad = T(vnl_math::deg_per_rad);
+  static constexpr T sqrt2 = T(vnl_math::sqrt2);
+  static constexpr T sqrt1_2 = T(vnl_math::sqrt1_2);
+};
+
+template <class T>
+T abs(const T& x) { return x < T(0) ? -x : x; }
+template <class T>
+T sqr(const T& x) { return x * x; }
+template <class T>
+T cube(const T& x) { return x * x * x; }
+/// -1, 0 or +1.
+template <class T>
+int sgn(const T& x) { return x > T(0) ? 1 : (x < T(0) ? -1 : 0); }
+/// -1 or +1 (+1 for zero).
+template <class T>
+int sgn0(const T& x) { return x < T(0) ? -1 : 1; }
+template <class T>
+T max(const T& a, const T& b) { return a < b ? b : a; }
+template <class T>
+T min(const T& a, const T& b) { return b < a ? b : a; }
+/// sqrt(a^2 + b^2) without overflow or underflow of the squares.
+template <class T>
+T hypot(const T& a, const T& b) {
+  using std::sqrt;
+  const T x = vnl_math::abs(a);
+  const T y = vnl_math::abs(b);
+  const T big = x < y ? y : x;
+  const T small = x < y ? x : y;
+  if (big == T(0)) return T(0);
+  const T ratio = small / big;
+  return big * sqrt(T(1) + ratio * ratio);
+}
+
+}  // namespace vnl_math

@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_matrix_fixed.h: an r x c matrix of T held by value, row-major,
+/// with vnl_matrix's names, and its products with vnl_vector_fixed. Header-only.
+#pragma once
+
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+
+#include "vnl/vnl_matrix.h"
+#include "vnl/vnl_vector_fixed.h"
+
+template <class T, unsigned int num_rows, unsigned int num_cols>
+class vnl_matrix_fixed {
+ public:
+  using element_type = T;
+
+  /// All zeros (upstream leaves it uninitialised).
+  vnl_matrix_fixed() { fill(T(0)); }
+  explicit vnl_matrix_fixed(const T& value) { fill(value); }
+  /// From row-major data.
+  explicit vnl_matrix_fixed(const T* data) { copy_in(data); }
+  explicit vnl_matrix_fixed(const vnl_matrix<T>& m) {
+    assert(m.rows() == num_rows && m.cols() == num_cols);
+    copy_in(m.data_block());
+  }
+
+  static constexpr std::size_t rows() { return num_rows; }
+  static constexpr std::size_t cols() { return num_cols; }
+  static constexpr std::size_t columns() { return num_cols; }
+  static constexpr std::size_t size() { return num_rows * num_cols; }
+
+  T& operator()(std::size_t r, std::size_t c) { return data_[r][c]; }
+  const T& operator()(std::size_t r, std::size_t c) const { return data_[r][c]; }
+  T* operator[](std::size_t r) { return data_[r]; }
+  const T* operator[](std::size_t r) const { return data_[r]; }
+  T get(std::size_t r, std::size_t c) const { return data_[r][c]; }
+  void put(std::size_t r, std::size_t c, const T& v) { data_[r][c] = v; }
+  T* data_block() { return data_[0]; }
+  const T* data_block() const { return data_[0]; }
+
+  vnl_matrix_fixed& fill(const T& value) {
+    for (auto& row : data_) {
+      for (T& x : row) x = value;
+    }
+    return *this;
+  }
+  vnl_matrix_fixed& set_identity() {
+    fill(T(0));
+    for (unsigned i = 0; i < num_rows && i < num_cols; ++i) data_[i][i] = T(1);
+    return *this;
+  }
+  vnl_matrix_fixed& copy_in(const T* data) {
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) data_[r][c] = data[r * num_cols + c];
+    }
+    return *this;
+  }
+  /// A heap copy, for code written against vnl_matrix.
+  vnl_matrix<T> as_matrix() const { return vnl_matrix<T>(data_block(), num_rows, num_cols); }
+
+  vnl_matrix_fixed<T, num_cols, num_rows> transpose() const {
+    vnl_matrix_fixed<T, num_cols, num_rows> result;
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) result(c, r) = data_[r][c];
+    }
+    return result;
+  }
+  vnl_vector_fixed<T, num_cols> get_row(unsigned r) const { return vnl_vector_fixed<T, num_cols>(data_[r]); }
+  vnl_vector_fixed<T, num_rows> get_column(unsigned c) const {
+    vnl_vector_fixed<T, num_rows> column;
+    for (unsigned r = 0; r < num_rows; ++r) column[r] = data_[r][c];
+    return column;
+  }
+  vnl_matrix_fixed& set_row(unsigned r, const vnl_vector_fixed<T, num_cols>& v) {
+    for (unsigned c = 0; c < num_cols; ++c) data_[r][c] = v[c];
+    return *this;
+  }
+  vnl_matrix_fixed& set_column(unsigned c, const vnl_vector_fixed<T, num_rows>& v) {
+    for (unsigned r = 0; r < num_rows; ++r) data_[r][c] = v[r];
+    return *this;
+  }
+
+  vnl_matrix_fixed& operator+=(const vnl_matrix_fixed& rhs) {
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) data_[r][c] += rhs.data_[r][c];
+    }
+    return *this;
+  }
+  vnl_matrix_fixed& operator-=(const vnl_matrix_fixed& rhs) {
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) data_[r][c] -= rhs.data_[r][c];
+    }
+    return *this;
+  }
+  vnl_matrix_fixed& operator*=(const T& s) {
+    for (auto& row : data_) {
+      for (T& x : row) x *= s;
+    }
+    return *this;
+  }
+  vnl_matrix_fixed operator-() const {
+    vnl_matrix_fixed result(*this);
+    result *= T(-1);
+    return result;
+  }
+
+  T frobenius_norm() const {
+    using std::sqrt;
+    T total(0);
+    for (const auto& row : data_) {
+      for (const T& x : row) total += x * x;
+    }
+    return sqrt(total);
+  }
+  T fro_norm() const { return frobenius_norm(); }
+  bool is_identity(const T& tol) const {
+    using std::abs;
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) {
+        if (abs(data_[r][c] - (r == c ? T(1) : T(0))) > tol) return false;
+      }
+    }
+    return true;
+  }
+
+  bool operator==(const vnl_matrix_fixed& rhs) const {
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) {
+        if (data_[r][c] != rhs.data_[r][c]) return false;
+      }
+    }
+    return true;
+  }
+  bool operator!=(const vnl_matrix_fixed& rhs) const { return !(*this == rhs); }
+
+ private:
+  T data_[num_rows][num_cols];
+};
+
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator+(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) { return a += b; }
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator-(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) { return a -= b; }
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator*(vnl_matrix_fixed<T, r, c> m, const T& s) { return m *= s; }
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator*(const T& s, vnl_matrix_fixed<T, r, c> m) { return m *= s; }
+
+template <class T, unsigned r, unsigned k, unsigned c>
+vnl_matrix_fixed<T, r, c> operator*(const vnl_matrix_fixed<T, r, k>& a, const vnl_matrix_fixed<T, k, c>& b) {
+  vnl_matrix_fixed<T, r, c> result;
+  for (unsigned i = 0; i < r; ++i) {
+    for (unsigned j = 0; j < c; ++j) {
+      T total(0);
+      for (unsigned l = 0; l < k; ++l) total += a(i, l) * b(l, j);
+      result(i, j) = total;
+    }
+  }
+  return result;
+}
+
+template <class T, unsigned r, unsigned c>
+vnl_vector_fixed<T, r> operator*(const vnl_matrix_fixed<T, r, c>& m, const vnl_vector_fixed<T, c>& v) {
+  vnl_vector_fixed<T, r> result;
+  for (unsigned i = 0; i < r; ++i) {
+    T total(0);
+    for (unsigned j = 0; j < c; ++j) total += m(i, j) * v[j];
+    result[i] = total;
+  }
+  return result;
+}
+
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> outer_product(const vnl_vector_fixed<T, r>& a, const vnl_vector_fixed<T, c>& b) {
+  vnl_matrix_fixed<T, r, c> result;
+  for (unsigned i = 0; i < r; ++i) {
+    for (unsigned j = 0; j < c; ++j) result(i, j) = a[i] * b[j];
+  }
+  return result;
+}
+
+using vnl_double_3x3 = vnl_matrix_fixed<double, 3, 3>;

@@ -1,0 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates vnl_rotation_matrix for the configured `real` (upstream: core/vnl/Templates/).
+#include "real/real.h"
+#include "vnl/vnl_rotation_matrix.hxx"
+
+VNL_ROTATION_MATRIX_INSTANTIATE(real);

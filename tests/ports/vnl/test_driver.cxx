@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "testlib/testlib_register.h"
+
+DECLARE(test_vector);
+DECLARE(test_matrix);
+DECLARE(test_math);
+DECLARE(test_rotation_matrix);
+
+void register_tests() {
+  REGISTER(test_vector);
+  REGISTER(test_matrix);
+  REGISTER(test_math);
+  REGISTER(test_rotation_matrix);
+}
+
+DEFINE_MAIN
