@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Runs a static ARM binary on qemu-arm -cpu pxa270 with our instruction-counting plugin and reports
+# how many guest instructions it executed, how many of them inside libgcc's soft-float routines,
+# and the same inside the edgetrack_count_begin()/edgetrack_count_end() windows.
+#
+#   count-insns.sh [--out FILE] [--windows FILE] [--mode tb|insn] <arm-binary> [args...]
+#
+# The program's stdout and stderr pass through and its exit status is returned. The summary line
+#   edgetrack-count total=N softfloat=N windows=N window_total=N window_softfloat=N unbalanced=N
+# goes to FILE with --out, else to stderr; --windows FILE gets one line per window
+# ("window <i> insns=N softfloat=N"). The plugin is a host library, built here on first use with the
+# host C compiler ($EDGETRACK_HOST_CC, default cc) into $EDGETRACK_PLUGIN_DIR (default
+# $EDGETRACK_BUILD_ROOT/qemu-plugin, else build/qemu-plugin).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+top=$(cd "$here/../.." && pwd)
+triple=arm-linux-gnueabi
+sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
+
+usage() { sed -n '7p' "$0" | sed 's/^# *//' >&2; exit 2; }
+
+out= windows= mode=tb
+while [ $# -gt 0 ]; do
+  case $1 in
+    --out) out=$2; shift 2 ;;
+    --windows) windows=$2; shift 2 ;;
+    --mode) mode=$2; shift 2 ;;
+    --) shift; break ;;
+    -*) usage ;;
+    *) break ;;
+  esac
+done
+[ $# -ge 1 ] || usage
+binary=$1; shift
+[ -f "$binary" ] || { echo "count-insns: no such binary: $binary" >&2; exit 2; }
+
+# Build the plugin when it is missing or older than its sources; rename into place, so parallel
+# runs never load a half-written library.
+plugin_dir=${EDGETRACK_PLUGIN_DIR:-${EDGETRACK_BUILD_ROOT:-$top/build}/qemu-plugin}
+plugin=$plugin_dir/insn_count.so
+if [ ! -f "$plugin" ] || [ "$here/insn_count.c" -nt "$plugin" ] || [ "$here/qemu_plugin_api.h" -nt "$plugin" ]; then
+  mkdir -p "$plugin_dir"
+  "${EDGETRACK_HOST_CC:-cc}" -std=c11 -O2 -Wall -Wextra -shared -fPIC -fvisibility=hidden \
+    -o "$plugin.$$" "$here/insn_count.c"
+  mv -f "$plugin.$$" "$plugin"
+fi
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/count-insns.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+# Soft-float routines: every global function that libgcc's floating-point members define (the
+# ARM assembly ones, _arm_*df*/_arm_*sf*, and the C soft-fp ones: fix*, float*, pow*, complex,
+# fp16). Their names are then looked up in the binary, which is static, so addresses are final.
+libgcc=$($triple-gcc -print-libgcc-file-name)
+$triple-nm -A --defined-only "$libgcc" 2>/dev/null |
+  awk '{ n = split($1, path, ":"); member = path[n - 1] }
+       member ~ /(df|sf|dc3|sc3|fp16)/ && ($(NF-1) == "T" || $(NF-1) == "W") { print $NF }' |
+  sort -u >"$work/softfloat-names"
+
+# Function ranges from the binary: [address, address + size), or up to the next code symbol when
+# the size is missing. Bit 0 (a Thumb entry) is cleared.
+$triple-nm --defined-only -S -n "$binary" >"$work/symbols"
+awk 'function hex(s,   v, i) { v = 0; for (i = 1; i <= length(s); ++i) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
+     NR == FNR { wanted[$1] = 1; next }
+     { if (NF == 4) { size = $2; type = $3 } else { size = ""; type = $2 } }
+     type !~ /^[TtWw]$/ { next }
+     { a = hex($1); a -= a % 2
+       if (pending != "" && a > pending) { printf "%x %x %s\n", pending, a, pending_name; pending = "" }
+       if (!($NF in wanted)) next
+       if (size != "") printf "%x %x %s\n", a, a + hex(size), $NF
+       else if (pending == "") { pending = a; pending_name = $NF } }' \
+  "$work/softfloat-names" "$work/symbols" >"$work/ranges"
+
+marker_address() { awk -v n="$1" '$NF == n { print "0x" $1; exit }' "$work/symbols"; }
+escape() { printf '%s' "${1//,/,,}"; }  # QEMU option syntax doubles commas
+args="ranges=$(escape "$work/ranges"),mode=$mode,out=$(escape "${out:-$work/summary}")"
+begin=$(marker_address edgetrack_count_begin)
+end=$(marker_address edgetrack_count_end)
+[ -n "$begin" ] && args+=",begin=$begin"
+[ -n "$end" ] && args+=",end=$end"
+[ -n "$windows" ] && args+=",windows=$(escape "$windows")"
+
+status=0
+qemu-arm -cpu pxa270 -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+if [ -z "$out" ]; then
+  if [ -s "$work/summary" ]; then cat "$work/summary" >&2; else echo "count-insns: the plugin wrote no summary" >&2; fi
+fi
+exit $status
