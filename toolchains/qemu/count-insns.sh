@@ -34,6 +34,12 @@ done
 [ $# -ge 1 ] || usage
 binary=$1; shift
 [ -f "$binary" ] || { echo "count-insns: no such binary: $binary" >&2; exit 2; }
+# Symbol addresses are only run-time addresses in a non-PIE executable (ELF type EXEC).
+header=$($triple-readelf -h "$binary" 2>/dev/null || true)
+if ! grep -q 'Type: *EXEC' <<<"$header" || ! grep -q 'Machine: *ARM' <<<"$header"; then
+  echo "count-insns: $binary is not a non-PIE ARM executable (link it with -static -no-pie)" >&2
+  exit 2
+fi
 
 # Build the plugin when it is missing or older than its sources; rename into place, so parallel
 # runs never load a half-written library.
