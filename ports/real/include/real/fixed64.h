@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The 64-bit signed fixed-point type of the paper's section 3.3 (S47.16, then S40.23), written
+/// after fpm's include/fpm/fixed.hpp: a class template over the fraction bits, free operators,
+/// rounded * and /, and std::numeric_limits. Unlike fpm it needs no wider built-in type (see
+/// wide_uint.h), and overflow saturates and is counted instead of wrapping.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <limits>
+#include <type_traits>
+
+#include "real/wide_uint.h"
+
+namespace fixedpoint {
+
+/// Number of results that saturated (overflow, division by zero, domain errors) since the
+/// process started or since the last reset. Tests and benchmarks read it; one plain process-wide
+/// counter (src/saturation.cpp), not synchronised between threads.
+std::uint64_t saturation_count() noexcept;
+void reset_saturation_count() noexcept;
+
+namespace detail {
+void count_saturation() noexcept;
+
+constexpr std::int64_t kRawMax = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kRawMin = std::numeric_limits<std::int64_t>::min();
+
+constexpr std::uint64_t magnitude(std::int64_t v) {
+  return v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+}
+
+/// Gives sign * m as a raw value, saturating (and counting) when it is out of range.
+constexpr std::int64_t signed_from_magnitude(bool negative, Uint128 m) {
+  constexpr std::uint64_t kLimit = std::uint64_t{1} << 63;
+  if (m.hi != 0 || m.lo > kLimit || (m.lo == kLimit && !negative)) {
+    count_saturation();
+    return negative ? kRawMin : kRawMax;
+  }
+  return negative ? static_cast<std::int64_t>(std::uint64_t{0} - m.lo) : static_cast<std::int64_t>(m.lo);
+}
+
+/// Rounds m / 2^s to nearest (halves away from zero), 0 <= s < 128.
+constexpr Uint128 shift_right_rounded(Uint128 m, int s) {
+  if (s == 0) return m;
+  return shift_right(m + shift_left(Uint128{0, 1}, s - 1), s);
+}
+}  // namespace detail
+
+/// A signed fixed-point number: raw() / 2^F, with raw() a 64-bit integer. Every operation that
+/// cannot represent its exact result rounds to nearest; results past the range saturate to
+/// max() or lowest() and increment saturation_count().
+template <int F>
+class fixed64 {
+  static_assert(F >= 1 && F <= 32, "fixed64 keeps between 1 and 32 fraction bits, so every int fits");
+
+ public:
+  static constexpr int kFractionBits = F;
+
+  constexpr fixed64() = default;
+  /// Exact and implicit, so that `x * 2` and `x < 0` work: F <= 32 leaves 31 integer bits.
+  constexpr fixed64(int value)  // NOLINT(google-explicit-constructor)
+      : raw_(static_cast<std::int64_t>(static_cast<std::uint64_t>(static_cast<std::int64_t>(value)) << F)) {}
+  /// Other integer types: explicit, saturating (and counting) when out of range.
+  template <class I, std::enable_if_t<std::is_integral<I>::value && !std::is_same<I, int>::value &&
+                                          !std::is_same<I, bool>::value,
+                                      int> = 0>
+  constexpr explicit fixed64(I value) : raw_(from_integer(value)) {}
+  /// Rounds to nearest; meant for constexpr set-up (`static constexpr T kHalf = T(0.5)`), as it
+  /// is floating-point arithmetic. Out-of-range values saturate; NaN gives 0; both count.
+  template <class R, std::enable_if_t<std::is_floating_point<R>::value, int> = 0>
+  constexpr explicit fixed64(R value) : raw_(from_double(static_cast<double>(value))) {}
+
+  static constexpr fixed64 from_raw(std::int64_t raw) {
+    fixed64 x;
+    x.raw_ = raw;
+    return x;
+  }
+  constexpr std::int64_t raw() const { return raw_; }
+
+  /// Truncates toward zero, as a C cast from double does; saturates to the integer type's range.
+  template <class I, std::enable_if_t<std::is_integral<I>::value && !std::is_same<I, bool>::value, int> = 0>
+  constexpr explicit operator I() const {
+    const std::int64_t whole = raw_ >= 0 ? raw_ >> F : -static_cast<std::int64_t>(detail::magnitude(raw_) >> F);
+    if (std::is_signed<I>::value) {
+      if (whole > static_cast<std::int64_t>(std::numeric_limits<I>::max())) return std::numeric_limits<I>::max();
+      if (whole < static_cast<std::int64_t>(std::numeric_limits<I>::min())) return std::numeric_limits<I>::min();
+      return static_cast<I>(whole);
+    }
+    if (whole < 0) return 0;
+    if (static_cast<std::uint64_t>(whole) > static_cast<std::uint64_t>(std::numeric_limits<I>::max()))
+      return std::numeric_limits<I>::max();
+    return static_cast<I>(whole);
+  }
+  constexpr explicit operator bool() const { return raw_ != 0; }
+  /// Rounds to nearest (one rounding for double and for float).
+  constexpr explicit operator double() const { return static_cast<double>(raw_) / kScale; }
+  constexpr explicit operator float() const {
+    return static_cast<float>(raw_) / static_cast<float>(kScale);
+  }
+  constexpr explicit operator long double() const { return static_cast<long double>(raw_) / kScale; }
+
+  friend constexpr fixed64 operator+(fixed64 x) { return x; }
+  friend constexpr fixed64 operator-(fixed64 x) {
+    if (x.raw_ == detail::kRawMin) {
+      detail::count_saturation();
+      return from_raw(detail::kRawMax);
+    }
+    return from_raw(-x.raw_);
+  }
+
+  friend constexpr fixed64 operator+(fixed64 a, fixed64 b) {
+    const std::int64_t sum =
+        static_cast<std::int64_t>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_));
+    // Overflow happened iff both operands have the same sign and the sum's sign differs.
+    if ((a.raw_ < 0) == (b.raw_ < 0) && (sum < 0) != (a.raw_ < 0)) return saturated(a.raw_ < 0);
+    return from_raw(sum);
+  }
+  friend constexpr fixed64 operator-(fixed64 a, fixed64 b) {
+    const std::int64_t difference =
+        static_cast<std::int64_t>(static_cast<std::uint64_t>(a.raw_) - static_cast<std::uint64_t>(b.raw_));
+    if ((a.raw_ < 0) != (b.raw_ < 0) && (difference < 0) != (a.raw_ < 0)) return saturated(a.raw_ < 0);
+    return from_raw(difference);
+  }
+  /// Rounded to nearest (halves away from zero): error at most half an ulp.
+  friend constexpr fixed64 operator*(fixed64 a, fixed64 b) {
+    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
+    const detail::Uint128 product = detail::multiply(detail::magnitude(a.raw_), detail::magnitude(b.raw_));
+    return from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(product, F)));
+  }
+  /// Rounded to nearest (halves away from zero): error at most half an ulp. x / 0 saturates
+  /// toward the sign of x (0 / 0 gives 0) and counts.
+  friend constexpr fixed64 operator/(fixed64 a, fixed64 b) {
+    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
+    const std::uint64_t d = detail::magnitude(b.raw_);
+    if (d == 0) {
+      detail::count_saturation();
+      return from_raw(a.raw_ == 0 ? 0 : a.raw_ < 0 ? detail::kRawMin : detail::kRawMax);
+    }
+    const detail::Uint128 n = detail::shift_left(detail::Uint128{0, detail::magnitude(a.raw_)}, F);
+    if (n.hi >= d) return saturated(negative);  // the quotient would not even fit 64 bits
+    const detail::Division qr = detail::divide(n, d);
+    detail::Uint128 q{0, qr.quotient};
+    if (qr.remainder >= d - qr.remainder) q = q + detail::Uint128{0, 1};  // 2r >= d
+    return from_raw(detail::signed_from_magnitude(negative, q));
+  }
+
+  constexpr fixed64& operator+=(fixed64 b) { return *this = *this + b; }
+  constexpr fixed64& operator-=(fixed64 b) { return *this = *this - b; }
+  constexpr fixed64& operator*=(fixed64 b) { return *this = *this * b; }
+  constexpr fixed64& operator/=(fixed64 b) { return *this = *this / b; }
+
+  friend constexpr bool operator==(fixed64 a, fixed64 b) { return a.raw_ == b.raw_; }
+  friend constexpr bool operator!=(fixed64 a, fixed64 b) { return a.raw_ != b.raw_; }
+  friend constexpr bool operator<(fixed64 a, fixed64 b) { return a.raw_ < b.raw_; }
+  friend constexpr bool operator<=(fixed64 a, fixed64 b) { return a.raw_ <= b.raw_; }
+  friend constexpr bool operator>(fixed64 a, fixed64 b) { return a.raw_ > b.raw_; }
+  friend constexpr bool operator>=(fixed64 a, fixed64 b) { return a.raw_ >= b.raw_; }
+
+  /// Prints the value as a double would print (I/O only, never in the computing path).
+  template <class CharT, class Traits>
+  friend std::basic_ostream<CharT, Traits>& operator<<(std::basic_ostream<CharT, Traits>& out, fixed64 x) {
+    return out << static_cast<double>(x);
+  }
+
+ private:
+  static constexpr double kScale = static_cast<double>(std::int64_t{1} << F);
+
+  static constexpr fixed64 saturated(bool negative) {
+    detail::count_saturation();
+    return from_raw(negative ? detail::kRawMin : detail::kRawMax);
+  }
+
+  template <class I>
+  static constexpr std::int64_t from_integer(I value) {
+    constexpr std::int64_t kLimit = detail::kRawMax >> F;  // largest whole number
+    if (std::is_signed<I>::value) {
+      const auto v = static_cast<std::int64_t>(value);
+      if (v > kLimit || v < -kLimit - 1) {
+        detail::count_saturation();
+        return v < 0 ? detail::kRawMin : detail::kRawMax;
+      }
+      return static_cast<std::int64_t>(static_cast<std::uint64_t>(v) << F);
+    }
+    const auto v = static_cast<std::uint64_t>(value);
+    if (v > static_cast<std::uint64_t>(kLimit)) {
+      detail::count_saturation();
+      return detail::kRawMax;
+    }
+    return static_cast<std::int64_t>(v << F);
+  }
+
+  static constexpr std::int64_t from_double(double value) {
+    constexpr double kTwo63 = 9223372036854775808.0;
+    const double scaled = value * kScale;  // exact: a power-of-two scaling
+    if (!(scaled == scaled)) {
+      detail::count_saturation();
+      return 0;
+    }
+    if (scaled >= kTwo63 || scaled < -kTwo63) {
+      detail::count_saturation();
+      return scaled < 0 ? detail::kRawMin : detail::kRawMax;
+    }
+    std::int64_t whole = static_cast<std::int64_t>(scaled);  // toward zero, exact
+    const double fraction = scaled - static_cast<double>(whole);  // exact
+    if (fraction >= 0.5 && whole < detail::kRawMax) ++whole;
+    if (fraction <= -0.5) --whole;
+    return whole;
+  }
+
+  std::int64_t raw_ = 0;
+};
+
+using s47_16 = fixed64<16>;
+using s40_23 = fixed64<23>;
+
+// ---------------------------------------------------------------------------------------------
+// Exact functions: absolute value, square root and rounding to whole numbers.
+
+/// |x|; |lowest()| saturates to max() and counts.
+template <int F>
+constexpr fixed64<F> abs(fixed64<F> x) {
+  return x.raw() < 0 ? -x : x;
+}
+template <int F>
+constexpr fixed64<F> fabs(fixed64<F> x) {
+  return abs(x);
+}
+
+/// Square root, correctly rounded (error at most half an ulp): the integer square root of
+/// raw * 2^F, digit by digit on 128 bits, rounded up when the remainder exceeds the root.
+/// Domain x >= 0; a negative x gives 0 and counts as a saturation.
+template <int F>
+constexpr fixed64<F> sqrt(fixed64<F> x) {
+  if (x.raw() < 0) {
+    detail::count_saturation();
+    return fixed64<F>();
+  }
+  const detail::SquareRoot s =
+      detail::square_root(detail::shift_left(detail::Uint128{0, static_cast<std::uint64_t>(x.raw())}, F));
+  // round(sqrt(n)) = root + 1 exactly when n - root^2 > root (n >= root^2 + root + 1).
+  const bool up = s.remainder.hi != 0 || s.remainder.lo > s.root;
+  return fixed64<F>::from_raw(static_cast<std::int64_t>(s.root + (up ? 1u : 0u)));
+}
+
+/// Largest whole number not above x; exact.
+template <int F>
+constexpr fixed64<F> floor(fixed64<F> x) {
+  constexpr std::int64_t kFractionMask = (std::int64_t{1} << F) - 1;
+  return fixed64<F>::from_raw(x.raw() & ~kFractionMask);
+}
+
+/// Smallest whole number not below x; saturates (and counts) above the largest whole number.
+template <int F>
+constexpr fixed64<F> ceil(fixed64<F> x) {
+  constexpr std::int64_t kFractionMask = (std::int64_t{1} << F) - 1;
+  if ((x.raw() & kFractionMask) == 0) return x;
+  return floor(x) + fixed64<F>(1);
+}
+
+/// Nearest whole number, halves away from zero (as std::round); above the largest whole number
+/// it saturates to that number and counts.
+template <int F>
+constexpr fixed64<F> round(fixed64<F> x) {
+  constexpr std::int64_t kFractionMask = (std::int64_t{1} << F) - 1;
+  const fixed64<F> half = fixed64<F>::from_raw(std::int64_t{1} << (F - 1));
+  const fixed64<F> shifted = x + half;  // can overflow only for positive x
+  if (x.raw() < 0 && (shifted.raw() & kFractionMask) == 0) return shifted - fixed64<F>(1);  // a tie
+  return floor(shifted);
+}
+
+}  // namespace fixedpoint
+
+/// Machine constants for MINPACK-style code: epsilon() and min() are one ulp, max() and
+/// lowest() the ends of the range, round_error() half an ulp.
+namespace std {
+template <int F>
+class numeric_limits<fixedpoint::fixed64<F>> {
+  using T = fixedpoint::fixed64<F>;
+
+ public:
+  static constexpr bool is_specialized = true;
+  static constexpr bool is_signed = true;
+  static constexpr bool is_integer = false;
+  static constexpr bool is_exact = true;
+  static constexpr bool has_infinity = false;
+  static constexpr bool has_quiet_NaN = false;
+  static constexpr bool has_signaling_NaN = false;
+  static constexpr std::float_denorm_style has_denorm = std::denorm_absent;
+  static constexpr bool has_denorm_loss = false;
+  static constexpr std::float_round_style round_style = std::round_to_nearest;
+  static constexpr bool is_iec559 = false;
+  static constexpr bool is_bounded = true;
+  static constexpr bool is_modulo = false;
+  static constexpr int digits = 63;
+  static constexpr int digits10 = 18;  // floor(63 * log10(2))
+  static constexpr int max_digits10 = 0;
+  static constexpr int radix = 2;
+  static constexpr int min_exponent = 0;
+  static constexpr int min_exponent10 = 0;
+  static constexpr int max_exponent = 0;
+  static constexpr int max_exponent10 = 0;
+  static constexpr bool traps = false;
+  static constexpr bool tinyness_before = false;
+
+  static constexpr T min() noexcept { return T::from_raw(1); }
+  static constexpr T lowest() noexcept { return T::from_raw(std::numeric_limits<std::int64_t>::min()); }
+  static constexpr T max() noexcept { return T::from_raw(std::numeric_limits<std::int64_t>::max()); }
+  static constexpr T epsilon() noexcept { return T::from_raw(1); }
+  static constexpr T round_error() noexcept { return T::from_raw(std::int64_t{1} << (F - 1)); }
+  static constexpr T infinity() noexcept { return T(); }
+  static constexpr T quiet_NaN() noexcept { return T(); }
+  static constexpr T signaling_NaN() noexcept { return T(); }
+  static constexpr T denorm_min() noexcept { return T::from_raw(1); }
+};
+}  // namespace std

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The real library's testlib driver: one registered test per property of fixed64.
+#include "testlib/testlib_register.h"
+
+DECLARE(test_fixed64_construction);
+DECLARE(test_fixed64_comparisons);
+DECLARE(test_fixed64_rounding_functions);
+DECLARE(test_fixed64_numeric_limits);
+DECLARE(test_fixed64_saturation_counting);
+DECLARE(test_real_picks_configured_type);
+DECLARE(test_fixed64_add_subtract);
+DECLARE(test_fixed64_multiply);
+DECLARE(test_fixed64_divide);
+DECLARE(test_fixed64_sqrt);
+
+void register_tests() {
+  REGISTER(test_fixed64_construction);
+  REGISTER(test_fixed64_comparisons);
+  REGISTER(test_fixed64_rounding_functions);
+  REGISTER(test_fixed64_numeric_limits);
+  REGISTER(test_fixed64_saturation_counting);
+  REGISTER(test_real_picks_configured_type);
+  REGISTER(test_fixed64_add_subtract);
+  REGISTER(test_fixed64_multiply);
+  REGISTER(test_fixed64_divide);
+  REGISTER(test_fixed64_sqrt);
+}
+
+DEFINE_MAIN

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// + - * / and sqrt of fixed64 give the exactly rounded result (at most half an ulp off) over the
+// whole 64-bit range, or saturate and count exactly when that result is out of range. The
+// reference is exact integer arithmetic (fixed64_test_support.h), since no floating type of the
+// ARM build (long double is double there) resolves an ulp of a 63-bit value; where it does, the
+// result is also compared with long double.
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "fixed64_test_support.h"
+#include "real/fixed64.h"
+#include "testlib/testlib_test.h"
+
+namespace {
+using fixed64_test::describe;
+using fixed64_test::Exact;
+using fixed64_test::Random;
+using fixed64_test::type_name;
+using fixedpoint::fixed64;
+
+constexpr int kSamples = 100000;
+
+/// Outcome of checking one result against the exact quotient n / d (d > 0), in raw units.
+struct Check {
+  bool pass = false;
+  long double error_ulps = 0;  // |result - n / d|; 0 when saturation was expected
+};
+
+/// The result must be n / d rounded to nearest and no saturation counted; or, when that rounded
+/// value is outside the int64 range, the range end of the right sign with one saturation counted.
+Check check_rounded(const Exact& n, const Exact& d, std::int64_t result, std::uint64_t counted) {
+  const Exact two(2);
+  const Exact twice_n = n * two;
+  const bool above = Exact::compare(twice_n, (Exact(INT64_MAX) * two + Exact(1)) * d) >= 0;
+  const bool below = Exact::compare(twice_n, (Exact(INT64_MIN) * two - Exact(1)) * d) <= 0;
+  if (above || below) return {counted == 1 && result == (above ? INT64_MAX : INT64_MIN), 0};
+  const Exact diff = Exact(result) * d - n;
+  const long double error = std::fabs(diff.to_long_double() / d.to_long_double());
+  return {counted == 0 && Exact::compare_magnitudes(diff * two, d) <= 0, error};
+}
+
+/// Checks `op` against the exact value `n / d` on kSamples operand pairs from `draw`; prints the
+/// worst error and the first failures (operands and result as value and raw hex).
+template <int F>
+void sweep(const char* name, const char* symbol, Random& random,
+           const std::function<void(Random&, std::int64_t&, std::int64_t&)>& draw,
+           const std::function<fixed64<F>(fixed64<F>, fixed64<F>)>& op,
+           const std::function<void(std::int64_t, std::int64_t, Exact&, Exact&)>& exact) {
+  using T = fixed64<F>;
+  fixed64_test::WorstError<F> worst;
+  int failures = 0, printed = 0, compared_with_long_double = 0, long_double_misses = 0;
+  const long double ld_precision = std::ldexp(1.0L, std::numeric_limits<long double>::digits - 2);
+  for (int i = 0; i < kSamples; ++i) {
+    std::int64_t ra = 0, rb = 0;
+    draw(random, ra, rb);
+    const T a = T::from_raw(ra), b = T::from_raw(rb);
+    const std::uint64_t before = fixedpoint::saturation_count();
+    const T r = op(a, b);
+    const std::uint64_t counted = fixedpoint::saturation_count() - before;
+    Exact n, d;
+    exact(ra, rb, n, d);
+    const Check c = check_rounded(n, d, r.raw(), counted);
+    const auto text = [&] {
+      return describe(a) + " " + symbol + " " + describe(b) + " gave " + describe(r) +
+             " (saturations counted: " + std::to_string(counted) + ")";
+    };
+    if (!c.pass) {
+      ++failures;
+      fixed64_test::report_failure(printed, text());
+    }
+    if (worst.beaten_by(c.error_ulps)) worst.record(c.error_ulps, text());
+    // The same result against long double arithmetic, wherever long double resolves an ulp.
+    const long double reference = n.to_long_double() / d.to_long_double();
+    if (counted == 0 && std::fabs(reference) < ld_precision) {
+      ++compared_with_long_double;
+      if (std::fabs(static_cast<long double>(r.raw()) - reference) > 1.0L) ++long_double_misses;
+    }
+  }
+  worst.print(name);
+  std::printf("%d of %d results also compared with long double (%d digits)\n", compared_with_long_double, kSamples,
+              std::numeric_limits<long double>::digits);
+  TEST(("every " + std::string(name) + " of " + type_name<F>() + " is rounded to nearest or saturates and counts")
+           .c_str(),
+       failures, 0);
+  TEST(("every " + std::string(name) + " of " + type_name<F>() + " is within 1 ulp of long double").c_str(),
+       long_double_misses, 0);
+}
+
+template <int F>
+void check_add_subtract(std::uint64_t seed) {
+  Random random(seed);
+  const auto draw = [](Random& rnd, std::int64_t& a, std::int64_t& b) {
+    a = rnd.raw();
+    b = rnd.raw();
+  };
+  const auto raw_pair = [](std::int64_t a, std::int64_t b, bool minus, Exact& n, Exact& d) {
+    n = minus ? Exact(a) - Exact(b) : Exact(a) + Exact(b);
+    d = Exact(1);
+  };
+  sweep<F>("addition", "+", random, draw, [](fixed64<F> a, fixed64<F> b) { return a + b; },
+           [&](std::int64_t a, std::int64_t b, Exact& n, Exact& d) { raw_pair(a, b, false, n, d); });
+  sweep<F>("subtraction", "-", random, draw, [](fixed64<F> a, fixed64<F> b) { return a - b; },
+           [&](std::int64_t a, std::int64_t b, Exact& n, Exact& d) { raw_pair(a, b, true, n, d); });
+}
+
+template <int F>
+void check_multiply(std::uint64_t seed) {
+  Random random(seed);
+  // Half the pairs are independent; the other half have bit lengths whose sum puts the
+  // product within a few bits of the range end, where rounding and saturation meet.
+  const auto draw = [](Random& rnd, std::int64_t& a, std::int64_t& b) {
+    a = rnd.raw();
+    if (rnd.below(2) == 0) {
+      b = rnd.raw();
+      return;
+    }
+    int length_a = 0;
+    for (std::uint64_t m = a < 0 ? 0 - static_cast<std::uint64_t>(a) : static_cast<std::uint64_t>(a); m; m >>= 1)
+      ++length_a;
+    const int target = 63 + F - length_a + static_cast<int>(rnd.below(5)) - 3;
+    b = rnd.raw(target < 0 ? 0 : target > 63 ? 63 : target);
+  };
+  sweep<F>("multiplication", "*", random, draw, [](fixed64<F> a, fixed64<F> b) { return a * b; },
+           [](std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
+             n = Exact(a) * Exact(b);
+             d = Exact::power_of_two(F);
+           });
+}
+
+template <int F>
+void check_divide(std::uint64_t seed) {
+  Random random(seed);
+  const auto draw = [](Random& rnd, std::int64_t& a, std::int64_t& b) {
+    a = rnd.raw();
+    do b = rnd.raw();
+    while (b == 0);
+  };
+  sweep<F>("division", "/", random, draw, [](fixed64<F> a, fixed64<F> b) { return a / b; },
+           [](std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
+             n = Exact(a) * Exact::power_of_two(F);
+             d = Exact(b);
+             if (b < 0) {
+               n = n.negated();
+               d = d.negated();
+             }
+           });
+}
+
+/// sqrt(x) is correctly rounded iff (2r - 1)^2 <= 4 raw 2^F <= (2r + 1)^2 (no ties: the middle
+/// is never an integer square).
+template <int F>
+void check_sqrt(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  fixed64_test::WorstError<F> worst;
+  int failures = 0, printed = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    std::int64_t raw = random.raw();
+    if (raw < 0) raw = raw == INT64_MIN ? INT64_MAX : -raw;
+    const T x = T::from_raw(raw);
+    const std::uint64_t before = fixedpoint::saturation_count();
+    const T r = sqrt(x);
+    const std::uint64_t counted = fixedpoint::saturation_count() - before;
+    const Exact four_n = Exact(raw) * Exact::power_of_two(F + 2);
+    const Exact low = Exact(2 * r.raw() - 1), high = Exact(2 * r.raw() + 1);
+    const bool pass = counted == 0 && r.raw() >= 0 && (r.raw() == 0 || Exact::compare(low * low, four_n) <= 0) &&
+                      Exact::compare(four_n, high * high) <= 0;
+    const long double root = std::sqrt(static_cast<long double>(raw) * std::ldexp(1.0L, F));
+    const long double error = std::fabs(static_cast<long double>(r.raw()) - root);
+    const auto text = [&] { return "sqrt(" + describe(x) + ") gave " + describe(r); };
+    if (!pass) {
+      ++failures;
+      fixed64_test::report_failure(printed, text());
+    }
+    if (worst.beaten_by(error)) worst.record(error, text());
+  }
+  worst.print("sqrt");
+  TEST((std::string("every sqrt of ") + type_name<F>() + " is correctly rounded").c_str(), failures, 0);
+  const std::uint64_t before = fixedpoint::saturation_count();
+  TEST((std::string("sqrt of a negative ") + type_name<F>() + " gives 0").c_str(), sqrt(T(-4)), T(0));
+  TEST("and counts one saturation", fixedpoint::saturation_count() - before, 1u);
+  TEST("sqrt(0) is 0", sqrt(T(0)), T(0));
+  TEST("sqrt(ulp) rounds to the nearest representable root",
+       sqrt(T::from_raw(1)).raw(), static_cast<std::int64_t>(std::llround(std::ldexp(1.0, F / 2) *
+                                                                          (F % 2 ? std::sqrt(2.0) : 1.0))));
+  TEST("sqrt(max) does not saturate", sqrt(std::numeric_limits<T>::max()) > T(0), true);
+}
+
+void test_fixed64_add_subtract() {
+  check_add_subtract<16>(0x5eed0001);
+  check_add_subtract<23>(0x5eed0002);
+}
+void test_fixed64_multiply() {
+  check_multiply<16>(0x5eed0003);
+  check_multiply<23>(0x5eed0004);
+}
+void test_fixed64_divide() {
+  check_divide<16>(0x5eed0005);
+  check_divide<23>(0x5eed0006);
+}
+void test_fixed64_sqrt() {
+  check_sqrt<16>(0x5eed0007);
+  check_sqrt<23>(0x5eed0008);
+}
+}  // namespace
+
+TESTMAIN(test_fixed64_add_subtract)
+TESTMAIN(test_fixed64_multiply)
+TESTMAIN(test_fixed64_divide)
+TESTMAIN(test_fixed64_sqrt)
