@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Micro-benchmark: guest instructions per +, *, /, sqrt and sin for double and float (soft-float
-/// on the PXA270) and for S47.16 and S40.23 fixed point. Each (type, op) pair runs over seeded
-/// operands inside one count window; a copy window per type measures the loop's own cost. Run it
-/// under toolchains/qemu/count-insns.sh --windows: stdout names the windows in order
-/// ("window <type> <op> <operands>"), results.sh pairs them with the counts. Natively it only
-/// computes, which keeps it buildable and checkable on the host.
+/// on the PXA270) and for S47.16 and S40.23 fixed point. Each operation on each seeded operand
+/// pair runs inside its own count window; a copy "operation" per type measures what the window
+/// holds besides the operation. Run it under toolchains/qemu/count-insns.sh --windows: stdout names
+/// the windows in order ("windows <type> <op> <count>": the next <count> windows), results.sh pairs
+/// them with the counts. Natively it only computes, which keeps it buildable and checkable.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -72,8 +72,15 @@ template <class T>
 struct HasSin<T, std::void_t<decltype(sin(std::declval<T>()))>> : std::true_type {};
 }  // namespace math
 
-/// Runs op over every operand pair inside one count window and adds the results to a checksum,
-/// so the compiler must compute them.
+/// Makes the compiler treat `value` as read and rewritten here, so the computation that uses it
+/// cannot start before this point, and the one that produces it cannot finish after it.
+template <class T>
+void pin(T& value) {
+  __asm__ volatile("" : "+m"(value));
+}
+
+/// Applies op to every operand pair, each inside its own count window, and adds the results to
+/// a checksum, so the compiler must compute them.
 template <class T, class Op>
 double count_op(const char* type, const char* op_name, const OperandSet& operands, Op op) {
   const std::size_t n = operands.a.size();
@@ -84,10 +91,18 @@ double count_op(const char* type, const char* op_name, const OperandSet& operand
     a[i] = T(operands.a[i]);
     b[i] = T(operands.b[i]);
   }
-  std::printf("window %s %s %zu\n", type, op_name, n);
-  edgetrack_count_begin();
-  for (std::size_t i = 0; i < n; ++i) out[i] = op(a[i], b[i]);
-  edgetrack_count_end();
+  std::printf("windows %s %s %zu\n", type, op_name, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    edgetrack_count_begin();
+    T x = a[i];
+    T y = b[i];
+    pin(x);
+    pin(y);
+    T result = op(x, y);
+    pin(result);
+    out[i] = result;
+    edgetrack_count_end();
+  }
   double sum = 0.0;
   for (const T& x : out) sum += static_cast<double>(x);
   return sum;
