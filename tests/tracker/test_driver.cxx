@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracker's testlib driver: `tracker_test_all <test>` runs one test.
+#include "testlib/testlib_register.h"
+
+DECLARE(test_se3);
+DECLARE(test_model_io);
+DECLARE(test_camera_and_pos);
+DECLARE(test_edge_id);
+DECLARE(test_edge_id_buffer);
+DECLARE(test_control_points);
+
+void register_tests() {
+  REGISTER(test_se3);
+  REGISTER(test_model_io);
+  REGISTER(test_camera_and_pos);
+  REGISTER(test_edge_id);
+  REGISTER(test_edge_id_buffer);
+  REGISTER(test_control_points);
+}
+
+DEFINE_MAIN

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Control points: the model edges projected with the current pose and sampled evenly in the
+/// image, n = edge length / sampling step (the paper's equation (1)), keeping the points the
+/// Edge-ID buffer shows as visible.
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/edge_id_buffer.h"
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+struct ControlPoint {
+  int edge = 0;          ///< index into EdgeModel::edges
+  Vec3 point_in_model;   ///< the 3D point on the edge
+  Vec2 pixel;            ///< where it projects with the sampling pose
+  Vec2 direction;        ///< unit direction of the projected edge
+  Vec2 normal;           ///< unit normal of the projected edge: direction turned by +90 degrees
+};
+
+struct SamplingParams {
+  real step = real(10);  ///< pixels between control points (the paper's 10)
+  int border = 10;       ///< points nearer the image border than this (pixels) are dropped
+};
+
+/// Samples every edge in front of the camera: n = floor(projected length / step) points at the
+/// centres of n equal parts of the projected segment, each lifted back to the 3D edge with the
+/// perspective-correct parameter. Points within params.border of the image border are dropped.
+/// Visibility is not checked here.
+std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
+                                                const Se3& camera_from_model, const SamplingParams& params);
+
+/// Keeps the points whose own edge the Edge-ID buffer shows at their pixel.
+std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids);
+
+}  // namespace edgetrack

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Edge-ID visibility (paper, section 3.4): the model's faces go into an inverse-depth buffer,
+/// then its edges, with hidden-line removal, into a 16-bit RGB565 colour buffer, each in the
+/// colour that encodes its index. A control point of edge i is visible when the colour at its
+/// pixel decodes to i.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+class EdgeIdBuffer {
+ public:
+  /// Buffers for images of the camera's size; they are allocated here, once.
+  explicit EdgeIdBuffer(const PinholeCamera& camera);
+
+  /// Redraws the buffers for the model seen from camera_from_model. An edge pixel is kept when
+  /// its inverse depth is within 1/128 (0.8 %) of the nearest face there, so edges lying on
+  /// their own faces pass and edges behind other faces do not.
+  void render(const EdgeModel& model, const Se3& camera_from_model);
+
+  /// The edge index drawn at pixel (x, y), or -1 for the background or outside the image.
+  int edge_at(int x, int y) const;
+  /// True when edge `edge` is drawn at the pixel nearest to `pixel`, or at one of the two
+  /// pixels beside it across the line (a drawn line has one pixel per column, or per row when
+  /// steep: `along` is the edge direction and picks which).
+  bool shows(int edge, const Vec2& pixel, const Vec2& along) const;
+
+  int width() const { return camera_.width; }
+  int height() const { return camera_.height; }
+  const std::vector<uint16_t>& colours() const { return colours_; }
+  const std::vector<int32_t>& inverse_depth() const { return inverse_depth_; }
+
+ private:
+  void clear_dirty();
+
+  PinholeCamera camera_;
+  std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background
+  std::vector<int32_t> inverse_depth_;  ///< Q20 1/Z of the nearest face, 0 = none
+  std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
+  std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each edge
+  int dirty_x0_ = 0, dirty_y0_ = 0, dirty_x1_ = -1, dirty_y1_ = -1;  ///< area drawn last time
+};
+
+}  // namespace edgetrack

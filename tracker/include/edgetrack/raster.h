@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The portable rasteriser behind Edge-ID and the test-image renderer: clipping and projection
+/// in `real`, then triangle filling and line drawing in integers only (no FPU, no GL).
+/// Screen positions are Q4 fixed point (1/16 pixel, pixel centres at multiples of 16) and depth
+/// is carried as inverse depth w = 1/Z in Q20 (1/m), which is affine in screen space, so a
+/// larger w is nearer and w = 0 is "nothing drawn".
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+
+#include "edgetrack/pinhole_camera.h"
+
+namespace edgetrack {
+
+struct ScreenVertex {
+  int32_t x = 0;  ///< Q4 pixels
+  int32_t y = 0;
+  int32_t w = 0;  ///< 1/Z in Q20
+};
+
+constexpr int kSubpixelBits = 4;
+constexpr int kInverseDepthBits = 20;
+/// The most vertices a triangle can have after the near-plane and screen clips.
+constexpr int kMaxClippedVertices = 8;
+
+/// Clips the triangle (camera frame) to Z >= near and to the screen grown by a guard band,
+/// projects it, and returns its vertex count (0 when nothing is left).
+int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camera)[3],
+                              ScreenVertex (&out)[kMaxClippedVertices]);
+
+/// Clips the segment (camera frame) to Z >= near and to the screen, and projects it.
+bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const Vec3& b, ScreenVertex& sa,
+                              ScreenVertex& sb);
+
+/// Calls plot(x, y, w) for every pixel centre inside the triangle; w is interpolated exactly
+/// (affine in screen space). Triangles under 1/16 pixel^2 are skipped.
+template <class Plot>
+void fill_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, int width, int height, Plot&& plot) {
+  int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+  if (area < 0) {
+    std::swap(b, c);
+    area = -area;
+  }
+  if (area < 16) return;
+  const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
+  const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
+  const int x0 = std::max(0, (min_x + 15) >> kSubpixelBits), x1 = std::min(width - 1, max_x >> kSubpixelBits);
+  const int y0 = std::max(0, (min_y + 15) >> kSubpixelBits), y1 = std::min(height - 1, max_y >> kSubpixelBits);
+  if (x0 > x1 || y0 > y1) return;
+  // Gradient of w per Q4 step, scaled by 2^8: w(p) = a.w + (gx * (p.x - a.x) + gy * (p.y - a.y)) >> 8.
+  const int64_t dxb = b.x - a.x, dyb = b.y - a.y, dwb = b.w - a.w;
+  const int64_t dxc = c.x - a.x, dyc = c.y - a.y, dwc = c.w - a.w;
+  const int64_t gx = ((dwb * dyc - dwc * dyb) * 256) / area;
+  const int64_t gy = ((dxb * dwc - dxc * dwb) * 256) / area;
+  // Edge functions, non-negative inside: e_uv(p) = (v - u) x (p - u).
+  auto edge_at = [](const ScreenVertex& u, const ScreenVertex& v, int64_t px, int64_t py) {
+    return int64_t(v.x - u.x) * (py - u.y) - int64_t(v.y - u.y) * (px - u.x);
+  };
+  const int64_t step = 1 << kSubpixelBits;
+  const int64_t sx_ab = -int64_t(b.y - a.y) * step, sx_bc = -int64_t(c.y - b.y) * step, sx_ca = -int64_t(a.y - c.y) * step;
+  for (int y = y0; y <= y1; ++y) {
+    const int64_t py = int64_t(y) << kSubpixelBits, px = int64_t(x0) << kSubpixelBits;
+    int64_t e_ab = edge_at(a, b, px, py), e_bc = edge_at(b, c, px, py), e_ca = edge_at(c, a, px, py);
+    int64_t acc = gx * (px - a.x) + gy * (py - a.y);
+    const int64_t acc_step = gx * step;
+    for (int x = x0; x <= x1; ++x) {
+      if ((e_ab | e_bc | e_ca) >= 0) plot(x, y, static_cast<int32_t>(a.w + (acc >> 8)));
+      e_ab += sx_ab;
+      e_bc += sx_bc;
+      e_ca += sx_ca;
+      acc += acc_step;
+    }
+  }
+}
+
+/// Calls plot(x, y, w) for the pixels of the segment: one pixel per column (or per row, when
+/// the segment is steeper than 45 degrees), the nearest to the exact line; w is interpolated.
+template <class Plot>
+void draw_line(const ScreenVertex& a, const ScreenVertex& b, int width, int height, Plot&& plot) {
+  const int32_t dx = b.x - a.x, dy = b.y - a.y;
+  const bool x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+  const int32_t major_a = x_major ? a.x : a.y, major_b = x_major ? b.x : b.y;
+  const int32_t minor_a = x_major ? a.y : a.x;
+  const int32_t d_major = major_b - major_a, d_minor = x_major ? dy : dx;
+  const int half = 1 << (kSubpixelBits - 1);
+  const int first = (major_a + half) >> kSubpixelBits, last = (major_b + half) >> kSubpixelBits;
+  const int dir = first <= last ? 1 : -1;
+  // Minor coordinate and w at a major position m: value_a + slope * (m - major_a), slopes in Q16.
+  const int64_t minor_slope = d_major != 0 ? (int64_t(d_minor) << 16) / d_major : 0;
+  const int64_t w_slope = d_major != 0 ? (int64_t(b.w - a.w) << 16) / d_major : 0;
+  const int64_t offset = (int64_t(first) << kSubpixelBits) - major_a;
+  int64_t minor = (int64_t(minor_a) << 16) + minor_slope * offset;
+  int64_t w = (int64_t(a.w) << 16) + w_slope * offset;
+  const int64_t minor_step = minor_slope * dir * (1 << kSubpixelBits);
+  const int64_t w_step = w_slope * dir * (1 << kSubpixelBits);
+  for (int m = first;; m += dir) {
+    const int n = static_cast<int>((minor + (int64_t(half) << 16)) >> (16 + kSubpixelBits));
+    const int x = x_major ? m : n, y = x_major ? n : m;
+    if (x >= 0 && x < width && y >= 0 && y < height) plot(x, y, static_cast<int32_t>(w >> 16));
+    if (m == last) break;
+    minor += minor_step;
+    w += w_step;
+  }
+}
+
+}  // namespace edgetrack

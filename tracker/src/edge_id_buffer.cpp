@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Edge-ID rendering with the portable rasteriser, and the per-point visibility test.
+#include "edgetrack/edge_id_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "edgetrack/edge_id.h"
+#include "edgetrack/raster.h"
+
+namespace edgetrack {
+
+EdgeIdBuffer::EdgeIdBuffer(const PinholeCamera& camera)
+    : camera_(camera),
+      colours_(static_cast<size_t>(camera.width) * camera.height, 0),
+      inverse_depth_(static_cast<size_t>(camera.width) * camera.height, 0) {}
+
+void EdgeIdBuffer::clear_dirty() {
+  for (int y = dirty_y0_; y <= dirty_y1_; ++y) {
+    const size_t row = static_cast<size_t>(y) * camera_.width;
+    std::fill(colours_.begin() + row + dirty_x0_, colours_.begin() + row + dirty_x1_ + 1, uint16_t(0));
+    std::fill(inverse_depth_.begin() + row + dirty_x0_, inverse_depth_.begin() + row + dirty_x1_ + 1, 0);
+  }
+  dirty_x0_ = camera_.width;
+  dirty_y0_ = camera_.height;
+  dirty_x1_ = -1;
+  dirty_y1_ = -1;
+}
+
+void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) {
+  clear_dirty();
+  if (edge_colours_.size() != model.edges.size()) {
+    edge_colours_.resize(model.edges.size());
+    for (size_t e = 0; e < model.edges.size(); ++e)
+      edge_colours_[e] = pack_rgb565(encode_edge_id(static_cast<int>(e)));
+  }
+  points_in_camera_.resize(model.vertices.size());
+  for (size_t v = 0; v < model.vertices.size(); ++v) points_in_camera_[v] = camera_from_model * model.vertices[v];
+
+  const int width = camera_.width, height = camera_.height;
+  int32_t* depth = inverse_depth_.data();
+  int x0 = width, y0 = height, x1 = -1, y1 = -1;
+  auto grow = [&](int x, int y) {
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  };
+  auto plot_face = [&](int x, int y, int32_t w) {
+    int32_t& d = depth[static_cast<size_t>(y) * width + x];
+    if (w > d) d = w;
+    grow(x, y);
+  };
+  for (const Triangle& t : model.triangles) {
+    const Vec3 corners[3] = {points_in_camera_[t.a], points_in_camera_[t.b], points_in_camera_[t.c]};
+    ScreenVertex polygon[kMaxClippedVertices];
+    const int n = clip_and_project_triangle(camera_, corners, polygon);
+    for (int i = 1; i + 1 < n; ++i) fill_triangle(polygon[0], polygon[i], polygon[i + 1], width, height, plot_face);
+  }
+  uint16_t* colour = colours_.data();
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    ScreenVertex a, b;
+    if (!clip_and_project_segment(camera_, points_in_camera_[model.edges[e].a], points_in_camera_[model.edges[e].b],
+                                  a, b))
+      continue;
+    const uint16_t code = edge_colours_[e];
+    draw_line(a, b, width, height, [&](int x, int y, int32_t w) {
+      const size_t i = static_cast<size_t>(y) * width + x;
+      if (w + (w >> 7) >= depth[i]) colour[i] = code;
+      grow(x, y);
+    });
+  }
+  dirty_x0_ = x0;
+  dirty_y0_ = y0;
+  dirty_x1_ = x1;
+  dirty_y1_ = y1;
+}
+
+int EdgeIdBuffer::edge_at(int x, int y) const {
+  if (x < 0 || y < 0 || x >= camera_.width || y >= camera_.height) return -1;
+  return decode_edge_id(unpack_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]));
+}
+
+bool EdgeIdBuffer::shows(int edge, const Vec2& pixel, const Vec2& along) const {
+  using std::fabs;
+  using std::floor;
+  const real half = real(0.5);
+  const int x = static_cast<int>(floor(pixel.x + half)), y = static_cast<int>(floor(pixel.y + half));
+  const bool x_major = fabs(along.x) >= fabs(along.y);
+  const int dx = x_major ? 0 : 1, dy = x_major ? 1 : 0;
+  return edge_at(x, y) == edge || edge_at(x - dx, y - dy) == edge || edge_at(x + dx, y + dy) == edge;
+}
+
+}  // namespace edgetrack

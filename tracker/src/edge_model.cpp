@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Face normals, ear-clipping triangulation and the crease-angle rule that picks tracked edges.
+#include "edgetrack/edge_model.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <utility>
+
+namespace edgetrack {
+namespace {
+
+/// The face's vertices relative to its first one, divided by the largest coordinate difference,
+/// so that products stay well inside the range and resolution of every `real`.
+std::vector<Vec3> normalized_corners(const std::vector<Vec3>& vertices, const std::vector<int>& face) {
+  using std::fabs;
+  const Vec3 origin = vertices[face[0]];
+  real extent(0);
+  for (int index : face) {
+    const Vec3 d = vertices[index] - origin;
+    if (fabs(d.x) > extent) extent = fabs(d.x);
+    if (fabs(d.y) > extent) extent = fabs(d.y);
+    if (fabs(d.z) > extent) extent = fabs(d.z);
+  }
+  std::vector<Vec3> corners;
+  corners.reserve(face.size());
+  for (int index : face) {
+    const Vec3 d = vertices[index] - origin;
+    corners.push_back(extent > real(0) ? Vec3{d.x / extent, d.y / extent, d.z / extent} : d);
+  }
+  return corners;
+}
+
+/// Newell's method: the polygon's area-weighted normal, robust for non-convex polygons.
+Vec3 newell_normal(const std::vector<Vec3>& corners) {
+  Vec3 n;
+  const size_t count = corners.size();
+  for (size_t i = 0; i < count; ++i) {
+    const Vec3& p = corners[i];
+    const Vec3& q = corners[(i + 1) % count];
+    n.x = n.x + (p.y - q.y) * (p.z + q.z);
+    n.y = n.y + (p.z - q.z) * (p.x + q.x);
+    n.z = n.z + (p.x - q.x) * (p.y + q.y);
+  }
+  return n;
+}
+
+real cross2(const Vec2& o, const Vec2& a, const Vec2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+/// True when p lies inside or on the counter-clockwise triangle abc.
+bool inside_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  return cross2(a, b, p) >= real(0) && cross2(b, c, p) >= real(0) && cross2(c, a, p) >= real(0);
+}
+
+/// Ear clipping over the face projected on the plane its normal is most aligned with, turned so
+/// that the polygon runs counter-clockwise. Returns false when the polygon is not simple.
+bool triangulate(const std::vector<Vec3>& corners, const Vec3& normal, std::vector<std::array<int, 3>>& out) {
+  using std::fabs;
+  const real ax = fabs(normal.x), ay = fabs(normal.y), az = fabs(normal.z);
+  std::vector<Vec2> flat;
+  flat.reserve(corners.size());
+  for (const Vec3& c : corners) {
+    if (az >= ax && az >= ay)
+      flat.push_back(normal.z > real(0) ? Vec2{c.x, c.y} : Vec2{c.y, c.x});
+    else if (ay >= ax)
+      flat.push_back(normal.y > real(0) ? Vec2{c.z, c.x} : Vec2{c.x, c.z});
+    else
+      flat.push_back(normal.x > real(0) ? Vec2{c.y, c.z} : Vec2{c.z, c.y});
+  }
+  std::vector<int> remaining(corners.size());
+  for (size_t i = 0; i < remaining.size(); ++i) remaining[i] = static_cast<int>(i);
+  while (remaining.size() > 3) {
+    const size_t count = remaining.size();
+    bool clipped = false;
+    for (size_t i = 0; i < count && !clipped; ++i) {
+      const int prev = remaining[(i + count - 1) % count];
+      const int cur = remaining[i];
+      const int next = remaining[(i + 1) % count];
+      if (cross2(flat[prev], flat[cur], flat[next]) <= real(0)) continue;  // reflex or flat corner
+      bool empty = true;
+      for (int other : remaining) {
+        if (other == prev || other == cur || other == next) continue;
+        if (inside_triangle(flat[other], flat[prev], flat[cur], flat[next])) {
+          empty = false;
+          break;
+        }
+      }
+      if (!empty) continue;
+      out.push_back({prev, cur, next});
+      remaining.erase(remaining.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  out.push_back({remaining[0], remaining[1], remaining[2]});
+  return true;
+}
+
+struct EdgeUse {
+  int faces[2] = {-1, -1};
+  bool same_direction = false;  ///< both faces run the edge the same way (inconsistent winding)
+  int count = 0;
+  int first_a = 0;
+};
+
+}  // namespace
+
+Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
+  using std::cos;
+  EdgeModel model;
+  model.vertices = polygons.vertices;
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+
+  std::map<std::pair<int, int>, EdgeUse> uses;
+  std::vector<std::pair<int, int>> order;  // edges in first-seen order, so edge indices are stable
+  for (size_t f = 0; f < polygons.faces.size(); ++f) {
+    const std::vector<int>& face = polygons.faces[f];
+    const std::string label = "face " + std::to_string(f);
+    if (face.size() < 3) return fail(label + " has fewer than 3 vertices");
+    for (size_t i = 0; i < face.size(); ++i) {
+      if (face[i] < 0 || face[i] >= vertex_count) return fail(label + " uses vertex " + std::to_string(face[i]) +
+                                                              " of " + std::to_string(vertex_count));
+      for (size_t j = 0; j < i; ++j)
+        if (face[i] == face[j]) return fail(label + " repeats vertex " + std::to_string(face[i]));
+    }
+    const std::vector<Vec3> corners = normalized_corners(model.vertices, face);
+    const Vec3 area_normal = newell_normal(corners);
+    if (norm(area_normal) == real(0)) return fail(label + " has no area");
+    Face out;
+    out.vertices = face;
+    out.normal = normalized(area_normal);
+    if (f < polygons.face_names.size()) out.name = polygons.face_names[f];
+    std::vector<std::array<int, 3>> pieces;
+    if (!triangulate(corners, area_normal, pieces)) return fail(label + " is not a simple polygon");
+    for (const auto& p : pieces)
+      model.triangles.push_back({face[p[0]], face[p[1]], face[p[2]], static_cast<int>(f)});
+    model.faces.push_back(out);
+
+    for (size_t i = 0; i < face.size(); ++i) {
+      const int a = face[i], b = face[(i + 1) % face.size()];
+      const std::pair<int, int> key(a < b ? a : b, a < b ? b : a);
+      auto found = uses.find(key);
+      if (found == uses.end()) {
+        EdgeUse use;
+        use.faces[0] = static_cast<int>(f);
+        use.count = 1;
+        use.first_a = a;
+        uses.emplace(key, use);
+        order.push_back(key);
+      } else {
+        EdgeUse& use = found->second;
+        if (use.count == 1) {
+          use.faces[1] = static_cast<int>(f);
+          use.same_direction = (use.first_a == a);
+        }
+        ++use.count;
+      }
+    }
+  }
+
+  const real crease_cos = cos(rules.crease_angle);
+  for (const auto& key : order) {
+    const EdgeUse& use = uses[key];
+    bool tracked = use.count != 2;
+    if (use.count == 2) {
+      const Vec3& n0 = model.faces[use.faces[0]].normal;
+      const Vec3 n1 = use.same_direction ? -model.faces[use.faces[1]].normal : model.faces[use.faces[1]].normal;
+      tracked = dot(n0, n1) < crease_cos;
+    }
+    if (!tracked) continue;
+    Edge edge;
+    edge.a = key.first;
+    edge.b = key.second;
+    edge.faces[0] = use.faces[0];
+    edge.faces[1] = use.count >= 2 ? use.faces[1] : -1;
+    model.edges.push_back(edge);
+  }
+  for (const auto& line : polygons.lines) {
+    if (line.first < 0 || line.first >= vertex_count || line.second < 0 || line.second >= vertex_count)
+      return fail("a line uses a vertex out of range");
+    if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
+    const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
+                                  line.first < line.second ? line.second : line.first);
+    if (uses.count(key)) continue;  // already a face boundary, handled above
+    uses[key].count = 0;
+    Edge edge;
+    edge.a = key.first;
+    edge.b = key.second;
+    model.edges.push_back(edge);
+  }
+  if (model.edges.empty()) return fail("the model has no edge to track");
+  if (static_cast<int>(model.edges.size()) > kMaxEdges)
+    return fail("the model has " + std::to_string(model.edges.size()) + " contour edges; Edge-ID codes at most " +
+                std::to_string(kMaxEdges));
+  return model;
+}
+
+}  // namespace edgetrack
