@@ -12,6 +12,11 @@ DECLARE(test_fixed64_add_subtract);
 DECLARE(test_fixed64_multiply);
 DECLARE(test_fixed64_divide);
 DECLARE(test_fixed64_sqrt);
+DECLARE(test_fixed64_sin_cos);
+DECLARE(test_fixed64_tan);
+DECLARE(test_fixed64_atan_atan2);
+DECLARE(test_fixed64_asin_acos);
+DECLARE(test_fixed64_exp_log);
 
 void register_tests() {
   REGISTER(test_fixed64_construction);
@@ -24,6 +29,11 @@ void register_tests() {
   REGISTER(test_fixed64_multiply);
   REGISTER(test_fixed64_divide);
   REGISTER(test_fixed64_sqrt);
+  REGISTER(test_fixed64_sin_cos);
+  REGISTER(test_fixed64_tan);
+  REGISTER(test_fixed64_atan_atan2);
+  REGISTER(test_fixed64_asin_acos);
+  REGISTER(test_fixed64_exp_log);
 }
 
 DEFINE_MAIN

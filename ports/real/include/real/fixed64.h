@@ -40,6 +40,19 @@ constexpr std::int64_t signed_from_magnitude(bool negative, Uint128 m) {
   return negative ? static_cast<std::int64_t>(std::uint64_t{0} - m.lo) : static_cast<std::int64_t>(m.lo);
 }
 
+/// round(n / d) (halves away from zero) as a raw value of the given sign, d != 0; saturates
+/// (and counts) when it is out of range.
+constexpr std::int64_t divide_rounded(bool negative, Uint128 n, std::uint64_t d) {
+  if (n.hi >= d) {  // the quotient would not even fit 64 bits
+    count_saturation();
+    return negative ? kRawMin : kRawMax;
+  }
+  const Division qr = divide(n, d);
+  Uint128 q{0, qr.quotient};
+  if (qr.remainder >= d - qr.remainder) q = q + Uint128{0, 1};  // 2r >= d
+  return signed_from_magnitude(negative, q);
+}
+
 /// Rounds m / 2^s to nearest (halves away from zero), 0 <= s < 128.
 constexpr Uint128 shift_right_rounded(Uint128 m, int s) {
   if (s == 0) return m;
@@ -137,12 +150,8 @@ class fixed64 {
       detail::count_saturation();
       return from_raw(a.raw_ == 0 ? 0 : a.raw_ < 0 ? detail::kRawMin : detail::kRawMax);
     }
-    const detail::Uint128 n = detail::shift_left(detail::Uint128{0, detail::magnitude(a.raw_)}, F);
-    if (n.hi >= d) return saturated(negative);  // the quotient would not even fit 64 bits
-    const detail::Division qr = detail::divide(n, d);
-    detail::Uint128 q{0, qr.quotient};
-    if (qr.remainder >= d - qr.remainder) q = q + detail::Uint128{0, 1};  // 2r >= d
-    return from_raw(detail::signed_from_magnitude(negative, q));
+    return from_raw(
+        detail::divide_rounded(negative, detail::shift_left(detail::Uint128{0, detail::magnitude(a.raw_)}, F), d));
   }
 
   constexpr fixed64& operator+=(fixed64 b) { return *this = *this + b; }
@@ -314,3 +323,6 @@ class numeric_limits<fixedpoint::fixed64<F>> {
   static constexpr T denorm_min() noexcept { return T::from_raw(1); }
 };
 }  // namespace std
+
+// sin, cos, tan, atan, atan2, asin, acos, exp, log: integer algorithms in their own header.
+#include "real/fixed64_math.h"
