@@ -8,6 +8,7 @@ DECLARE(test_camera_and_pos);
 DECLARE(test_edge_id);
 DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
+DECLARE(test_scene_renderer);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -16,6 +17,7 @@ void register_tests() {
   REGISTER(test_edge_id);
   REGISTER(test_edge_id_buffer);
   REGISTER(test_control_points);
+  REGISTER(test_scene_renderer);
 }
 
 DEFINE_MAIN

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The test-image renderer: a model drawn flat-shaded over a textured background with noise, as
+/// an RGB565 frame, with the portable rasteriser, so tracking tests with known ground truth run
+/// everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+/// A 16-bit RGB565 image, row-major, as a handheld camera delivers it.
+struct Rgb565Frame {
+  int width = 0;
+  int height = 0;
+  std::vector<uint16_t> pixels;
+};
+
+struct SceneStyle {
+  int supersample = 2;        ///< samples per pixel along each axis (anti-aliased edges)
+  int noise = 6;              ///< uniform noise added to each pixel, +-this many grey levels
+  int background_low = 40;    ///< the background texture's grey range
+  int background_high = 110;
+  int texture_cell = 12;      ///< pixels between the texture's random grey values
+  int face_low = 150;         ///< face grey: face_low + (face_high - face_low) * |cos(light, normal)|
+  int face_high = 240;
+  uint32_t texture_seed = 1;  ///< the background is the same in every frame
+};
+
+class SceneRenderer {
+ public:
+  SceneRenderer(const PinholeCamera& camera, const SceneStyle& style);
+
+  /// Draws the model at camera_from_model; `noise_seed` picks the frame's noise.
+  void render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed, Rgb565Frame& frame);
+
+ private:
+  PinholeCamera camera_;
+  PinholeCamera fine_camera_;  ///< the camera at the supersampled size
+  SceneStyle style_;
+  std::vector<uint8_t> background_;  ///< grey texture, one value per pixel
+  std::vector<int32_t> depth_;       ///< supersampled inverse depth
+  std::vector<int16_t> face_;        ///< supersampled face index, -1 for background
+};
+
+/// Ground truth: true when no face of the model lies on the segment from the camera centre to
+/// the point, except within `margin` (a fraction of the point's distance) in front of it, so a
+/// point on its own faces counts as visible. Exact ray casting, independent of the rasteriser.
+bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,
+                   const real& margin);
+
+}  // namespace edgetrack

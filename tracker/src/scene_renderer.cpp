@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Synthetic frames for tests and benchmarks, and ray-cast ground-truth visibility.
+#include "edgetrack/scene_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "edgetrack/raster.h"
+
+namespace edgetrack {
+namespace {
+
+/// xorshift32: a small generator whose sequence is the same on every platform.
+uint32_t next_random(uint32_t& state) {
+  state ^= state << 13;
+  state ^= state >> 17;
+  state ^= state << 5;
+  return state;
+}
+
+uint16_t grey_to_rgb565(int grey) {
+  if (grey < 0) grey = 0;
+  if (grey > 255) grey = 255;
+  return static_cast<uint16_t>(((grey >> 3) << 11) | ((grey >> 2) << 5) | (grey >> 3));
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& style)
+    : camera_(camera), fine_camera_(camera.scaled(style.supersample)), style_(style) {
+  // Value noise: random greys on a coarse grid, bilinearly interpolated in integers.
+  const int cell = style.texture_cell;
+  const int grid_w = camera.width / cell + 2, grid_h = camera.height / cell + 2;
+  std::vector<int> grid(static_cast<size_t>(grid_w) * grid_h);
+  uint32_t state = style.texture_seed ? style.texture_seed : 1;
+  const int range = style.background_high - style.background_low + 1;
+  for (int& g : grid) g = style.background_low + static_cast<int>(next_random(state) % static_cast<uint32_t>(range));
+  background_.resize(static_cast<size_t>(camera.width) * camera.height);
+  for (int y = 0; y < camera.height; ++y) {
+    const int gy = y / cell, fy = y % cell;
+    for (int x = 0; x < camera.width; ++x) {
+      const int gx = x / cell, fx = x % cell;
+      const int g00 = grid[gy * grid_w + gx], g10 = grid[gy * grid_w + gx + 1];
+      const int g01 = grid[(gy + 1) * grid_w + gx], g11 = grid[(gy + 1) * grid_w + gx + 1];
+      const int top = g00 * (cell - fx) + g10 * fx, bottom = g01 * (cell - fx) + g11 * fx;
+      background_[static_cast<size_t>(y) * camera.width + x] =
+          static_cast<uint8_t>((top * (cell - fy) + bottom * fy) / (cell * cell));
+    }
+  }
+  depth_.resize(static_cast<size_t>(fine_camera_.width) * fine_camera_.height);
+  face_.resize(depth_.size());
+}
+
+void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
+                           Rgb565Frame& frame) {
+  using std::fabs;
+  std::fill(depth_.begin(), depth_.end(), 0);
+  std::fill(face_.begin(), face_.end(), int16_t(-1));
+  std::vector<Vec3> in_camera(model.vertices.size());
+  for (size_t v = 0; v < model.vertices.size(); ++v) in_camera[v] = camera_from_model * model.vertices[v];
+
+  // Flat shading from a light above and left of the camera.
+  const Vec3 light = normalized({real(-0.3), real(-0.5), real(-1)});
+  std::vector<int> shade(model.faces.size());
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const real lambert = fabs(dot(camera_from_model.rotation() * model.faces[f].normal, light));
+    shade[f] = style_.face_low + static_cast<int>(lambert * (style_.face_high - style_.face_low));
+  }
+
+  const int fw = fine_camera_.width, fh = fine_camera_.height;
+  for (const Triangle& t : model.triangles) {
+    const Vec3 corners[3] = {in_camera[t.a], in_camera[t.b], in_camera[t.c]};
+    ScreenVertex polygon[kMaxClippedVertices];
+    const int n = clip_and_project_triangle(fine_camera_, corners, polygon);
+    const int16_t id = static_cast<int16_t>(t.face);
+    for (int i = 1; i + 1 < n; ++i)
+      fill_triangle(polygon[0], polygon[i], polygon[i + 1], fw, fh, [&](int x, int y, int32_t w) {
+        const size_t k = static_cast<size_t>(y) * fw + x;
+        if (w > depth_[k]) {
+          depth_[k] = w;
+          face_[k] = id;
+        }
+      });
+  }
+
+  frame.width = camera_.width;
+  frame.height = camera_.height;
+  frame.pixels.resize(static_cast<size_t>(frame.width) * frame.height);
+  const int s = style_.supersample, samples = s * s;
+  const int noise_range = 2 * style_.noise + 1;
+  uint32_t state = noise_seed ? noise_seed : 1;
+  for (int y = 0; y < camera_.height; ++y) {
+    for (int x = 0; x < camera_.width; ++x) {
+      const int bg = background_[static_cast<size_t>(y) * camera_.width + x];
+      int sum = 0;
+      for (int sy = 0; sy < s; ++sy)
+        for (int sx = 0; sx < s; ++sx) {
+          const int id = face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)];
+          sum += id >= 0 ? shade[id] : bg;
+        }
+      const int noise = static_cast<int>(next_random(state) % static_cast<uint32_t>(noise_range)) - style_.noise;
+      frame.pixels[static_cast<size_t>(y) * camera_.width + x] = grey_to_rgb565((sum + samples / 2) / samples + noise);
+    }
+  }
+}
+
+bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,
+                   const real& margin) {
+  // Everything is divided by the point's depth, so the ray ends at Z = 1 and the numbers stay
+  // near 1 for every `real`.
+  const Vec3 p_raw = camera_from_model * point_in_model;
+  const real scale = real(1) / p_raw.z;
+  const Vec3 p = scale * p_raw;
+  const real limit = real(1) - margin;
+  const real tiny = real(1e-6);
+  for (const Triangle& t : model.triangles) {
+    const Vec3 a = scale * (camera_from_model * model.vertices[t.a]);
+    const Vec3 b = scale * (camera_from_model * model.vertices[t.b]);
+    const Vec3 c = scale * (camera_from_model * model.vertices[t.c]);
+    // Moller-Trumbore for the ray O + s p, s in (0, limit).
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 h = cross(p, e2);
+    const real det = dot(e1, h);
+    if (det > -tiny && det < tiny) continue;  // ray parallel to the triangle
+    const Vec3 to_a = -a;
+    const real u = dot(to_a, h) / det;
+    if (u < real(0) || u > real(1)) continue;
+    const Vec3 q = cross(to_a, e1);
+    const real v = dot(p, q) / det;
+    if (v < real(0) || u + v > real(1)) continue;
+    const real s = dot(e2, q) / det;
+    if (s > real(0) && s < limit) return false;
+  }
+  return true;
+}
+
+}  // namespace edgetrack
