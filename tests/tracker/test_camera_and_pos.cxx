@@ -13,7 +13,10 @@ using namespace edgetrack;
 static void test_camera_and_pos() {
   const std::string visp = EDGETRACK_VISP_IMAGES;
   const std::string out = EDGETRACK_TEST_OUTPUT;
-  const double tol = std::string(real_name()) == "s47_16" ? 1e-4 : 1e-6;
+  const std::string name = real_name();
+  const double tol = name == "s47_16" ? 1e-4 : 1e-6;
+  // Pixels carry the type's resolution times the focal length: about 3e-3 px for S47.16.
+  const double pixel_tol = name == "s47_16" ? 1e-2 : name == "s40_23" ? 1e-3 : name == "float" ? 1e-4 : 1e-9;
 
   const Result<PinholeCamera> camera = read_visp_camera_xml(visp + "/mbt/cube.xml", 640, 480);
   TEST("mbt/cube.xml's camera block reads", camera.ok(), true);
@@ -38,14 +41,14 @@ static void test_camera_and_pos() {
 
   const PinholeCamera qvga{real(300), real(300), real(160), real(120), 320, 240};
   const Vec2 p = qvga.project({real(0.03), real(-0.015), real(0.15)});
-  TEST_NEAR("u = u0 + px X / Z", p.x, 160 + 300 * 0.2, tol);
-  TEST_NEAR("v = v0 + py Y / Z", p.y, 120 - 300 * 0.1, tol);
+  TEST_NEAR("u = u0 + px X / Z", p.x, 160 + 300 * 0.2, pixel_tol);
+  TEST_NEAR("v = v0 + py Y / Z", p.y, 120 - 300 * 0.1, pixel_tol);
   const Vec3 back = qvga.unproject(p, real(0.15));
   TEST_NEAR("unproject inverts project (X)", back.x, 0.03, tol);
   TEST_NEAR("unproject inverts project (Y)", back.y, -0.015, tol);
   const PinholeCamera twice = qvga.scaled(2);
   const Vec2 p2 = twice.project({real(0.03), real(-0.015), real(0.15)});
-  TEST_NEAR("a camera scaled by 2 sees the same ray at 2 (u + 0.5) - 0.5", p2.x, 2 * (220 + 0.5) - 0.5, tol);
+  TEST_NEAR("a camera scaled by 2 sees the same ray at 2 (u + 0.5) - 0.5", p2.x, 2 * (220 + 0.5) - 0.5, 2 * pixel_tol);
 
   const Result<Se3> pose = read_pos(visp + "/mbt/cube.0.pos");
   TEST("mbt/cube.0.pos reads", pose.ok(), true);

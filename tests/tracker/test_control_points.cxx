@@ -12,22 +12,22 @@ using namespace edgetrack;
 static void test_control_points() {
   const double tol = std::string(real_name()) == "s47_16" ? 2e-3 : 1e-6;
   const PinholeCamera camera{real(300), real(300), real(160), real(120), 320, 240};
-  // One free edge, 100 mm long, slanted in depth: from (-50, 0, 150) mm to (50, 0, 250) mm.
+  // One free edge, 100 mm long, slanted in depth: from (-50, 0, 150) mm to (55, 0, 250) mm.
   Polygons line;
-  line.vertices = {{real(-0.05), real(0), real(0.15)}, {real(0.05), real(0), real(0.25)}};
+  line.vertices = {{real(-0.05), real(0), real(0.15)}, {real(0.055), real(0), real(0.25)}};
   line.lines = {{0, 1}};
   const Result<EdgeModel> built = build_edge_model(line, EdgeRules{}, "line");
   TEST("a one-line model builds", built.ok(), true);
   if (!built.ok()) return;
   const EdgeModel& model = built.value();
   const Se3 identity;
-  // Projected from u = 160 - 100 = 60 to u = 160 + 60 = 220: 160 pixels long.
+  // Projected from u = 160 - 100 = 60 to u = 160 + 66 = 226: 166 pixels long.
   SamplingParams params;
   std::vector<ControlPoint> points = sample_control_points(model, camera, identity, params);
-  TEST_EQUAL("a 160 pixel edge with step 10 gets 16 points", points.size(), size_t(16));
+  TEST_EQUAL("a 166 pixel edge with step 10 gets floor(16.6) = 16 points", points.size(), size_t(16));
   if (points.size() == 16) {
-    TEST_NEAR("the first point is half a step from the start", points[0].pixel.x, 65.0, tol * 100);
-    TEST_NEAR("points are one step apart", points[1].pixel.x - points[0].pixel.x, 10.0, tol * 100);
+    TEST_NEAR("the first point is half a part from the start", points[0].pixel.x, 60 + 166.0 / 32, tol * 100);
+    TEST_NEAR("points split the edge into 16 equal parts", points[1].pixel.x - points[0].pixel.x, 166.0 / 16, tol * 100);
     TEST_NEAR("the normal is perpendicular to the edge", dot(points[3].normal, points[3].direction), 0.0, tol);
     double worst = 0;
     for (const ControlPoint& p : points) {
@@ -42,14 +42,14 @@ static void test_control_points() {
          true);
   }
   params.step = real(7);
-  TEST_EQUAL("with step 7 the same edge gets floor(160 / 7) = 22 points",
-             sample_control_points(model, camera, identity, params).size(), size_t(22));
+  TEST_EQUAL("with step 7 the same edge gets floor(166 / 7) = 23 points",
+             sample_control_points(model, camera, identity, params).size(), size_t(23));
   params.step = real(10);
-  params.border = 70;  // drops u < 70 and u > 249: the points at 65
+  params.border = 66;  // drops u < 66 and u > 253: the point at 65.2
   points = sample_control_points(model, camera, identity, params);
   bool inside = true;
-  for (const ControlPoint& p : points) inside &= p.pixel.x >= real(70) && p.pixel.x <= real(249);
-  TEST_EQUAL("a 70 pixel border drops the one point at u = 65", points.size(), size_t(15));
+  for (const ControlPoint& p : points) inside &= p.pixel.x >= real(66) && p.pixel.x <= real(253);
+  TEST_EQUAL("a 66 pixel border drops the one point at u = 65.2", points.size(), size_t(15));
   TEST("no point lies within the border", inside, true);
   // An edge shorter than one step gets no point (n = 0).
   line.vertices[1] = {real(-0.047), real(0), real(0.15)};
