@@ -49,50 +49,68 @@ constexpr Uint128 multiply(Uint128 a, std::uint64_t b) {
   return {low.hi + a.hi * b, low.lo};
 }
 
-/// round(2^62 / n) for n >= 1: the Taylor coefficients below are exact integer quotients.
+/// round(2^62 / n) for n >= 1: the series coefficients below, as exact integer quotients.
 constexpr std::int64_t q62_over(std::uint64_t n) {
   return static_cast<std::int64_t>((static_cast<std::uint64_t>(kOneQ62) + n / 2) / n);
 }
 constexpr std::uint64_t factorial(int n) { return n <= 1 ? 1 : static_cast<std::uint64_t>(n) * factorial(n - 1); }
 
-/// Evaluates sum_k (-1)^k c_k z^k by Horner's rule in Q62 (coefficients c_k = round(2^62 / d_k)).
+/// Q62 coefficients round(2^62 / d_k), built at compile time so no division runs per call.
 template <int N>
-constexpr std::int64_t alternating_series(const std::uint64_t (&denominators)[N], std::int64_t z) {
-  std::int64_t p = q62_over(denominators[N - 1]);
-  for (int k = N - 2; k >= 0; --k) p = q62_over(denominators[k]) - multiply_shift(z, p, 62);
+struct Coefficients {
+  std::int64_t c[N] = {};
+};
+/// 1 / (first + step k)! for k = 0..N-1.
+template <int N>
+constexpr Coefficients<N> inverse_factorials(int first, int step) {
+  Coefficients<N> table;
+  for (int k = 0; k < N; ++k) table.c[k] = q62_over(factorial(first + step * k));
+  return table;
+}
+/// 1 / (2k + 1) for k = 0..N-1.
+template <int N>
+constexpr Coefficients<N> inverse_odd_numbers() {
+  Coefficients<N> table;
+  for (int k = 0; k < N; ++k) table.c[k] = q62_over(static_cast<std::uint64_t>(2 * k + 1));
+  return table;
+}
+constexpr Coefficients<9> kSinCoefficients = inverse_factorials<9>(1, 2);    // 1/1!, 1/3!, ... 1/17!
+constexpr Coefficients<10> kCosCoefficients = inverse_factorials<10>(0, 2);  // 1/0!, 1/2!, ... 1/18!
+constexpr Coefficients<18> kExpCoefficients = inverse_factorials<18>(0, 1);  // 1/0!, ... 1/17!
+constexpr Coefficients<14> kAtanhCoefficients = inverse_odd_numbers<14>();   // 1/1, 1/3, ... 1/27
+
+/// sum_k c_k z^k (Alternating: sum_k (-1)^k c_k z^k) by Horner's rule in Q62.
+template <bool Alternating, int N>
+constexpr std::int64_t horner(const Coefficients<N>& table, std::int64_t z) {
+  std::int64_t p = table.c[N - 1];
+  for (int k = N - 2; k >= 0; --k) {
+    const std::int64_t t = multiply_shift(z, p, 62);
+    p = Alternating ? table.c[k] - t : table.c[k] + t;
+  }
   return p;
 }
 
-/// sin(r) in Q62 for |r| <= pi/4 + 2^-40 (r in Q62): Taylor series through r^17 (next term
+/// sin(r) in Q62 for |r| <= pi/4 + 2^-34 (r in Q62): Taylor series through r^17 (next term
 /// below 2^-63).
 constexpr std::int64_t sin_kernel(std::int64_t r) {
-  constexpr std::uint64_t kDenominators[] = {factorial(1),  factorial(3),  factorial(5),
-                                             factorial(7),  factorial(9),  factorial(11),
-                                             factorial(13), factorial(15), factorial(17)};
-  const std::int64_t z = multiply_shift(r, r, 62);
-  return multiply_shift(r, alternating_series(kDenominators, z), 62);
+  return multiply_shift(r, horner<true>(kSinCoefficients, multiply_shift(r, r, 62)), 62);
 }
 
-/// cos(r) in Q62 for |r| <= pi/4 + 2^-40: Taylor series through r^18.
-constexpr std::int64_t cos_kernel(std::int64_t r) {
-  constexpr std::uint64_t kDenominators[] = {factorial(0),  factorial(2),  factorial(4),  factorial(6),
-                                             factorial(8),  factorial(10), factorial(12), factorial(14),
-                                             factorial(16), factorial(18)};
-  return alternating_series(kDenominators, multiply_shift(r, r, 62));
-}
+/// cos(r) in Q62 for |r| <= pi/4 + 2^-34: Taylor series through r^18.
+constexpr std::int64_t cos_kernel(std::int64_t r) { return horner<true>(kCosCoefficients, multiply_shift(r, r, 62)); }
 
-/// sin and cos of |x| for x = raw / 2^F, in Q62.
-struct SinCos {
-  std::int64_t sin = 0;
-  std::int64_t cos = 0;
+/// |x| = k pi/2 + r, r in Q62 within [0, pi/2] up to the reduction error.
+struct Reduction {
+  std::int64_t r = 0;
+  std::uint64_t k = 0;
 };
 
-/// Reduces |x| to r = |x| - k pi/2 in [0, pi/2] with pi/2 carried to 2^-(F+64): the product
-/// k * C (C = pi/2 * 2^(F+64), k < 2^63 * 2/pi / 2^F) and |raw| * 2^64 both stay below 2^128,
-/// so the reduction error is below k * 2^-(F+65) <= 2^-67 (2^-35 near the range end of S47.16).
-/// Then r (or pi/2 - r) goes to the Q62 kernels and the quadrant k mod 4 picks signs.
+/// Reduces |x| (x = raw / 2^F, m = |raw|) modulo pi/2 with pi/2 carried to 2^-(F+64): the
+/// product k * C (C = pi/2 * 2^(F+64), k <= 2^63 * 2/pi / 2^F) and m * 2^64 both stay below
+/// 2^128, so r is off by less than k 2^-(F+65) + 2^-63: 2^-35 at the range end of S47.16,
+/// 2^-49 at that of S40.23, 2^-63 for |x| < 2^10.
 template <int F>
-constexpr SinCos sin_cos_of_magnitude(std::uint64_t m) {
+constexpr Reduction reduce_half_pi(std::uint64_t m) {
   constexpr Uint128 kHalfPi = shift_right_rounded(kHalfPiQ124, 60 - F);  // pi/2 * 2^(F+64)
   std::uint64_t k = shift_right(multiply(m, kTwoOverPiQ64), 64 + F).lo;  // floor, or one less
   Uint128 multiple = multiply(kHalfPi, k);
@@ -101,20 +119,28 @@ constexpr SinCos sin_cos_of_magnitude(std::uint64_t m) {
     --k;
     multiple = multiple - kHalfPi;
   }
-  const auto r = static_cast<std::int64_t>(shift_right_rounded(scaled - multiple, F + 2).lo);  // Q62
-  SinCos sc;
-  if (r <= kQuarterPiQ62) {
-    sc = {sin_kernel(r), cos_kernel(r)};
-  } else {
-    const std::int64_t rest = kHalfPiQ62 - r;
-    sc = {cos_kernel(rest), sin_kernel(rest)};
+  return {static_cast<std::int64_t>(shift_right_rounded(scaled - multiple, F + 2).lo), k};
+}
+
+/// sin(r) (cosine == false) or cos(r) (cosine == true) for r in [0, pi/2] in Q62, through
+/// the kernel on [0, pi/4]: above pi/4 the cofunction of pi/2 - r.
+constexpr std::int64_t sin_or_cos(std::int64_t r, bool cosine) {
+  if (r > kQuarterPiQ62) {
+    r = kHalfPiQ62 - r;
+    cosine = !cosine;
   }
-  switch (k & 3) {
-    case 0: return sc;
-    case 1: return {sc.cos, -sc.sin};
-    case 2: return {-sc.sin, -sc.cos};
-    default: return {-sc.cos, sc.sin};
-  }
+  return cosine ? cos_kernel(r) : sin_kernel(r);
+}
+
+/// sin(|x|) or cos(|x|) in Q62: one kernel, picked and signed by the quadrant k mod 4.
+template <int F>
+constexpr std::int64_t sin_or_cos_of_magnitude(std::uint64_t m, bool cosine) {
+  const Reduction red = reduce_half_pi<F>(m);
+  const unsigned quadrant = static_cast<unsigned>(red.k & 3);
+  const std::int64_t v = sin_or_cos(red.r, cosine != ((quadrant & 1) != 0));
+  // sin is negative in quadrants 2 and 3, cos in quadrants 1 and 2.
+  const bool negative = cosine ? (quadrant == 1 || quadrant == 2) : quadrant >= 2;
+  return negative ? -v : v;
 }
 
 /// atan(2^-i) in Q61 for i = 0..61, computed at compile time from the integer series
@@ -202,7 +228,7 @@ constexpr std::uint64_t cosine_from_sine_q62(std::uint64_t m) {
 /// Worst error: measured 0.500 ulp for S47.16 and S40.23; tested bound 1 ulp.
 template <int F>
 constexpr fixed64<F> sin(fixed64<F> x) {
-  const std::int64_t s = detail::sin_cos_of_magnitude<F>(detail::magnitude(x.raw())).sin;
+  const std::int64_t s = detail::sin_or_cos_of_magnitude<F>(detail::magnitude(x.raw()), false);
   return fixed64<F>::from_raw(detail::round_shift(x.raw() < 0 ? -s : s, 62 - F));
 }
 
@@ -210,8 +236,8 @@ constexpr fixed64<F> sin(fixed64<F> x) {
 /// Worst error: measured 0.500 ulp for S47.16 and S40.23; tested bound 1 ulp.
 template <int F>
 constexpr fixed64<F> cos(fixed64<F> x) {
-  return fixed64<F>::from_raw(detail::round_shift(detail::sin_cos_of_magnitude<F>(detail::magnitude(x.raw())).cos,
-                                                  62 - F));
+  return fixed64<F>::from_raw(
+      detail::round_shift(detail::sin_or_cos_of_magnitude<F>(detail::magnitude(x.raw()), true), 62 - F));
 }
 
 /// tan(x) = sin(x) / cos(x), both in Q62, divided once with rounding. Domain: the whole range;
@@ -220,10 +246,14 @@ constexpr fixed64<F> cos(fixed64<F> x) {
 /// and 0.792 ulp for S40.23; tested bound 1 ulp + (1 + tan^2(x)) 2^(F-58) ulp.
 template <int F>
 constexpr fixed64<F> tan(fixed64<F> x) {
-  const detail::SinCos sc = detail::sin_cos_of_magnitude<F>(detail::magnitude(x.raw()));
-  const bool negative = ((x.raw() < 0) != (sc.sin < 0)) != (sc.cos < 0);
-  const std::uint64_t c = detail::magnitude(sc.cos);
-  const detail::Uint128 n = detail::shift_left(detail::Uint128{0, detail::magnitude(sc.sin)}, F);
+  // tan has period pi: tan(|x|) = tan(r) in even quadrants, -1 / tan(r) in odd ones.
+  const detail::Reduction red = detail::reduce_half_pi<F>(detail::magnitude(x.raw()));
+  const std::int64_t sin_r = detail::sin_or_cos(red.r, false), cos_r = detail::sin_or_cos(red.r, true);
+  const bool odd = (red.k & 1) != 0;
+  const std::int64_t sine = odd ? cos_r : sin_r, cosine = odd ? -sin_r : cos_r;
+  const bool negative = ((x.raw() < 0) != (sine < 0)) != (cosine < 0);
+  const std::uint64_t c = detail::magnitude(cosine);
+  const detail::Uint128 n = detail::shift_left(detail::Uint128{0, detail::magnitude(sine)}, F);
   if (c == 0) {
     detail::count_saturation();
     return fixed64<F>::from_raw(negative ? detail::kRawMin : detail::kRawMax);
@@ -292,8 +322,7 @@ constexpr fixed64<F> exp(fixed64<F> x) {
   const detail::Uint128 k_ln2 = detail::shift_right_rounded(detail::multiply(detail::kLn2Q122, k_magnitude.lo), 60);
   const std::uint64_t k_ln2_q62 = k < 0 ? std::uint64_t{0} - k_ln2.lo : k_ln2.lo;
   const auto r = static_cast<std::int64_t>((static_cast<std::uint64_t>(raw) << (62 - F)) - k_ln2_q62);
-  std::int64_t p = detail::q62_over(detail::factorial(17));
-  for (int n = 16; n >= 0; --n) p = detail::q62_over(detail::factorial(n)) + detail::multiply_shift(r, p, 62);
+  const std::int64_t p = detail::horner<false>(detail::kExpCoefficients, r);
   // exp(x) = p * 2^(k - 62) = (p * 2^(k + F - 62)) ulps.
   const int shift = 62 - F - k;
   if (shift > 0) return fixed64<F>::from_raw(detail::round_shift(p, shift));
@@ -329,8 +358,7 @@ constexpr fixed64<F> log(fixed64<F> x) {
   const std::int64_t s =
       detail::divide_rounded(below_one, detail::shift_left(detail::Uint128{0, numerator}, 62), mantissa + one);
   const std::int64_t z = detail::multiply_shift(s, s, 62);
-  std::int64_t p = detail::q62_over(27);
-  for (int n = 25; n >= 1; n -= 2) p = detail::q62_over(static_cast<std::uint64_t>(n)) + detail::multiply_shift(z, p, 62);
+  const std::int64_t p = detail::horner<false>(detail::kAtanhCoefficients, z);
   const std::int64_t log_mantissa = detail::multiply_shift(s, p, 61);  // 2 s p, Q62
   // Sum e ln 2 and log(m) in 2^-64 units, signs apart.
   const detail::Uint128 e_part = detail::multiply(static_cast<std::uint64_t>(e < 0 ? -e : e), detail::kLn2Q64);

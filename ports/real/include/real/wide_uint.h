@@ -114,6 +114,19 @@ struct SquareRoot {
 };
 
 constexpr SquareRoot square_root(Uint128 n) {
+  if (n.hi == 0) {  // the common case, in 64-bit registers (half the work on ARMv5TE)
+    std::uint64_t rest = n.lo, root = 0;
+    for (std::uint64_t bit = n.lo == 0 ? 0 : std::uint64_t{1} << ((63 - leading_zeros(n.lo)) & ~1); bit != 0;
+         bit >>= 2) {
+      const std::uint64_t trial = root + bit;
+      root >>= 1;
+      if (trial <= rest) {
+        rest -= trial;
+        root += bit;
+      }
+    }
+    return {root, Uint128{0, rest}};
+  }
   // Start at the highest power of four not above n.
   int bit_index = 0;
   if (n.hi != 0)
