@@ -3,6 +3,7 @@
 /// configured `real`) and a tolerance per scalar, named after it.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -20,4 +21,14 @@ void for_each_test_scalar() {
   Check<double>::run("double");
   Check<float>::run("float");
   if (std::string(real_name()) != "double" && std::string(real_name()) != "float") Check<real>::run(real_name());
+}
+
+/// fixedpoint::saturation_count() for fixed-point T, 0 for floating point.
+template <class T>
+std::uint64_t saturation_count() {
+  if constexpr (std::numeric_limits<T>::is_iec559) {
+    return 0;
+  } else {
+    return fixedpoint::saturation_count();
+  }
 }

@@ -43,21 +43,35 @@ struct constant {
 };
 
 template <class T>
-T abs(const T& x) { return x < T(0) ? -x : x; }
+T abs(const T& x) {
+  return x < T(0) ? -x : x;
+}
 template <class T>
-T sqr(const T& x) { return x * x; }
+T sqr(const T& x) {
+  return x * x;
+}
 template <class T>
-T cube(const T& x) { return x * x * x; }
+T cube(const T& x) {
+  return x * x * x;
+}
 /// -1, 0 or +1.
 template <class T>
-int sgn(const T& x) { return x > T(0) ? 1 : (x < T(0) ? -1 : 0); }
+int sgn(const T& x) {
+  return x > T(0) ? 1 : (x < T(0) ? -1 : 0);
+}
 /// -1 or +1 (+1 for zero).
 template <class T>
-int sgn0(const T& x) { return x < T(0) ? -1 : 1; }
+int sgn0(const T& x) {
+  return x < T(0) ? -1 : 1;
+}
 template <class T>
-T max(const T& a, const T& b) { return a < b ? b : a; }
+T max(const T& a, const T& b) {
+  return a < b ? b : a;
+}
 template <class T>
-T min(const T& a, const T& b) { return b < a ? b : a; }
+T min(const T& a, const T& b) {
+  return b < a ? b : a;
+}
 /// sqrt(a^2 + b^2) without overflow or underflow of the squares.
 template <class T>
 T hypot(const T& a, const T& b) {

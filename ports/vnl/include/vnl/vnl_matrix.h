@@ -83,15 +83,25 @@ class vnl_matrix {
 };
 
 template <class T>
-vnl_matrix<T> operator+(vnl_matrix<T> a, const vnl_matrix<T>& b) { return a += b; }
+vnl_matrix<T> operator+(vnl_matrix<T> a, const vnl_matrix<T>& b) {
+  return a += b;
+}
 template <class T>
-vnl_matrix<T> operator-(vnl_matrix<T> a, const vnl_matrix<T>& b) { return a -= b; }
+vnl_matrix<T> operator-(vnl_matrix<T> a, const vnl_matrix<T>& b) {
+  return a -= b;
+}
 template <class T>
-vnl_matrix<T> operator*(vnl_matrix<T> m, const T& s) { return m *= s; }
+vnl_matrix<T> operator*(vnl_matrix<T> m, const T& s) {
+  return m *= s;
+}
 template <class T>
-vnl_matrix<T> operator*(const T& s, vnl_matrix<T> m) { return m *= s; }
+vnl_matrix<T> operator*(const T& s, vnl_matrix<T> m) {
+  return m *= s;
+}
 template <class T>
-vnl_matrix<T> operator/(vnl_matrix<T> m, const T& s) { return m /= s; }
+vnl_matrix<T> operator/(vnl_matrix<T> m, const T& s) {
+  return m /= s;
+}
 
 /// Matrix product a * b.
 template <class T>

@@ -12,8 +12,7 @@
 #include "vnl/vnl_vector.hxx"
 
 template <class T>
-vnl_matrix<T>::vnl_matrix(std::size_t rows, std::size_t cols)
-    : rows_(rows), cols_(cols), data_(rows * cols, T(0)) {}
+vnl_matrix<T>::vnl_matrix(std::size_t rows, std::size_t cols) : rows_(rows), cols_(cols), data_(rows * cols, T(0)) {}
 
 template <class T>
 vnl_matrix<T>::vnl_matrix(std::size_t rows, std::size_t cols, const T& value)
@@ -112,8 +111,7 @@ vnl_matrix<T>& vnl_matrix<T>::set_column(std::size_t c, const vnl_vector<T>& v) 
 }
 
 template <class T>
-vnl_matrix<T> vnl_matrix<T>::extract(std::size_t rows, std::size_t cols, std::size_t top,
-                                     std::size_t left) const {
+vnl_matrix<T> vnl_matrix<T>::extract(std::size_t rows, std::size_t cols, std::size_t top, std::size_t left) const {
   assert(top + rows <= rows_ && left + cols <= cols_);
   vnl_matrix result(rows, cols);
   for (std::size_t r = 0; r < rows; ++r) {
@@ -255,10 +253,10 @@ std::ostream& operator<<(std::ostream& s, const vnl_matrix<T>& m) {
 }
 
 /// Explicitly instantiates vnl_matrix<T> and its free functions (used by instances/).
-#define VNL_MATRIX_INSTANTIATE(T)                                                        \
-  template class vnl_matrix<T>;                                                          \
-  template vnl_matrix<T> operator*(const vnl_matrix<T>&, const vnl_matrix<T>&);          \
-  template vnl_vector<T> operator*(const vnl_matrix<T>&, const vnl_vector<T>&);          \
-  template vnl_vector<T> operator*(const vnl_vector<T>&, const vnl_matrix<T>&);          \
-  template vnl_matrix<T> outer_product(const vnl_vector<T>&, const vnl_vector<T>&);      \
+#define VNL_MATRIX_INSTANTIATE(T)                                                   \
+  template class vnl_matrix<T>;                                                     \
+  template vnl_matrix<T> operator*(const vnl_matrix<T>&, const vnl_matrix<T>&);     \
+  template vnl_vector<T> operator*(const vnl_matrix<T>&, const vnl_vector<T>&);     \
+  template vnl_vector<T> operator*(const vnl_vector<T>&, const vnl_matrix<T>&);     \
+  template vnl_matrix<T> outer_product(const vnl_vector<T>&, const vnl_vector<T>&); \
   template std::ostream& operator<<(std::ostream&, const vnl_matrix<T>&)

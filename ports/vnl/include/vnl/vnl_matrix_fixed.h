@@ -139,13 +139,21 @@ class vnl_matrix_fixed {
 };
 
 template <class T, unsigned r, unsigned c>
-vnl_matrix_fixed<T, r, c> operator+(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) { return a += b; }
+vnl_matrix_fixed<T, r, c> operator+(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) {
+  return a += b;
+}
 template <class T, unsigned r, unsigned c>
-vnl_matrix_fixed<T, r, c> operator-(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) { return a -= b; }
+vnl_matrix_fixed<T, r, c> operator-(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) {
+  return a -= b;
+}
 template <class T, unsigned r, unsigned c>
-vnl_matrix_fixed<T, r, c> operator*(vnl_matrix_fixed<T, r, c> m, const T& s) { return m *= s; }
+vnl_matrix_fixed<T, r, c> operator*(vnl_matrix_fixed<T, r, c> m, const T& s) {
+  return m *= s;
+}
 template <class T, unsigned r, unsigned c>
-vnl_matrix_fixed<T, r, c> operator*(const T& s, vnl_matrix_fixed<T, r, c> m) { return m *= s; }
+vnl_matrix_fixed<T, r, c> operator*(const T& s, vnl_matrix_fixed<T, r, c> m) {
+  return m *= s;
+}
 
 template <class T, unsigned r, unsigned k, unsigned c>
 vnl_matrix_fixed<T, r, c> operator*(const vnl_matrix_fixed<T, r, k>& a, const vnl_matrix_fixed<T, k, c>& b) {

@@ -83,20 +83,32 @@ class vnl_vector {
 };
 
 template <class T>
-vnl_vector<T> operator+(vnl_vector<T> a, const vnl_vector<T>& b) { return a += b; }
+vnl_vector<T> operator+(vnl_vector<T> a, const vnl_vector<T>& b) {
+  return a += b;
+}
 template <class T>
-vnl_vector<T> operator-(vnl_vector<T> a, const vnl_vector<T>& b) { return a -= b; }
+vnl_vector<T> operator-(vnl_vector<T> a, const vnl_vector<T>& b) {
+  return a -= b;
+}
 template <class T>
-vnl_vector<T> operator*(vnl_vector<T> v, const T& s) { return v *= s; }
+vnl_vector<T> operator*(vnl_vector<T> v, const T& s) {
+  return v *= s;
+}
 template <class T>
-vnl_vector<T> operator*(const T& s, vnl_vector<T> v) { return v *= s; }
+vnl_vector<T> operator*(const T& s, vnl_vector<T> v) {
+  return v *= s;
+}
 template <class T>
-vnl_vector<T> operator/(vnl_vector<T> v, const T& s) { return v /= s; }
+vnl_vector<T> operator/(vnl_vector<T> v, const T& s) {
+  return v /= s;
+}
 
 template <class T>
 T dot_product(const vnl_vector<T>& a, const vnl_vector<T>& b);
 template <class T>
-T inner_product(const vnl_vector<T>& a, const vnl_vector<T>& b) { return dot_product(a, b); }
+T inner_product(const vnl_vector<T>& a, const vnl_vector<T>& b) {
+  return dot_product(a, b);
+}
 template <class T>
 vnl_vector<T> element_product(const vnl_vector<T>& a, const vnl_vector<T>& b);
 /// Cross product of two 3-vectors.

@@ -223,9 +223,9 @@ std::ostream& operator<<(std::ostream& s, const vnl_vector<T>& v) {
 }
 
 /// Explicitly instantiates vnl_vector<T> and its free functions (used by instances/).
-#define VNL_VECTOR_INSTANTIATE(T)                                                    \
-  template class vnl_vector<T>;                                                      \
-  template T dot_product(const vnl_vector<T>&, const vnl_vector<T>&);                \
+#define VNL_VECTOR_INSTANTIATE(T)                                                     \
+  template class vnl_vector<T>;                                                       \
+  template T dot_product(const vnl_vector<T>&, const vnl_vector<T>&);                 \
   template vnl_vector<T> element_product(const vnl_vector<T>&, const vnl_vector<T>&); \
   template vnl_vector<T> vnl_cross_3d(const vnl_vector<T>&, const vnl_vector<T>&);    \
   template T vnl_vector_ssd(const vnl_vector<T>&, const vnl_vector<T>&);              \

@@ -21,7 +21,11 @@ class vnl_vector_fixed {
   vnl_vector_fixed() { fill(T(0)); }
   explicit vnl_vector_fixed(const T& value) { fill(value); }
   explicit vnl_vector_fixed(const T* data) { copy_in(data); }
-  vnl_vector_fixed(const T& x, const T& y) { static_assert(n == 2, "two values for a 2-vector"); data_[0] = x; data_[1] = y; }
+  vnl_vector_fixed(const T& x, const T& y) {
+    static_assert(n == 2, "two values for a 2-vector");
+    data_[0] = x;
+    data_[1] = y;
+  }
   vnl_vector_fixed(const T& x, const T& y, const T& z) {
     static_assert(n == 3, "three values for a 3-vector");
     data_[0] = x;
@@ -139,15 +143,25 @@ class vnl_vector_fixed {
 };
 
 template <class T, unsigned int n>
-vnl_vector_fixed<T, n> operator+(vnl_vector_fixed<T, n> a, const vnl_vector_fixed<T, n>& b) { return a += b; }
+vnl_vector_fixed<T, n> operator+(vnl_vector_fixed<T, n> a, const vnl_vector_fixed<T, n>& b) {
+  return a += b;
+}
 template <class T, unsigned int n>
-vnl_vector_fixed<T, n> operator-(vnl_vector_fixed<T, n> a, const vnl_vector_fixed<T, n>& b) { return a -= b; }
+vnl_vector_fixed<T, n> operator-(vnl_vector_fixed<T, n> a, const vnl_vector_fixed<T, n>& b) {
+  return a -= b;
+}
 template <class T, unsigned int n>
-vnl_vector_fixed<T, n> operator*(vnl_vector_fixed<T, n> v, const T& s) { return v *= s; }
+vnl_vector_fixed<T, n> operator*(vnl_vector_fixed<T, n> v, const T& s) {
+  return v *= s;
+}
 template <class T, unsigned int n>
-vnl_vector_fixed<T, n> operator*(const T& s, vnl_vector_fixed<T, n> v) { return v *= s; }
+vnl_vector_fixed<T, n> operator*(const T& s, vnl_vector_fixed<T, n> v) {
+  return v *= s;
+}
 template <class T, unsigned int n>
-vnl_vector_fixed<T, n> operator/(vnl_vector_fixed<T, n> v, const T& s) { return v /= s; }
+vnl_vector_fixed<T, n> operator/(vnl_vector_fixed<T, n> v, const T& s) {
+  return v /= s;
+}
 
 template <class T, unsigned int n>
 T dot_product(const vnl_vector_fixed<T, n>& a, const vnl_vector_fixed<T, n>& b) {

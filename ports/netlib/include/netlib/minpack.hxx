@@ -1,0 +1,557 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Definitions for minpack.h. Include it only to instantiate the solver for a scalar that the
+/// library does not instantiate (the LM comparison instantiates four scalars in one program).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "netlib/minpack.h"
+
+namespace netlib {
+namespace minpack_detail {
+
+// MINPACK's named constants; converted at compile time, so a fixed-point T runs no double code.
+template <class T>
+struct k {
+  static constexpr T p0001 = T(1.0e-4);
+  static constexpr T p001 = T(0.001);
+  static constexpr T p05 = T(0.05);
+  static constexpr T p1 = T(0.1);
+  static constexpr T p25 = T(0.25);
+  static constexpr T p5 = T(0.5);
+  static constexpr T p75 = T(0.75);
+  static constexpr T p9 = T(0.9);
+};
+
+template <class T>
+T max_of(const T& a, const T& b) {
+  return a < b ? b : a;
+}
+template <class T>
+T min_of(const T& a, const T& b) {
+  return b < a ? b : a;
+}
+template <class T>
+T abs_of(const T& a) {
+  return a < T(0) ? -a : a;
+}
+
+}  // namespace minpack_detail
+
+template <class T>
+minpack_machine<T> minpack_machine_constants() {
+  using std::sqrt;
+  using K = minpack_detail::k<T>;
+  minpack_machine<T> machine;
+  machine.epsmch = std::numeric_limits<T>::epsilon();
+  machine.dwarf = std::numeric_limits<T>::min();
+  machine.rdwarf = K::p9 * sqrt(std::numeric_limits<T>::min());
+  machine.rgiant = K::p9 * sqrt(std::numeric_limits<T>::max());
+  return machine;
+}
+
+template <class T>
+T enorm(int n, const T* x) {
+  return enorm(n, x, minpack_machine_constants<T>());
+}
+
+template <class T>
+T enorm(int n, const T* x, const minpack_machine<T>& machine) {
+  using minpack_detail::abs_of;
+  using std::sqrt;
+  // Three sums: small components scaled by the largest small one (x3max), large ones by the
+  // largest large one (x1max), the rest plainly.
+  T s1(0), s2(0), s3(0), x1max(0), x3max(0);
+  const T agiant = machine.rgiant / T(n);
+  for (int i = 0; i < n; ++i) {
+    const T xabs = abs_of(x[i]);
+    if (xabs > machine.rdwarf && xabs < agiant) {
+      s2 += xabs * xabs;
+    } else if (xabs > machine.rdwarf) {
+      if (xabs > x1max) {
+        const T ratio = x1max / xabs;
+        s1 = T(1) + s1 * (ratio * ratio);
+        x1max = xabs;
+      } else {
+        const T ratio = xabs / x1max;
+        s1 += ratio * ratio;
+      }
+    } else if (xabs > x3max) {
+      const T ratio = x3max / xabs;
+      s3 = T(1) + s3 * (ratio * ratio);
+      x3max = xabs;
+    } else if (xabs != T(0)) {
+      const T ratio = xabs / x3max;
+      s3 += ratio * ratio;
+    }
+  }
+  if (s1 != T(0)) return x1max * sqrt(s1 + (s2 / x1max) / x1max);
+  if (s2 != T(0)) {
+    if (s2 >= x3max) return sqrt(s2 * (T(1) + (x3max / s2) * (x3max * s3)));
+    return sqrt(x3max * ((s2 / x3max) + (x3max * s3)));
+  }
+  return x3max * sqrt(s3);
+}
+
+template <class T>
+void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
+           const minpack_machine<T>& machine) {
+  using std::sqrt;
+  using K = minpack_detail::k<T>;
+  using minpack_detail::max_of;
+  for (int j = 0; j < n; ++j) {
+    acnorm[j] = enorm(m, a + j * lda, machine);
+    rdiag[j] = acnorm[j];
+    wa[j] = rdiag[j];
+    if (pivot) ipvt[j] = j;
+  }
+  const int minmn = m < n ? m : n;
+  for (int j = 0; j < minmn; ++j) {
+    T* const aj = a + j * lda;
+    if (pivot) {
+      // Bring the column of largest remaining norm to position j.
+      int kmax = j;
+      for (int k = j; k < n; ++k) {
+        if (rdiag[k] > rdiag[kmax]) kmax = k;
+      }
+      if (kmax != j) {
+        T* const akmax = a + kmax * lda;
+        for (int i = 0; i < m; ++i) {
+          const T swap = aj[i];
+          aj[i] = akmax[i];
+          akmax[i] = swap;
+        }
+        rdiag[kmax] = rdiag[j];
+        wa[kmax] = wa[j];
+        const int swap = ipvt[j];
+        ipvt[j] = ipvt[kmax];
+        ipvt[kmax] = swap;
+      }
+    }
+    // Householder reflection that zeroes column j below the diagonal.
+    T ajnorm = enorm(m - j, aj + j, machine);
+    if (ajnorm != T(0)) {
+      if (aj[j] < T(0)) ajnorm = -ajnorm;
+      for (int i = j; i < m; ++i) aj[i] /= ajnorm;
+      aj[j] += T(1);
+      // Apply it to the remaining columns and update their norms.
+      for (int k = j + 1; k < n; ++k) {
+        T* const ak = a + k * lda;
+        T sum(0);
+        for (int i = j; i < m; ++i) sum += aj[i] * ak[i];
+        const T temp = sum / aj[j];
+        for (int i = j; i < m; ++i) ak[i] -= temp * aj[i];
+        if (pivot && rdiag[k] != T(0)) {
+          const T ratio = ak[j] / rdiag[k];
+          rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
+          const T drop = rdiag[k] / wa[k];
+          if (K::p05 * (drop * drop) <= machine.epsmch) {
+            rdiag[k] = enorm(m - j - 1, ak + j + 1, machine);
+            wa[k] = rdiag[k];
+          }
+        }
+      }
+    }
+    rdiag[j] = -ajnorm;
+  }
+}
+
+template <class T>
+void qrsolv(int n, T* r, int ldr, const int* ipvt, const T* diag, const T* qtb, T* x, T* sdiag, T* wa,
+            const minpack_machine<T>&) {
+  using std::sqrt;
+  using K = minpack_detail::k<T>;
+  using minpack_detail::abs_of;
+  // Copy R^T into the lower triangle (diagonal kept in x) and Q^T b into wa.
+  for (int j = 0; j < n; ++j) {
+    for (int i = j; i < n; ++i) r[i + j * ldr] = r[j + i * ldr];
+    x[j] = r[j + j * ldr];
+    wa[j] = qtb[j];
+  }
+  // Eliminate the diagonal matrix D with Givens rotations, row by row.
+  for (int j = 0; j < n; ++j) {
+    const int l = ipvt[j];
+    if (diag[l] != T(0)) {
+      for (int k = j; k < n; ++k) sdiag[k] = T(0);
+      sdiag[j] = diag[l];
+      T qtbpj(0);
+      for (int k = j; k < n; ++k) {
+        if (sdiag[k] == T(0)) continue;
+        T& rkk = r[k + k * ldr];
+        T sin, cos;
+        if (abs_of(rkk) < abs_of(sdiag[k])) {
+          const T cotan = rkk / sdiag[k];
+          sin = K::p5 / sqrt(K::p25 + K::p25 * (cotan * cotan));
+          cos = sin * cotan;
+        } else {
+          const T tan = sdiag[k] / rkk;
+          cos = K::p5 / sqrt(K::p25 + K::p25 * (tan * tan));
+          sin = cos * tan;
+        }
+        rkk = cos * rkk + sin * sdiag[k];
+        const T temp = cos * wa[k] + sin * qtbpj;
+        qtbpj = -sin * wa[k] + cos * qtbpj;
+        wa[k] = temp;
+        for (int i = k + 1; i < n; ++i) {
+          const T rik = cos * r[i + k * ldr] + sin * sdiag[i];
+          sdiag[i] = -sin * r[i + k * ldr] + cos * sdiag[i];
+          r[i + k * ldr] = rik;
+        }
+      }
+    }
+    sdiag[j] = r[j + j * ldr];
+    r[j + j * ldr] = x[j];
+  }
+  // Back-substitute in the triangular S; a singular S gives a least-squares solution.
+  int nsing = n;
+  for (int j = 0; j < n; ++j) {
+    if (sdiag[j] == T(0) && nsing == n) nsing = j;
+    if (nsing < n) wa[j] = T(0);
+  }
+  for (int j = nsing - 1; j >= 0; --j) {
+    T sum(0);
+    for (int i = j + 1; i < nsing; ++i) sum += r[i + j * ldr] * wa[i];
+    wa[j] = (wa[j] - sum) / sdiag[j];
+  }
+  for (int j = 0; j < n; ++j) x[ipvt[j]] = wa[j];
+}
+
+template <class T>
+void lmpar(int n, T* r, int ldr, const int* ipvt, const T* diag, const T* qtb, T delta, T* par, T* x, T* sdiag, T* wa1,
+           T* wa2, const minpack_machine<T>& machine) {
+  using std::sqrt;
+  using K = minpack_detail::k<T>;
+  using minpack_detail::abs_of;
+  using minpack_detail::max_of;
+  using minpack_detail::min_of;
+  // Gauss-Newton direction (least-squares solution if R is singular).
+  int nsing = n;
+  for (int j = 0; j < n; ++j) {
+    wa1[j] = qtb[j];
+    if (r[j + j * ldr] == T(0) && nsing == n) nsing = j;
+    if (nsing < n) wa1[j] = T(0);
+  }
+  for (int j = nsing - 1; j >= 0; --j) {
+    wa1[j] /= r[j + j * ldr];
+    const T temp = wa1[j];
+    for (int i = 0; i < j; ++i) wa1[i] -= r[i + j * ldr] * temp;
+  }
+  for (int j = 0; j < n; ++j) x[ipvt[j]] = wa1[j];
+
+  int iter = 0;
+  for (int j = 0; j < n; ++j) wa2[j] = diag[j] * x[j];
+  T dxnorm = enorm(n, wa2, machine);
+  T fp = dxnorm - delta;
+  if (fp > K::p1 * delta) {
+    // Lower bound parl from the Newton step (zero when R is rank deficient).
+    T parl(0);
+    if (nsing >= n) {
+      for (int j = 0; j < n; ++j) {
+        const int l = ipvt[j];
+        wa1[j] = diag[l] * (wa2[l] / dxnorm);
+      }
+      for (int j = 0; j < n; ++j) {
+        T sum(0);
+        for (int i = 0; i < j; ++i) sum += r[i + j * ldr] * wa1[i];
+        wa1[j] = (wa1[j] - sum) / r[j + j * ldr];
+      }
+      const T temp = enorm(n, wa1, machine);
+      parl = fp / delta / temp / temp;
+    }
+    // Upper bound paru from the scaled gradient.
+    for (int j = 0; j < n; ++j) {
+      T sum(0);
+      for (int i = 0; i <= j; ++i) sum += r[i + j * ldr] * qtb[i];
+      wa1[j] = sum / diag[ipvt[j]];
+    }
+    const T gnorm = enorm(n, wa1, machine);
+    T paru = gnorm / delta;
+    if (paru == T(0)) paru = machine.dwarf / min_of(delta, K::p1);
+    *par = max_of(*par, parl);
+    *par = min_of(*par, paru);
+    if (*par == T(0)) *par = gnorm / dxnorm;
+
+    for (;;) {
+      ++iter;
+      if (*par == T(0)) *par = max_of(machine.dwarf, K::p001 * paru);
+      const T root = sqrt(*par);
+      for (int j = 0; j < n; ++j) wa1[j] = root * diag[j];
+      qrsolv(n, r, ldr, ipvt, wa1, qtb, x, sdiag, wa2, machine);
+      for (int j = 0; j < n; ++j) wa2[j] = diag[j] * x[j];
+      dxnorm = enorm(n, wa2, machine);
+      const T previous_fp = fp;
+      fp = dxnorm - delta;
+      // Accept par when |D x| is within 10% of delta, in the exceptional cases, or after 10 tries.
+      if (abs_of(fp) <= K::p1 * delta || (parl == T(0) && fp <= previous_fp && previous_fp < T(0)) || iter == 10) break;
+      if (dxnorm == T(0)) break;  // D x = 0: the Newton correction below would divide by zero
+      // Newton correction.
+      for (int j = 0; j < n; ++j) {
+        const int l = ipvt[j];
+        wa1[j] = diag[l] * (wa2[l] / dxnorm);
+      }
+      for (int j = 0; j < n; ++j) {
+        wa1[j] /= sdiag[j];
+        const T temp = wa1[j];
+        for (int i = j + 1; i < n; ++i) wa1[i] -= r[i + j * ldr] * temp;
+      }
+      const T temp = enorm(n, wa1, machine);
+      const T parc = fp / delta / temp / temp;
+      if (fp > T(0)) parl = max_of(parl, *par);
+      if (fp < T(0)) paru = min_of(paru, *par);
+      *par = max_of(parl, *par + parc);
+    }
+  }
+  if (iter == 0) *par = T(0);
+}
+
+template <class T>
+int fdjac2(minpack_func_mn<T> fcn, void* p, int m, int n, T* x, const T* fvec, T* fjac, int ldfjac, T epsfcn, T* wa,
+           const minpack_machine<T>& machine) {
+  using minpack_detail::abs_of;
+  using minpack_detail::max_of;
+  using std::sqrt;
+  const T eps = sqrt(max_of(epsfcn, machine.epsmch));
+  int iflag = 0;
+  for (int j = 0; j < n; ++j) {
+    const T temp = x[j];
+    T h = eps * abs_of(temp);
+    if (h == T(0)) h = eps;
+    x[j] = temp + h;
+    iflag = fcn(p, m, n, x, wa, 2);
+    if (iflag < 0) return iflag;
+    x[j] = temp;
+    for (int i = 0; i < m; ++i) fjac[i + j * ldfjac] = (wa[i] - fvec[i]) / h;
+  }
+  return iflag;
+}
+
+namespace minpack_detail {
+
+/// The outer and inner loops shared by lmder and lmdif. `problem` provides
+/// residuals(x, fvec), jacobian(x, fvec, fjac, nfev) and progress(x, fvec), each returning the
+/// callback's value (negative: stop).
+template <class T, class Problem>
+int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, int ldfjac, T ftol, T xtol, T gtol,
+                        int maxfev, T* diag, int mode, T factor, int nprint, int* nfev, int* ipvt, T* qtf, T* wa1,
+                        T* wa2, T* wa3, T* wa4) {
+  using std::sqrt;
+  using K = k<T>;
+  const minpack_machine<T> machine = minpack_machine_constants<T>();
+  int info = 0;
+  int iflag = 0;
+  *nfev = 0;
+  T fnorm(0), xnorm(0), delta(0), par(0);
+  int iter = 1;
+
+  bool valid =
+      n > 0 && m >= n && ldfjac >= m && ftol >= T(0) && xtol >= T(0) && gtol >= T(0) && maxfev > 0 && factor > T(0);
+  if (valid && mode == 2) {
+    for (int j = 0; j < n; ++j) {
+      if (diag[j] <= T(0)) valid = false;
+    }
+  }
+  if (valid) {
+    iflag = problem.residuals(x, fvec);
+    *nfev = 1;
+  }
+  if (!valid || iflag < 0) goto done;
+  fnorm = enorm(m, fvec, machine);
+
+  for (;;) {  // outer loop: one Jacobian per iteration
+    iflag = problem.jacobian(x, fvec, fjac, nfev);
+    if (iflag < 0) goto done;
+    if (nprint > 0) {
+      iflag = 0;
+      if ((iter - 1) % nprint == 0) iflag = problem.progress(x, fvec);
+      if (iflag < 0) goto done;
+    }
+    qrfac(m, n, fjac, ldfjac, true, ipvt, wa1, wa2, wa3, machine);
+    if (iter == 1) {
+      // Scale by the column norms of the first Jacobian; set the first step bound.
+      if (mode != 2) {
+        for (int j = 0; j < n; ++j) diag[j] = wa2[j] == T(0) ? T(1) : wa2[j];
+      }
+      for (int j = 0; j < n; ++j) wa3[j] = diag[j] * x[j];
+      xnorm = enorm(n, wa3, machine);
+      delta = factor * xnorm;
+      if (delta == T(0)) delta = factor;
+    }
+    // qtf = the first n components of Q^T fvec.
+    for (int i = 0; i < m; ++i) wa4[i] = fvec[i];
+    for (int j = 0; j < n; ++j) {
+      T* const fj = fjac + j * ldfjac;
+      if (fj[j] != T(0)) {
+        T sum(0);
+        for (int i = j; i < m; ++i) sum += fj[i] * wa4[i];
+        const T temp = -sum / fj[j];
+        for (int i = j; i < m; ++i) wa4[i] += fj[i] * temp;
+      }
+      fj[j] = wa1[j];
+      qtf[j] = wa4[j];
+    }
+    // Norm of the scaled gradient, and the gtol test.
+    T gnorm(0);
+    if (fnorm != T(0)) {
+      for (int j = 0; j < n; ++j) {
+        const int l = ipvt[j];
+        if (wa2[l] == T(0)) continue;
+        T sum(0);
+        for (int i = 0; i <= j; ++i) sum += fjac[i + j * ldfjac] * (qtf[i] / fnorm);
+        gnorm = max_of(gnorm, abs_of(sum / wa2[l]));
+      }
+    }
+    if (gnorm <= gtol) info = 4;
+    if (info != 0) goto done;
+    if (mode != 2) {
+      for (int j = 0; j < n; ++j) diag[j] = max_of(diag[j], wa2[j]);
+    }
+
+    T ratio(0);
+    do {  // inner loop: shrink the trust region until a step reduces the residual
+      lmpar(n, fjac, ldfjac, ipvt, diag, qtf, delta, &par, wa1, wa2, wa3, wa4, machine);
+      for (int j = 0; j < n; ++j) {
+        wa1[j] = -wa1[j];
+        wa2[j] = x[j] + wa1[j];
+        wa3[j] = diag[j] * wa1[j];
+      }
+      const T pnorm = enorm(n, wa3, machine);
+      if (iter == 1) delta = min_of(delta, pnorm);
+      iflag = problem.residuals(wa2, wa4);
+      ++*nfev;
+      if (iflag < 0) goto done;
+      const T fnorm1 = enorm(m, wa4, machine);
+
+      // Scaled actual and predicted reductions, and the directional derivative.
+      T actred(-1);
+      if (K::p1 * fnorm1 < fnorm) {
+        const T q = fnorm1 / fnorm;
+        actred = T(1) - q * q;
+      }
+      for (int j = 0; j < n; ++j) {
+        wa3[j] = T(0);
+        const T temp = wa1[ipvt[j]];
+        for (int i = 0; i <= j; ++i) wa3[i] += fjac[i + j * ldfjac] * temp;
+      }
+      const T temp1 = enorm(n, wa3, machine) / fnorm;
+      const T temp2 = sqrt(par) * pnorm / fnorm;
+      const T prered = temp1 * temp1 + temp2 * temp2 / K::p5;
+      const T dirder = -(temp1 * temp1 + temp2 * temp2);
+      ratio = T(0);
+      if (prered != T(0)) ratio = actred / prered;
+
+      // Update the step bound.
+      if (ratio <= K::p25) {
+        T temp = actred >= T(0) ? K::p5 : K::p5 * dirder / (dirder + K::p5 * actred);
+        if (K::p1 * fnorm1 >= fnorm || temp < K::p1) temp = K::p1;
+        delta = temp * min_of(delta, pnorm / K::p1);
+        par = par / temp;
+      } else if (par == T(0) || ratio >= K::p75) {
+        delta = pnorm / K::p5;
+        par = K::p5 * par;
+      }
+
+      if (ratio >= K::p0001) {  // successful step: accept it
+        for (int j = 0; j < n; ++j) {
+          x[j] = wa2[j];
+          wa2[j] = diag[j] * x[j];
+        }
+        for (int i = 0; i < m; ++i) fvec[i] = wa4[i];
+        xnorm = enorm(n, wa2, machine);
+        fnorm = fnorm1;
+        ++iter;
+      }
+
+      // Convergence tests.
+      const bool f_converged = abs_of(actred) <= ftol && prered <= ftol && K::p5 * ratio <= T(1);
+      if (f_converged) info = 1;
+      if (delta <= xtol * xnorm) info = f_converged ? 3 : 2;
+      if (info != 0) goto done;
+      // Termination tests: evaluation budget and tolerances below machine precision.
+      if (*nfev >= maxfev) info = 5;
+      if (abs_of(actred) <= machine.epsmch && prered <= machine.epsmch && K::p5 * ratio <= T(1)) info = 6;
+      if (delta <= machine.epsmch * xnorm) info = 7;
+      if (gnorm <= machine.epsmch) info = 8;
+      if (info != 0) goto done;
+    } while (ratio < K::p0001);
+  }
+
+done:
+  if (iflag < 0) info = iflag;
+  if (nprint > 0) problem.progress(x, fvec);
+  return info;
+}
+
+template <class T>
+struct AnalyticProblem {
+  minpack_funcder_mn<T> fcn;
+  void* p;
+  int m, n;
+  T* fjac;
+  int ldfjac;
+  int* njev;
+  int residuals(const T* x, T* fvec) { return fcn(p, m, n, x, fvec, fjac, ldfjac, 1); }
+  int jacobian(const T* x, T* fvec, T* fjac, int*) {
+    ++*njev;
+    return fcn(p, m, n, x, fvec, fjac, ldfjac, 2);
+  }
+  int progress(const T* x, T* fvec) { return fcn(p, m, n, x, fvec, fjac, ldfjac, 0); }
+};
+
+template <class T>
+struct DifferenceProblem {
+  minpack_func_mn<T> fcn;
+  void* p;
+  int m, n, ldfjac;
+  T epsfcn;
+  T* wa4;
+  minpack_machine<T> machine;
+  int residuals(const T* x, T* fvec) { return fcn(p, m, n, x, fvec, 1); }
+  int jacobian(T* x, const T* fvec, T* fjac, int* nfev) {
+    const int iflag = fdjac2(fcn, p, m, n, x, fvec, fjac, ldfjac, epsfcn, wa4, machine);
+    *nfev += n;
+    return iflag;
+  }
+  int progress(const T* x, T* fvec) { return fcn(p, m, n, x, fvec, 0); }
+};
+
+}  // namespace minpack_detail
+
+template <class T>
+int lmder(minpack_funcder_mn<T> fcn, void* p, int m, int n, T* x, T* fvec, T* fjac, int ldfjac, T ftol, T xtol, T gtol,
+          int maxfev, T* diag, int mode, T factor, int nprint, int* nfev, int* njev, int* ipvt, T* qtf, T* wa1, T* wa2,
+          T* wa3, T* wa4) {
+  *njev = 0;
+  minpack_detail::AnalyticProblem<T> problem{fcn, p, m, n, fjac, ldfjac, njev};
+  return minpack_detail::levenberg_marquardt(problem, m, n, x, fvec, fjac, ldfjac, ftol, xtol, gtol, maxfev, diag, mode,
+                                             factor, nprint, nfev, ipvt, qtf, wa1, wa2, wa3, wa4);
+}
+
+template <class T>
+int lmdif(minpack_func_mn<T> fcn, void* p, int m, int n, T* x, T* fvec, T ftol, T xtol, T gtol, int maxfev, T epsfcn,
+          T* diag, int mode, T factor, int nprint, int* nfev, T* fjac, int ldfjac, int* ipvt, T* qtf, T* wa1, T* wa2,
+          T* wa3, T* wa4) {
+  minpack_detail::DifferenceProblem<T> problem{fcn, p, m, n, ldfjac, epsfcn, wa4, minpack_machine_constants<T>()};
+  return minpack_detail::levenberg_marquardt(problem, m, n, x, fvec, fjac, ldfjac, ftol, xtol, gtol, maxfev, diag, mode,
+                                             factor, nprint, nfev, ipvt, qtf, wa1, wa2, wa3, wa4);
+}
+
+}  // namespace netlib
+
+/// Explicitly instantiates the MINPACK routines for T (used by instances/).
+#define NETLIB_MINPACK_INSTANTIATE(T)                                                                                 \
+  namespace netlib {                                                                                                  \
+  template minpack_machine<T> minpack_machine_constants<T>();                                                         \
+  template T enorm<T>(int, const T*);                                                                                 \
+  template T enorm<T>(int, const T*, const minpack_machine<T>&);                                                      \
+  template void qrfac<T>(int, int, T*, int, bool, int*, T*, T*, T*, const minpack_machine<T>&);                       \
+  template void qrsolv<T>(int, T*, int, const int*, const T*, const T*, T*, T*, T*, const minpack_machine<T>&);       \
+  template void lmpar<T>(int, T*, int, const int*, const T*, const T*, T, T*, T*, T*, T*, T*,                         \
+                         const minpack_machine<T>&);                                                                  \
+  template int fdjac2<T>(minpack_func_mn<T>, void*, int, int, T*, const T*, T*, int, T, T*,                           \
+                         const minpack_machine<T>&);                                                                  \
+  template int lmder<T>(minpack_funcder_mn<T>, void*, int, int, T*, T*, T*, int, T, T, T, int, T*, int, T, int, int*, \
+                        int*, int*, T*, T*, T*, T*, T*);                                                              \
+  template int lmdif<T>(minpack_func_mn<T>, void*, int, int, T*, T*, T, T, T, int, T, T*, int, T, int, int*, T*, int, \
+                        int*, T*, T*, T*, T*, T*);                                                                    \
+  }

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/algo/vnl_levenberg_marquardt.h: Levenberg-Marquardt minimisation of a
+/// vnl_least_squares_function over our MINPACK (netlib/minpack.h): lmder when the function
+/// has a Jacobian, lmdif (forward differences) otherwise. Templated on the scalar as
+/// vnl_levenberg_marquardt_of<T>; `vnl_levenberg_marquardt` is the one for `real`.
+///
+/// Counters follow upstream: with lmder, get_num_iterations() and get_num_evaluations() both
+/// count residual evaluations; get_num_jacobian_evaluations() gives MINPACK's iterations.
+#pragma once
+
+#include <iosfwd>
+
+#include "real/real.h"
+#include "vnl/vnl_least_squares_function.h"
+#include "vnl/vnl_matrix.h"
+#include "vnl/vnl_nonlinear_minimizer.h"
+#include "vnl/vnl_vector.h"
+
+template <class T>
+class vnl_levenberg_marquardt_of : public vnl_nonlinear_minimizer_of<T> {
+ public:
+  using ReturnCodes = typename vnl_nonlinear_minimizer_of<T>::ReturnCodes;
+
+  /// Keeps a reference to f, which must outlive the minimiser. Default maxfev: 400 * unknowns.
+  explicit vnl_levenberg_marquardt_of(vnl_least_squares_function_of<T>& f);
+
+  /// Minimises from x, leaving the estimate in x; true when a tolerance was met (codes 1-4).
+  bool minimize(vnl_vector<T>& x);
+  bool minimize_using_gradient(vnl_vector<T>& x);
+  bool minimize_without_gradient(vnl_vector<T>& x);
+
+  /// Writes what ended the last minimisation, the counts and the start/end RMS errors.
+  void diagnose_outcome(std::ostream& s) const;
+  void diagnose_outcome() const;
+
+  /// Jacobian evaluations of the last lmder run (MINPACK's iteration count); 0 after lmdif.
+  int get_num_jacobian_evaluations() const { return num_jacobian_evaluations_; }
+  /// J^T J at the solution, from MINPACK's final R and permutation: P R^T R P^T.
+  vnl_matrix<T> get_JtJ() const;
+
+ private:
+  static int lmder_callback(void* self, int m, int n, const T* x, T* fx, T* fjac, int ldfjac, int iflag);
+  static int lmdif_callback(void* self, int m, int n, const T* x, T* fx, int iflag);
+  bool input_is_valid(const vnl_vector<T>& x);
+  bool outcome_is_success() const;
+
+  vnl_least_squares_function_of<T>* f_;
+  vnl_matrix<T> fdjac_;  ///< MINPACK's column-major m x n work matrix, stored as n x m
+  vnl_vector<int> ipvt_;
+  int num_jacobian_evaluations_ = 0;
+  bool start_error_set_ = false;
+};
+
+using vnl_levenberg_marquardt = vnl_levenberg_marquardt_of<real>;
