@@ -214,11 +214,19 @@ constexpr std::uint64_t clamp_to_unit(std::int64_t raw) {
   return std::uint64_t{1} << F;
 }
 
-/// sqrt(1 - x^2) * 2^62 for |x| = m / 2^F <= 1: 1 - x^2 is exact in 2F bits.
+/// The point (sqrt(1 - x^2), |x|) of the unit circle for |x| = m / 2^F <= 1, both scaled by
+/// the same 2^(F+s): 1 - x^2 = v / 2^(2F) is exact, and v is shifted left by 2s into
+/// [2^62, 2^64) so that its rounded square root keeps 32 significant bits in 64-bit arithmetic.
+struct CirclePoint {
+  std::uint64_t cosine = 0;
+  std::uint64_t sine = 0;
+};
 template <int F>
-constexpr std::uint64_t cosine_from_sine_q62(std::uint64_t m) {
-  const std::uint64_t one_minus_square = (std::uint64_t{1} << (2 * F)) - m * m;  // m <= 2^F
-  return square_root(shift_left(Uint128{0, one_minus_square}, 124 - 2 * F)).root;
+constexpr CirclePoint circle_point(std::uint64_t m) {
+  const std::uint64_t v = (std::uint64_t{1} << (2 * F)) - m * m;  // m <= 2^F
+  const int s = v == 0 ? 0 : leading_zeros(v) / 2;
+  const SquareRoot root = square_root(Uint128{0, v << (2 * s)});
+  return {root.root + (root.remainder.lo > root.root ? 1u : 0u), m << s};
 }
 
 }  // namespace detail
@@ -279,25 +287,25 @@ constexpr fixed64<F> atan(fixed64<F> x) {
   return atan2(x, fixed64<F>(1));
 }
 
-/// asin(x) = atan2(x, sqrt(1 - x^2)), with 1 - x^2 exact and its root in Q62 (0.5 * 2^-62).
+/// asin(x) = atan2(x, sqrt(1 - x^2)), with 1 - x^2 exact and its root to 2^-32 relative.
 /// Domain [-1, 1]; outside it the result saturates to +-pi/2 and counts.
-/// Worst error: measured 0.5005 ulp for S47.16, 0.5004 ulp for S40.23; tested bound 1 ulp.
+/// Worst error: measured 0.5005 ulp for S47.16, 0.5007 ulp for S40.23; tested bound 1 ulp.
 template <int F>
 constexpr fixed64<F> asin(fixed64<F> x) {
   const std::uint64_t m = detail::clamp_to_unit<F>(x.raw());
-  const std::uint64_t c = detail::cosine_from_sine_q62<F>(m);
-  return fixed64<F>::from_raw(detail::round_shift(detail::atan2_q61<F>(x.raw() < 0, m << (62 - F), false, c), 61 - F));
+  const detail::CirclePoint p = detail::circle_point<F>(m);
+  return fixed64<F>::from_raw(detail::round_shift(detail::atan2_q61<F>(x.raw() < 0, p.sine, false, p.cosine), 61 - F));
 }
 
 /// acos(x) = atan2(sqrt(1 - x^2), x), as asin. Domain [-1, 1]; outside it the result saturates
 /// to 0 or pi and counts.
-/// Worst error: measured 0.5004 ulp for S47.16, 0.5003 ulp for S40.23; tested bound 1 ulp.
+/// Worst error: measured 0.5004 ulp for S47.16, 0.5008 ulp for S40.23; tested bound 1 ulp.
 template <int F>
 constexpr fixed64<F> acos(fixed64<F> x) {
   const std::uint64_t m = detail::clamp_to_unit<F>(x.raw());
-  const std::uint64_t s = detail::cosine_from_sine_q62<F>(m);
-  if (s == 0 && x.raw() > 0) return fixed64<F>();
-  return fixed64<F>::from_raw(detail::round_shift(detail::atan2_q61<F>(false, s, x.raw() < 0, m << (62 - F)), 61 - F));
+  const detail::CirclePoint p = detail::circle_point<F>(m);
+  if (p.cosine == 0 && x.raw() > 0) return fixed64<F>();
+  return fixed64<F>::from_raw(detail::round_shift(detail::atan2_q61<F>(false, p.cosine, x.raw() < 0, p.sine), 61 - F));
 }
 
 /// exp(x) = 2^k exp(r), k = round(x / ln 2), r = x - k ln 2 exact to 2^-63 (ln 2 carried to
