@@ -8,6 +8,7 @@ DECLARE(test_fixed64_rounding_functions);
 DECLARE(test_fixed64_numeric_limits);
 DECLARE(test_fixed64_saturation_counting);
 DECLARE(test_real_picks_configured_type);
+DECLARE(test_fixed64_generic_code);
 DECLARE(test_fixed64_add_subtract);
 DECLARE(test_fixed64_multiply);
 DECLARE(test_fixed64_divide);
@@ -25,6 +26,7 @@ void register_tests() {
   REGISTER(test_fixed64_numeric_limits);
   REGISTER(test_fixed64_saturation_counting);
   REGISTER(test_real_picks_configured_type);
+  REGISTER(test_fixed64_generic_code);
   REGISTER(test_fixed64_add_subtract);
   REGISTER(test_fixed64_multiply);
   REGISTER(test_fixed64_divide);

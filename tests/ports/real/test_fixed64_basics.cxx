@@ -3,6 +3,7 @@
 // saturation counting behave as docs/ARCHITECTURE.md's fixed-point contract says, for S47.16
 // and S40.23; and real.h picks the type that EDGETRACK_REAL configured.
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -210,6 +211,46 @@ void check_saturation_counting() {
   fixedpoint::reset_saturation_count();
 }
 
+/// Generic code as ports/ and tracker/ write it: std functions brought in by using-declarations,
+/// fixed64's found by argument-dependent lookup.
+template <class T>
+T generic_expression(T a, T b) {
+  using std::abs;
+  using std::atan2;
+  using std::cos;
+  using std::exp;
+  using std::floor;
+  using std::log;
+  using std::sin;
+  using std::sqrt;
+  static constexpr T kHalf = T(0.5);
+  return sqrt(a * a + b * b) * kHalf + abs(sin(a) * cos(b)) + atan2(b, a) + floor(exp(log(a)));
+}
+
+template <int F>
+void check_generic_code_and_constant_expressions() {
+  using T = fixed64<F>;
+  const char* name = type_name<F>();
+  const double expected = generic_expression(3.0, 4.0);
+  TEST_NEAR(named("generic code gives the double result", name).c_str(), generic_expression(T(3), T(4)), expected,
+            8 * std::ldexp(1.0, -F));
+  TEST(named("std::max and std::min work", name).c_str(), std::max(T(2), T(3)) == 3 && std::min(T(2), T(3)) == 2,
+       true);
+  static_assert((T(3) * T(0.5)).raw() == 3 << (F - 1), "* in a constant expression");
+  static_assert((T(3) / T(4)).raw() == 3 << (F - 2), "/ in a constant expression");
+  static_assert(sqrt(T(9)) == T(3), "sqrt in a constant expression");
+  static_assert(cos(T(0)) == T(1), "cos in a constant expression");
+  constexpr T kAtCompileTime = sin(T(1.25)) / exp(T(0.75)) + atan2(T(2), T(-3));
+  volatile double runtime_input = 1.25;  // keeps the same expression out of constant folding
+  const T at_run_time = sin(T(runtime_input)) / exp(T(0.75)) + atan2(T(2), T(-3));
+  TEST(named("constant evaluation gives the run-time result", name).c_str(), kAtCompileTime == at_run_time, true);
+}
+
+void test_fixed64_generic_code() {
+  check_generic_code_and_constant_expressions<16>();
+  check_generic_code_and_constant_expressions<23>();
+}
+
 void test_fixed64_construction() {
   check_construction_and_conversion<16>();
   check_construction_and_conversion<23>();
@@ -272,3 +313,4 @@ TESTMAIN(test_fixed64_rounding_functions)
 TESTMAIN(test_fixed64_numeric_limits)
 TESTMAIN(test_fixed64_saturation_counting)
 TESTMAIN(test_real_picks_configured_type)
+TESTMAIN(test_fixed64_generic_code)
