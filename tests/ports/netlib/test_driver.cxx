@@ -2,7 +2,11 @@
 #include "testlib/testlib_register.h"
 
 DECLARE(test_minpack_mgh);
+DECLARE(test_pose_lm);
 
-void register_tests() { REGISTER(test_minpack_mgh); }
+void register_tests() {
+  REGISTER(test_minpack_mgh);
+  REGISTER(test_pose_lm);
+}
 
 DEFINE_MAIN

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Definitions of pose_problem::Residuals<T>; include once per program for each scalar used.
+#pragma once
+
+#include "pose_problem.h"
+#include "vnl/vnl_least_squares_function.hxx"
+#include "vnl/vnl_rotation_matrix.hxx"
+
+namespace pose_problem {
+
+template <class T>
+Residuals<T>::Residuals(const Problem& problem)
+    : vnl_least_squares_function_of<T>(6, static_cast<unsigned>(problem.points.size())),
+      px_(T(problem.px)),
+      py_(T(problem.py)),
+      u0_(T(problem.u0)),
+      v0_(T(problem.v0)) {
+  for (const ControlPoint& c : problem.points) {
+    const Vec3 y = problem.start.rotation * c.point_in_model;
+    y_.emplace_back(T(y[0]), T(y[1]), T(y[2]));
+    q_.push_back(T(c.q[0]));
+    q_.push_back(T(c.q[1]));
+    n_.push_back(T(c.n[0]));
+    n_.push_back(T(c.n[1]));
+  }
+  for (unsigned i = 0; i < 3; ++i) t0_[i] = T(problem.start.translation[i]);
+}
+
+template <class T>
+vnl_vector<T> Residuals<T>::start() const {
+  vnl_vector<T> x(6);
+  for (unsigned i = 0; i < 3; ++i) x[3 + i] = t0_[i];
+  return x;
+}
+
+template <class T>
+void Residuals<T>::camera_point(const vnl_matrix_fixed<T, 3, 3>& R, const T* t, int i, vnl_vector_fixed<T, 3>& rotated,
+                                vnl_vector_fixed<T, 3>& in_camera) const {
+  rotated = R * y_[i];
+  for (unsigned k = 0; k < 3; ++k) in_camera[k] = rotated[k] + t[k];
+}
+
+template <class T>
+void Residuals<T>::residuals(const T* x, T* f) const {
+  const vnl_matrix_fixed<T, 3, 3> R = vnl_rotation_matrix(vnl_vector_fixed<T, 3>(x));
+  vnl_vector_fixed<T, 3> rotated, c;
+  for (int i = 0; i < static_cast<int>(y_.size()); ++i) {
+    camera_point(R, x + 3, i, rotated, c);
+    const T u = u0_ + px_ * c[0] / c[2];
+    const T v = v0_ + py_ * c[1] / c[2];
+    f[i] = (q_[2 * i] - u) * n_[2 * i] + (q_[2 * i + 1] - v) * n_[2 * i + 1];
+  }
+}
+
+template <class T>
+void Residuals<T>::jacobian(const T* x, T* fjac, int ld) const {
+  // d(exp([w]x) Y)/dw = -[R Y]x J_l(w), J_l(w) = I + b [w]x + c [w]x^2 (the left Jacobian).
+  const vnl_vector_fixed<T, 3> w(x);
+  const vnl_matrix_fixed<T, 3, 3> R = vnl_rotation_matrix(w);
+  const vnl_rotation_coefficients<T> k = vnl_rotation_exp_coefficients(w);
+  const vnl_matrix_fixed<T, 3, 3> W = vnl_rotation_hat(w);
+  vnl_matrix_fixed<T, 3, 3> left_jacobian = W * k.b + (W * W) * k.c;
+  for (unsigned d = 0; d < 3; ++d) left_jacobian(d, d) += T(1);
+  vnl_vector_fixed<T, 3> rotated, c;
+  for (int i = 0; i < static_cast<int>(y_.size()); ++i) {
+    camera_point(R, x + 3, i, rotated, c);
+    // dr/dc = -n . d(u, v)/dc.
+    const T inv_z = T(1) / c[2];
+    const T a = n_[2 * i] * px_ * inv_z;
+    const T b = n_[2 * i + 1] * py_ * inv_z;
+    const vnl_vector_fixed<T, 3> dr_dc(-a, -b, (a * c[0] + b * c[1]) * inv_z);
+    // dr/dw = dr/dc . (-[R Y]x J_l) = (R Y x dr/dc)^T J_l, since -g^T [p]x = (p x g)^T.
+    const vnl_vector_fixed<T, 3> g = vnl_cross_3d(rotated, dr_dc);
+    for (unsigned col = 0; col < 3; ++col) {
+      fjac[i + col * ld] = g[0] * left_jacobian(0, col) + g[1] * left_jacobian(1, col) + g[2] * left_jacobian(2, col);
+      fjac[i + (3 + col) * ld] = dr_dc[col];
+    }
+  }
+}
+
+template <class T>
+void Residuals<T>::gradf(const vnl_vector<T>& x, vnl_matrix<T>& J) {
+  const int m = static_cast<int>(y_.size());
+  std::vector<T> column_major(static_cast<std::size_t>(m) * 6);
+  jacobian(x.data_block(), column_major.data(), m);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < 6; ++j) J(i, j) = column_major[i + j * m];
+  }
+}
+
+}  // namespace pose_problem
