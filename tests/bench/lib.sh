@@ -8,6 +8,7 @@ bench_build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
 bench_tree() {
   local kind=$1 real=$2; shift 2
   local dir="$bench_build_root/bench-$kind-$real"
+  mkdir -p "$bench_build_root"
   local args=(-DEDGETRACK_REAL="$real" -DCMAKE_BUILD_TYPE=Release)
   [ "$kind" = arm ] && args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
   cmake -S "$top" -B "$dir" -G Ninja "${args[@]}" >"$dir.configure.log" 2>&1 ||
