@@ -168,7 +168,8 @@ constexpr AtanTable kAtanTable = make_atan_table();
 /// atan(ay / ax) in Q61, in [0, pi/2], for ax, ay >= 0 not both zero (any common scale):
 /// CORDIC in vectoring mode. The vector is first scaled (exactly, or by at most three bits) so
 /// that its larger coordinate lies in [2^60, 2^61); `iterations` rotations by +-atan(2^-i)
-/// drive y to zero, leaving an angle error below 2^-(iterations-1) plus 2^-56 of rounding.
+/// drive y to zero, leaving an angle error below 2^-(iterations-1) plus the rounding of the
+/// shifts and of the table (about 2^-55).
 constexpr std::int64_t cordic_atan(std::uint64_t ax, std::uint64_t ay, int iterations) {
   const std::uint64_t larger = ax > ay ? ax : ay;
   const int shift = leading_zeros(larger) - 3;
@@ -223,6 +224,7 @@ struct CirclePoint {
 };
 template <int F>
 constexpr CirclePoint circle_point(std::uint64_t m) {
+  static_assert(F <= 31, "asin and acos need 1 - x^2 in 64 bits: F <= 31");
   const std::uint64_t v = (std::uint64_t{1} << (2 * F)) - m * m;  // m <= 2^F
   const int s = v == 0 ? 0 : leading_zeros(v) / 2;
   const SquareRoot root = square_root(Uint128{0, v << (2 * s)});
