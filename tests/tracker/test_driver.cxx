@@ -9,6 +9,7 @@ DECLARE(test_edge_id);
 DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
+DECLARE(test_pose_solver);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -18,6 +19,7 @@ void register_tests() {
   REGISTER(test_edge_id_buffer);
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
+  REGISTER(test_pose_solver);
 }
 
 DEFINE_MAIN

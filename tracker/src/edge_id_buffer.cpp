@@ -37,25 +37,36 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
   points_in_camera_.resize(model.vertices.size());
   for (size_t v = 0; v < model.vertices.size(); ++v) points_in_camera_[v] = camera_from_model * model.vertices[v];
 
+  // Faces facing away from the camera cannot hide anything on a closed surface.
+  front_.assign(model.faces.size(), 1);
+  if (model.closed)
+    for (size_t f = 0; f < model.faces.size(); ++f)
+      front_[f] = dot(camera_from_model.rotation() * model.faces[f].normal,
+                      points_in_camera_[model.faces[f].vertices[0]]) < real(0);
+
   const int width = camera_.width, height = camera_.height;
   int32_t* depth = inverse_depth_.data();
   int x0 = width, y0 = height, x1 = -1, y1 = -1;
-  auto grow = [&](int x, int y) {
-    if (x < x0) x0 = x;
-    if (x > x1) x1 = x;
-    if (y < y0) y0 = y;
-    if (y > y1) y1 = y;
+  auto grow = [&](int bx0, int by0, int bx1, int by1) {
+    if (bx0 < x0) x0 = bx0;
+    if (bx1 > x1) x1 = bx1;
+    if (by0 < y0) y0 = by0;
+    if (by1 > y1) y1 = by1;
   };
-  auto plot_face = [&](int x, int y, int32_t w) {
+  auto plot_face = [depth, width](int x, int y, int32_t w) {
     int32_t& d = depth[static_cast<size_t>(y) * width + x];
     if (w > d) d = w;
-    grow(x, y);
   };
   for (const Triangle& t : model.triangles) {
+    if (!front_[t.face]) continue;
     const Vec3 corners[3] = {points_in_camera_[t.a], points_in_camera_[t.b], points_in_camera_[t.c]};
     ScreenVertex polygon[kMaxClippedVertices];
     const int n = clip_and_project_triangle(camera_, corners, polygon);
-    for (int i = 1; i + 1 < n; ++i) fill_triangle(polygon[0], polygon[i], polygon[i + 1], width, height, plot_face);
+    for (int i = 1; i + 1 < n; ++i) {
+      int box[4];
+      if (fill_triangle(polygon[0], polygon[i], polygon[i + 1], width, height, plot_face, &box))
+        grow(box[0], box[1], box[2], box[3]);
+    }
   }
   uint16_t* colour = colours_.data();
   for (size_t e = 0; e < model.edges.size(); ++e) {
@@ -67,8 +78,13 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
     draw_line(a, b, width, height, [&](int x, int y, int32_t w) {
       const size_t i = static_cast<size_t>(y) * width + x;
       if (w + (w >> 7) >= depth[i]) colour[i] = code;
-      grow(x, y);
     });
+    // The line's pixels lie within one pixel of its clipped end points' box.
+    const int half = 1 << (kSubpixelBits - 1);
+    grow(std::max(0, ((std::min(a.x, b.x) + half) >> kSubpixelBits) - 1),
+         std::max(0, ((std::min(a.y, b.y) + half) >> kSubpixelBits) - 1),
+         std::min(width - 1, ((std::max(a.x, b.x) + half) >> kSubpixelBits) + 1),
+         std::min(height - 1, ((std::max(a.y, b.y) + half) >> kSubpixelBits) + 1));
   }
   dirty_x0_ = x0;
   dirty_y0_ = y0;

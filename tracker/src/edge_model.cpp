@@ -160,6 +160,11 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     }
   }
 
+  model.closed = !order.empty();
+  for (const auto& key : order) {
+    const EdgeUse& use = uses[key];
+    if (use.count != 2 || use.same_direction) model.closed = false;
+  }
   const real crease_cos = cos(rules.crease_angle);
   for (const auto& key : order) {
     const EdgeUse& use = uses[key];

@@ -19,7 +19,8 @@ class EdgeIdBuffer {
   /// Buffers for images of the camera's size; they are allocated here, once.
   explicit EdgeIdBuffer(const PinholeCamera& camera);
 
-  /// Redraws the buffers for the model seen from camera_from_model. An edge pixel is kept when
+  /// Redraws the buffers for the model seen from camera_from_model. On a closed model
+  /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when
   /// its inverse depth is within 1/128 (0.8 %) of the nearest face there, so edges lying on
   /// their own faces pass and edges behind other faces do not.
   void render(const EdgeModel& model, const Se3& camera_from_model);
@@ -44,6 +45,7 @@ class EdgeIdBuffer {
   std::vector<int32_t> inverse_depth_;  ///< Q20 1/Z of the nearest face, 0 = none
   std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
   std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each edge
+  std::vector<uint8_t> front_;          ///< per face: drawn this frame (front-facing or not closed)
   int dirty_x0_ = 0, dirty_y0_ = 0, dirty_x1_ = -1, dirty_y1_ = -1;  ///< area drawn last time
 };
 

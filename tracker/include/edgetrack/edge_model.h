@@ -40,6 +40,10 @@ struct EdgeModel {
   std::vector<Face> faces;
   std::vector<Triangle> triangles;
   std::vector<Edge> edges;
+  /// True when every face boundary segment is shared by exactly two faces that run it in
+  /// opposite directions: a closed, consistently wound surface, whose back faces can never be
+  /// seen, so renderers may skip them.
+  bool closed = false;
 };
 
 /// The most edges a model may have: what the Edge-ID colour code can name (paper, section 3.4).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <utility>
 
 #include "edgetrack/pinhole_camera.h"
@@ -34,37 +35,23 @@ int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camer
 bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const Vec3& b, ScreenVertex& sa,
                               ScreenVertex& sb);
 
-/// Calls plot(x, y, w) for every pixel centre inside the triangle; w is interpolated exactly
-/// (affine in screen space). Triangles under 1/16 pixel^2 are skipped.
-template <class Plot>
-void fill_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, int width, int height, Plot&& plot) {
-  int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
-  if (area < 0) {
-    std::swap(b, c);
-    area = -area;
-  }
-  if (area < 16) return;
-  const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
-  const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
-  const int x0 = std::max(0, (min_x + 15) >> kSubpixelBits), x1 = std::min(width - 1, max_x >> kSubpixelBits);
-  const int y0 = std::max(0, (min_y + 15) >> kSubpixelBits), y1 = std::min(height - 1, max_y >> kSubpixelBits);
-  if (x0 > x1 || y0 > y1) return;
-  // Gradient of w per Q4 step, scaled by 2^8: w(p) = a.w + (gx * (p.x - a.x) + gy * (p.y - a.y)) >> 8.
-  const int64_t dxb = b.x - a.x, dyb = b.y - a.y, dwb = b.w - a.w;
-  const int64_t dxc = c.x - a.x, dyc = c.y - a.y, dwc = c.w - a.w;
-  const int64_t gx = ((dwb * dyc - dwc * dyb) * 256) / area;
-  const int64_t gy = ((dxb * dwc - dxc * dwb) * 256) / area;
-  // Edge functions, non-negative inside: e_uv(p) = (v - u) x (p - u).
-  auto edge_at = [](const ScreenVertex& u, const ScreenVertex& v, int64_t px, int64_t py) {
-    return int64_t(v.x - u.x) * (py - u.y) - int64_t(v.y - u.y) * (px - u.x);
+namespace raster_detail {
+
+/// The scan of fill_triangle, with edge functions in `Int`: int32_t when the triangle's bounding
+/// box is small enough for every product to fit, int64_t otherwise.
+template <class Int, class Plot>
+void scan_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int x0, int x1, int y0,
+                   int y1, int64_t gx, int64_t gy, Plot& plot) {
+  auto edge_at = [](const ScreenVertex& u, const ScreenVertex& v, Int px, Int py) {
+    return Int(v.x - u.x) * (py - Int(u.y)) - Int(v.y - u.y) * (px - Int(u.x));
   };
-  const int64_t step = 1 << kSubpixelBits;
-  const int64_t sx_ab = -int64_t(b.y - a.y) * step, sx_bc = -int64_t(c.y - b.y) * step, sx_ca = -int64_t(a.y - c.y) * step;
+  const Int step = 1 << kSubpixelBits;
+  const Int sx_ab = -Int(b.y - a.y) * step, sx_bc = -Int(c.y - b.y) * step, sx_ca = -Int(a.y - c.y) * step;
+  const int64_t acc_step = gx * step;
   for (int y = y0; y <= y1; ++y) {
-    const int64_t py = int64_t(y) << kSubpixelBits, px = int64_t(x0) << kSubpixelBits;
-    int64_t e_ab = edge_at(a, b, px, py), e_bc = edge_at(b, c, px, py), e_ca = edge_at(c, a, px, py);
-    int64_t acc = gx * (px - a.x) + gy * (py - a.y);
-    const int64_t acc_step = gx * step;
+    const Int py = Int(y) << kSubpixelBits, px = Int(x0) << kSubpixelBits;
+    Int e_ab = edge_at(a, b, px, py), e_bc = edge_at(b, c, px, py), e_ca = edge_at(c, a, px, py);
+    int64_t acc = gx * (int64_t(px) - a.x) + gy * (int64_t(py) - a.y);
     for (int x = x0; x <= x1; ++x) {
       if ((e_ab | e_bc | e_ca) >= 0) plot(x, y, static_cast<int32_t>(a.w + (acc >> 8)));
       e_ab += sx_ab;
@@ -73,6 +60,47 @@ void fill_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, int width, in
       acc += acc_step;
     }
   }
+}
+
+}  // namespace raster_detail
+
+/// Calls plot(x, y, w) for every pixel centre inside the triangle; w is interpolated exactly
+/// (affine in screen space). Triangles under 1/16 pixel^2 are skipped. Returns false when
+/// nothing of the triangle lies on the screen; otherwise its pixel bounding box is in box.
+template <class Plot>
+bool fill_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, int width, int height, Plot&& plot,
+                   int (*box)[4] = nullptr) {
+  int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+  if (area < 0) {
+    std::swap(b, c);
+    area = -area;
+  }
+  if (area < 16) return false;
+  const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
+  const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
+  const int x0 = std::max(0, (min_x + 15) >> kSubpixelBits), x1 = std::min(width - 1, max_x >> kSubpixelBits);
+  const int y0 = std::max(0, (min_y + 15) >> kSubpixelBits), y1 = std::min(height - 1, max_y >> kSubpixelBits);
+  if (x0 > x1 || y0 > y1) return false;
+  if (box) {
+    (*box)[0] = x0;
+    (*box)[1] = y0;
+    (*box)[2] = x1;
+    (*box)[3] = y1;
+  }
+  // Gradient of w per Q4 step, scaled by 2^8: w(p) = a.w + (gx * (p.x - a.x) + gy * (p.y - a.y)) >> 8.
+  const int64_t dxb = b.x - a.x, dyb = b.y - a.y, dwb = b.w - a.w;
+  const int64_t dxc = c.x - a.x, dyc = c.y - a.y, dwc = c.w - a.w;
+  const int64_t gx = ((dwb * dyc - dwc * dyb) * 256) / area;
+  const int64_t gy = ((dxb * dwc - dxc * dwb) * 256) / area;
+  // Edge functions are products of two coordinate differences plus one more: under 2^14 Q4
+  // units (1024 pixels) on both axes they fit in 32 bits, which halves the inner loop on ARM.
+  const int32_t span = std::max(max_x - min_x, max_y - min_y);
+  const int32_t reach = std::max(std::max(std::abs(min_x), std::abs(max_x)), std::max(std::abs(min_y), std::abs(max_y)));
+  if (span < (1 << 14) && reach < (1 << 14))
+    raster_detail::scan_triangle<int32_t>(a, b, c, x0, x1, y0, y1, gx, gy, plot);
+  else
+    raster_detail::scan_triangle<int64_t>(a, b, c, x0, x1, y0, y1, gx, gy, plot);
+  return true;
 }
 
 /// Calls plot(x, y, w) for the pixels of the segment: one pixel per column (or per row, when

@@ -2,6 +2,7 @@
 /// Errors as values: what the loaders and the tracker return instead of throwing or exiting.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -20,19 +21,18 @@ struct Error {
 template <class T>
 class Result {
  public:
-  Result(T value) : value_(std::move(value)), ok_(true) {}  // NOLINT: implicit on purpose
-  Result(Error error) : error_(std::move(error)), ok_(false) {}  // NOLINT
+  Result(T value) : value_(std::move(value)) {}  // NOLINT: implicit on purpose
+  Result(Error error) : error_(std::move(error)) {}  // NOLINT
 
-  bool ok() const { return ok_; }
-  const T& value() const& { return value_; }
-  T& value() & { return value_; }
-  T&& value() && { return std::move(value_); }
+  bool ok() const { return value_.has_value(); }
+  const T& value() const& { return *value_; }
+  T& value() & { return *value_; }
+  T&& value() && { return std::move(*value_); }
   const Error& error() const { return error_; }
 
  private:
-  T value_{};
+  std::optional<T> value_;
   Error error_;
-  bool ok_;
 };
 
 }  // namespace edgetrack

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Pose calculation (paper, equations (2)-(3)): Levenberg-Marquardt (our vnl port) over six
+/// parameters, minimising the distances between the projected control points and the lines
+/// through their matches along the projected edge normals, with an analytic Jacobian.
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/edge_match.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+struct PoseParams {
+  int max_evaluations = 30;  ///< residual evaluations per solve, at most
+  /// LM's relative tolerances on the step and on the sum of squares. VXL's defaults (1e-8 and
+  /// 1e-10) lie below S40.23's resolution (1.2e-7), where LM then runs to max_evaluations; these
+  /// are reachable by every `real` and a pose step of 1e-6 relative is far below a pixel.
+  real x_tolerance = real(1e-6);
+  real f_tolerance = real(1e-6);
+  /// LM's gradient test (cosine between the residuals and the Jacobian's columns): VXL's 1e-5
+  /// is met in double after about 3 evaluations, but rounding in S40.23 keeps the cosine above
+  /// it, and LM then spends 2-3 times the evaluations on rejected steps.
+  real g_tolerance = real(1e-3);
+  int min_points = 6;        ///< fewer matches than this: the pose is kept as it was
+  /// Not in the paper (its section 5 leaves robust estimation to future work): after the first
+  /// solve, a second one weights each distance with Tukey's biweight, w = (1 - (delta / c)^2)^2
+  /// for |delta| < c and 0 beyond, c = max(tukey_c * 1.4826 * median |delta|, tukey_floor)
+  /// pixels; matches with weight 0 are marked as outliers. The weights vary continuously with
+  /// the distances, so nearby inputs give nearby poses. 0 switches the second solve off, which
+  /// is the paper's tracker.
+  real tukey_c = real(4.685);
+  real tukey_floor = real(1.5);
+};
+
+struct PoseSolution {
+  Se3 camera_from_model;
+  real start_rms{0};  ///< RMS point-to-line distance before and after, pixels
+  real end_rms{0};
+  int evaluations = 0;
+  int iterations = 0;  ///< Jacobian evaluations (MINPACK's iterations), both solves
+  int outliers = 0;    ///< matches given weight 0 in the second solve
+  bool solved = false;  ///< false when there were too few points or LM reported a failure
+};
+
+/// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM
+/// minimises the sum of their squares). p_i(x) projects point_in_model with the pose
+/// R = exp(hat(w)) R0, t = t0 + v for x = (v, w): the exponential map around the start pose
+/// `start`, so x = 0 is the start and the rotation needs no constraint.
+/// Matches given weight 0 by the robust solve are returned with `outlier` set.
+PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                        const PoseParams& params);
+
+}  // namespace edgetrack

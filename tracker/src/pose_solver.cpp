@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Point-to-line pose refinement with vnl_levenberg_marquardt and an analytic Jacobian.
+#include "edgetrack/pose_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "vnl/algo/vnl_levenberg_marquardt.h"
+#include "vnl/vnl_least_squares_function.h"
+#include "vnl/vnl_rotation_matrix.h"
+
+namespace edgetrack {
+namespace {
+
+/// The left Jacobian of SO(3), J(w) = I + b hat(w) + c hat(w)^2: d(exp(hat(w)) y)/dw is
+/// -hat(exp(hat(w)) y) J(w).
+Mat33 so3_left_jacobian(const Vec3& w) {
+  const vnl_rotation_coefficients<real> k = vnl_rotation_exp_coefficients(vnl_vector_fixed<real, 3>(w.x, w.y, w.z));
+  const Mat33 h = hat(w);
+  const Mat33 h2 = h * h;
+  Mat33 j = Mat33::identity();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) j.m[r][c] = j.m[r][c] + k.b * h.m[r][c] + k.c * h2.m[r][c];
+  return j;
+}
+
+class PointToLineResiduals : public vnl_least_squares_function {
+ public:
+  /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
+  /// roots of the least-squares weights.
+  PointToLineResiduals(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
+                       const PinholeCamera& camera, const Se3& start)
+      : vnl_least_squares_function(6, static_cast<unsigned>(matches.size()), use_gradient),
+        matches_(matches),
+        weights_(weights),
+        camera_(camera),
+        start_(start) {
+    rotated_.reserve(matches.size());
+    for (const EdgeMatch& m : matches) rotated_.push_back(start.rotation() * m.point.point_in_model);
+  }
+
+  void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {
+    const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
+    const Mat33 r = rotation_exp(w);
+    const Vec3 t = start_.translation() + v;
+    for (size_t i = 0; i < matches_.size(); ++i) {
+      const Vec3 p = r * rotated_[i] + t;
+      if (p.z <= real(0)) {
+        throw_failure();
+        return;
+      }
+      const real inv_z = real(1) / p.z;  // one division per point, as in gradf
+      const Vec2 d{camera_.u0 + camera_.px * p.x * inv_z - matches_[i].found.x,
+                   camera_.v0 + camera_.py * p.y * inv_z - matches_[i].found.y};
+      fx[static_cast<unsigned>(i)] = weights_.empty() ? dot(matches_[i].point.normal, d)
+                                                      : weights_[i] * dot(matches_[i].point.normal, d);
+    }
+  }
+
+  void gradf(const vnl_vector<real>& x, vnl_matrix<real>& jacobian) override {
+    const Vec3 w{x[3], x[4], x[5]};
+    const Mat33 r = rotation_exp(w);
+    const Mat33 jl = so3_left_jacobian(w);
+    const Vec3 t = start_.translation() + Vec3{x[0], x[1], x[2]};
+    for (size_t i = 0; i < matches_.size(); ++i) {
+      const Vec3 z = r * rotated_[i];
+      const Vec3 p = z + t;
+      const real inv_z = real(1) / p.z;
+      const Vec2& n = matches_[i].point.normal;
+      const real weight = weights_.empty() ? real(1) : weights_[i];
+      // d delta / d p = n^T d project / d p.
+      const real gx = weight * n.x * camera_.px * inv_z;
+      const real gy = weight * n.y * camera_.py * inv_z;
+      const real gz = -(gx * p.x + gy * p.y) * inv_z;
+      const unsigned row = static_cast<unsigned>(i);
+      jacobian(row, 0) = gx;
+      jacobian(row, 1) = gy;
+      jacobian(row, 2) = gz;
+      // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
+      const Vec3 zg = cross(z, Vec3{gx, gy, gz});
+      for (int c = 0; c < 3; ++c)
+        jacobian(row, 3 + static_cast<unsigned>(c)) = zg.x * jl.m[0][c] + zg.y * jl.m[1][c] + zg.z * jl.m[2][c];
+    }
+  }
+
+  Se3 pose(const vnl_vector<real>& x) const {
+    const Vec3 w{x[3], x[4], x[5]};
+    return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0], x[1], x[2]});
+  }
+
+ private:
+  const std::vector<EdgeMatch>& matches_;
+  const std::vector<real>& weights_;
+  PinholeCamera camera_;
+  Se3 start_;
+  std::vector<Vec3> rotated_;  ///< R0 * point_in_model, fixed during the minimisation
+};
+
+/// One Levenberg-Marquardt solve over `matches` from `start`; adds its counts to `solution`.
+bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
+                const Se3& start, const PoseParams& params, PoseSolution& solution, Se3& pose) {
+  PointToLineResiduals residuals(matches, weights, camera, start);
+  vnl_levenberg_marquardt lm(residuals);
+  lm.set_max_function_evals(params.max_evaluations);
+  lm.set_x_tolerance(params.x_tolerance);
+  lm.set_f_tolerance(params.f_tolerance);
+  lm.set_g_tolerance(params.g_tolerance);
+  vnl_vector<real> x(6, real(0));
+  const bool ok = lm.minimize_using_gradient(x);
+  solution.evaluations += lm.get_num_evaluations();
+  solution.iterations += lm.get_num_jacobian_evaluations();
+  if (solution.evaluations == lm.get_num_evaluations()) solution.start_rms = lm.get_start_error();
+  solution.end_rms = lm.get_end_error();
+  // Hitting the evaluation limit still leaves the best estimate LM found; a failure does not.
+  if (!(ok || lm.get_failure_code() == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS) || residuals.failure)
+    return false;
+  pose = residuals.pose(x);
+  return true;
+}
+
+real median_of(std::vector<real> values) {
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  return values[mid];
+}
+
+}  // namespace
+
+PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                        const PoseParams& params) {
+  using std::fabs;
+  PoseSolution solution;
+  solution.camera_from_model = start;
+  const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
+  if (matches.size() < needed) return solution;
+  Se3 pose;
+  const std::vector<real> unweighted;
+  if (!solve_once(matches, unweighted, camera, start, params, solution, pose)) return solution;
+  solution.camera_from_model = pose;
+  solution.solved = true;
+  if (params.tukey_c <= real(0)) return solution;
+
+  std::vector<real> distances;
+  distances.reserve(matches.size());
+  for (const EdgeMatch& m : matches)
+    distances.push_back(fabs(dot(m.point.normal, camera.project(pose * m.point.point_in_model) - m.found)));
+  real c = params.tukey_c * real(1.4826) * median_of(distances);
+  if (c < params.tukey_floor) c = params.tukey_floor;
+  std::vector<real> weights(matches.size());  // square roots of Tukey's weights: 1 - (d / c)^2
+  for (size_t i = 0; i < matches.size(); ++i) {
+    const real u = distances[i] / c;
+    if (u >= real(1)) {
+      weights[i] = real(0);
+      matches[i].outlier = true;
+      ++solution.outliers;
+    } else {
+      weights[i] = real(1) - u * u;
+    }
+  }
+  if (matches.size() - static_cast<size_t>(solution.outliers) < needed) return solution;
+  if (solve_once(matches, weights, camera, pose, params, solution, pose)) solution.camera_from_model = pose;
+  return solution;
+}
+
+}  // namespace edgetrack
