@@ -66,14 +66,18 @@ class Residuals : public vnl_least_squares_function_of<T> {
   /// f (size m) at x (size 6).
   void residuals(const T* x, T* f) const;
   /// The m x 6 Jacobian, column-major with leading dimension ld.
-  void jacobian(const T* x, T* fjac, int ld) const;
+  void jacobian(const T* x, T* fjac, int ld) const { jacobian_strided(x, fjac, 1, ld); }
   /// The start parameters (0, 0, 0, t0).
   vnl_vector<T> start() const;
 
   void f(const vnl_vector<T>& x, vnl_vector<T>& fx) override { residuals(x.data_block(), fx.data_block()); }
-  void gradf(const vnl_vector<T>& x, vnl_matrix<T>& J) override;
+  void gradf(const vnl_vector<T>& x, vnl_matrix<T>& J) override {
+    jacobian_strided(x.data_block(), J.data_block(), 6, 1);
+  }
 
  private:
+  /// Writes d f_i / d x_j to J[i * row_step + j * column_step].
+  void jacobian_strided(const T* x, T* J, int row_step, int column_step) const;
   /// Camera point of control point i for rotation exp(w) R0 and translation t, plus R Y_i.
   void camera_point(const vnl_matrix_fixed<T, 3, 3>& R, const T* t, int i, vnl_vector_fixed<T, 3>& rotated,
                     vnl_vector_fixed<T, 3>& in_camera) const;

@@ -46,14 +46,15 @@ void Residuals<T>::residuals(const T* x, T* f) const {
   vnl_vector_fixed<T, 3> rotated, c;
   for (int i = 0; i < static_cast<int>(y_.size()); ++i) {
     camera_point(R, x + 3, i, rotated, c);
-    const T u = u0_ + px_ * c[0] / c[2];
-    const T v = v0_ + py_ * c[1] / c[2];
+    const T inv_z = T(1) / c[2];
+    const T u = u0_ + px_ * (c[0] * inv_z);
+    const T v = v0_ + py_ * (c[1] * inv_z);
     f[i] = (q_[2 * i] - u) * n_[2 * i] + (q_[2 * i + 1] - v) * n_[2 * i + 1];
   }
 }
 
 template <class T>
-void Residuals<T>::jacobian(const T* x, T* fjac, int ld) const {
+void Residuals<T>::jacobian_strided(const T* x, T* J, int row_step, int column_step) const {
   // d(exp([w]x) Y)/dw = -[R Y]x J_l(w), J_l(w) = I + b [w]x + c [w]x^2 (the left Jacobian).
   const vnl_vector_fixed<T, 3> w(x);
   const vnl_matrix_fixed<T, 3, 3> R = vnl_rotation_matrix(w);
@@ -72,19 +73,11 @@ void Residuals<T>::jacobian(const T* x, T* fjac, int ld) const {
     // dr/dw = dr/dc . (-[R Y]x J_l) = (R Y x dr/dc)^T J_l, since -g^T [p]x = (p x g)^T.
     const vnl_vector_fixed<T, 3> g = vnl_cross_3d(rotated, dr_dc);
     for (unsigned col = 0; col < 3; ++col) {
-      fjac[i + col * ld] = g[0] * left_jacobian(0, col) + g[1] * left_jacobian(1, col) + g[2] * left_jacobian(2, col);
-      fjac[i + (3 + col) * ld] = dr_dc[col];
+      T* const row = J + i * row_step;
+      row[col * column_step] =
+          g[0] * left_jacobian(0, col) + g[1] * left_jacobian(1, col) + g[2] * left_jacobian(2, col);
+      row[(3 + col) * column_step] = dr_dc[col];
     }
-  }
-}
-
-template <class T>
-void Residuals<T>::gradf(const vnl_vector<T>& x, vnl_matrix<T>& J) {
-  const int m = static_cast<int>(y_.size());
-  std::vector<T> column_major(static_cast<std::size_t>(m) * 6);
-  jacobian(x.data_block(), column_major.data(), m);
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < 6; ++j) J(i, j) = column_major[i + j * m];
   }
 }
 

@@ -32,9 +32,11 @@ template <class T>
 T min_of(const T& a, const T& b) {
   return b < a ? b : a;
 }
+/// |a| through the type's own abs (fabs for floating point: no branch).
 template <class T>
 T abs_of(const T& a) {
-  return a < T(0) ? -a : a;
+  using std::abs;
+  return abs(a);
 }
 
 }  // namespace minpack_detail
@@ -133,7 +135,14 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
     T ajnorm = enorm(m - j, aj + j, machine);
     if (ajnorm != T(0)) {
       if (aj[j] < T(0)) ajnorm = -ajnorm;
-      for (int i = j; i < m; ++i) aj[i] /= ajnorm;
+      if (std::numeric_limits<T>::is_iec559) {
+        for (int i = j; i < m; ++i) aj[i] /= ajnorm;  // MINPACK's own operations, bit for bit
+      } else {
+        // Fixed point: one division and m - j multiplications instead of m - j divisions
+        // (a division costs ten multiplications there); the result moves by at most an ulp.
+        const T inverse = T(1) / ajnorm;
+        for (int i = j; i < m; ++i) aj[i] *= inverse;
+      }
       aj[j] += T(1);
       // Apply it to the remaining columns and update their norms.
       for (int k = j + 1; k < n; ++k) {

@@ -43,10 +43,15 @@ class vnl_levenberg_marquardt_of : public vnl_nonlinear_minimizer_of<T> {
   static int lmdif_callback(void* self, int m, int n, const T* x, T* fx, int iflag);
   bool input_is_valid(const vnl_vector<T>& x);
   bool outcome_is_success() const;
+  /// Sizes the buffers the callbacks hand to f and gradf (no allocation per evaluation).
+  void prepare_buffers(int m, int n);
 
   vnl_least_squares_function_of<T>* f_;
   vnl_matrix<T> fdjac_;  ///< MINPACK's column-major m x n work matrix, stored as n x m
   vnl_vector<int> ipvt_;
+  vnl_vector<T> x_buffer_;
+  vnl_vector<T> fx_buffer_;
+  vnl_matrix<T> jacobian_buffer_;
   int num_jacobian_evaluations_ = 0;
   bool start_error_set_ = false;
 };

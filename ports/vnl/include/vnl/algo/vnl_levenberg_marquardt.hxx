@@ -40,21 +40,31 @@ bool vnl_levenberg_marquardt_of<T>::outcome_is_success() const {
 }
 
 template <class T>
+void vnl_levenberg_marquardt_of<T>::prepare_buffers(int m, int n) {
+  fdjac_.set_size(n, m);
+  ipvt_.set_size(n);
+  x_buffer_.set_size(n);
+  fx_buffer_.set_size(m);
+  jacobian_buffer_.set_size(m, n);
+}
+
+template <class T>
 int vnl_levenberg_marquardt_of<T>::lmder_callback(void* self_pointer, int m, int n, const T* x, T* fx, T* fjac,
                                                   int ldfjac, int iflag) {
   auto* self = static_cast<vnl_levenberg_marquardt_of*>(self_pointer);
   vnl_least_squares_function_of<T>* f = self->f_;
-  const vnl_vector<T> xv(x, static_cast<std::size_t>(n));
+  vnl_vector<T>& xv = self->x_buffer_;
+  vnl_vector<T>& fxv = self->fx_buffer_;
+  xv.copy_in(x);
   if (iflag == 0) {
-    if (self->trace) f->trace(self->num_iterations_, xv, vnl_vector<T>(fx, static_cast<std::size_t>(m)));
+    if (self->trace) f->trace(self->num_iterations_, xv, fxv.copy_in(fx));
   } else if (iflag == 1) {
-    vnl_vector<T> fxv(static_cast<std::size_t>(m));
     f->f(xv, fxv);
     fxv.copy_out(fx);
     if (self->num_iterations_ == 0) self->start_error_ = fxv.rms();
     ++self->num_iterations_;
   } else {
-    vnl_matrix<T> jacobian(static_cast<std::size_t>(m), static_cast<std::size_t>(n));
+    vnl_matrix<T>& jacobian = self->jacobian_buffer_;
     f->gradf(xv, jacobian);
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < m; ++i) fjac[i + j * ldfjac] = jacobian(i, j);
@@ -68,15 +78,16 @@ int vnl_levenberg_marquardt_of<T>::lmder_callback(void* self_pointer, int m, int
 }
 
 template <class T>
-int vnl_levenberg_marquardt_of<T>::lmdif_callback(void* self_pointer, int m, int n, const T* x, T* fx, int iflag) {
+int vnl_levenberg_marquardt_of<T>::lmdif_callback(void* self_pointer, int, int, const T* x, T* fx, int iflag) {
   auto* self = static_cast<vnl_levenberg_marquardt_of*>(self_pointer);
   vnl_least_squares_function_of<T>* f = self->f_;
-  const vnl_vector<T> xv(x, static_cast<std::size_t>(n));
+  vnl_vector<T>& xv = self->x_buffer_;
+  vnl_vector<T>& fxv = self->fx_buffer_;
+  xv.copy_in(x);
   if (iflag == 0) {
-    if (self->trace) f->trace(self->num_iterations_, xv, vnl_vector<T>(fx, static_cast<std::size_t>(m)));
+    if (self->trace) f->trace(self->num_iterations_, xv, fxv.copy_in(fx));
     ++self->num_iterations_;
   } else {
-    vnl_vector<T> fxv(static_cast<std::size_t>(m));
     f->f(xv, fxv);
     fxv.copy_out(fx);
     if (!self->start_error_set_) {
@@ -102,8 +113,7 @@ bool vnl_levenberg_marquardt_of<T>::minimize_using_gradient(vnl_vector<T>& x) {
   const int m = static_cast<int>(f_->get_number_of_residuals());
   const int n = static_cast<int>(f_->get_number_of_unknowns());
   vnl_vector<T> fx(m), diag(n), qtf(n), wa1(n), wa2(n), wa3(n), wa4(m);
-  fdjac_.set_size(n, m);
-  ipvt_.set_size(n);
+  prepare_buffers(m, n);
   this->num_iterations_ = 0;
   this->start_error_ = T(0);
   int nfev = 0;
@@ -123,8 +133,7 @@ bool vnl_levenberg_marquardt_of<T>::minimize_without_gradient(vnl_vector<T>& x) 
   const int m = static_cast<int>(f_->get_number_of_residuals());
   const int n = static_cast<int>(f_->get_number_of_unknowns());
   vnl_vector<T> fx(m), diag(n), qtf(n), wa1(n), wa2(n), wa3(n), wa4(m);
-  fdjac_.set_size(n, m);
-  ipvt_.set_size(n);
+  prepare_buffers(m, n);
   this->num_iterations_ = 0;
   num_jacobian_evaluations_ = 0;
   start_error_set_ = false;
