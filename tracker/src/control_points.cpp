@@ -18,7 +18,6 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
   std::vector<ControlPoint> points;
   const real lo_x = real(params.border), hi_x = real(camera.width - 1 - params.border);
   const real lo_y = real(params.border), hi_y = real(camera.height - 1 - params.border);
-  const real half = real(0.5);
   for (size_t e = 0; e < model.edges.size(); ++e) {
     Vec3 a = model.vertices[model.edges[e].a], b = model.vertices[model.edges[e].b];
     Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
@@ -41,8 +40,9 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
     const Vec2 direction{d.x / length, d.y / length};
     const Vec2 normal{-direction.y, direction.x};
     const real wa = real(1) / ca.z, wb = real(1) / cb.z;
+    const real half_part = real(1) / (2 * n);
     for (int k = 0; k < n; ++k) {
-      const real t = (real(k) + half) / n;
+      const real t = (2 * k + 1) * half_part;  // the centre of part k of n
       const Vec2 pixel = pa + t * d;
       if (pixel.x < lo_x || pixel.x > hi_x || pixel.y < lo_y || pixel.y > hi_y) continue;
       // t runs evenly in the image; 1/Z is affine in t, and the 3D parameter follows from it.

@@ -33,11 +33,18 @@ class PointToLineResiduals : public vnl_least_squares_function {
                        const PinholeCamera& camera, const Se3& start)
       : vnl_least_squares_function(6, static_cast<unsigned>(matches.size()), use_gradient),
         matches_(matches),
-        weights_(weights),
-        camera_(camera),
         start_(start) {
     rotated_.reserve(matches.size());
-    for (const EdgeMatch& m : matches) rotated_.push_back(start.rotation() * m.point.point_in_model);
+    coefficients_.reserve(matches.size());
+    for (size_t i = 0; i < matches.size(); ++i) {
+      const EdgeMatch& m = matches[i];
+      rotated_.push_back(start.rotation() * m.point.point_in_model);
+      // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
+      const real weight = weights.empty() ? real(1) : weights[i];
+      const Vec2& n = m.point.normal;
+      coefficients_.push_back({weight * n.x * camera.px, weight * n.y * camera.py,
+                               weight * (n.x * (camera.u0 - m.found.x) + n.y * (camera.v0 - m.found.y))});
+    }
   }
 
   void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {
@@ -50,11 +57,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
         throw_failure();
         return;
       }
-      const real inv_z = real(1) / p.z;  // one division per point, as in gradf
-      const Vec2 d{camera_.u0 + camera_.px * p.x * inv_z - matches_[i].found.x,
-                   camera_.v0 + camera_.py * p.y * inv_z - matches_[i].found.y};
-      fx[static_cast<unsigned>(i)] = weights_.empty() ? dot(matches_[i].point.normal, d)
-                                                      : weights_[i] * dot(matches_[i].point.normal, d);
+      fx[static_cast<unsigned>(i)] = dot(coefficients_[i], p) / p.z;
     }
   }
 
@@ -67,11 +70,10 @@ class PointToLineResiduals : public vnl_least_squares_function {
       const Vec3 z = r * rotated_[i];
       const Vec3 p = z + t;
       const real inv_z = real(1) / p.z;
-      const Vec2& n = matches_[i].point.normal;
-      const real weight = weights_.empty() ? real(1) : weights_[i];
-      // d delta / d p = n^T d project / d p.
-      const real gx = weight * n.x * camera_.px * inv_z;
-      const real gy = weight * n.y * camera_.py * inv_z;
+      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
+      const Vec3& k = coefficients_[i];
+      const real gx = k.x * inv_z;
+      const real gy = k.y * inv_z;
       const real gz = -(gx * p.x + gy * p.y) * inv_z;
       const unsigned row = static_cast<unsigned>(i);
       jacobian(row, 0) = gx;
@@ -91,10 +93,9 @@ class PointToLineResiduals : public vnl_least_squares_function {
 
  private:
   const std::vector<EdgeMatch>& matches_;
-  const std::vector<real>& weights_;
-  PinholeCamera camera_;
   Se3 start_;
-  std::vector<Vec3> rotated_;  ///< R0 * point_in_model, fixed during the minimisation
+  std::vector<Vec3> rotated_;       ///< R0 * point_in_model, fixed during the minimisation
+  std::vector<Vec3> coefficients_;  ///< (a, b, c) of each residual, see the constructor
 };
 
 /// One Levenberg-Marquardt solve over `matches` from `start`; adds its counts to `solution`.

@@ -106,19 +106,19 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
 
 bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,
                    const real& margin) {
-  // Everything is divided by the point's depth, so the ray ends at Z = 1 and the numbers stay
-  // near 1 for every `real`.
-  const Vec3 p_raw = camera_from_model * point_in_model;
-  const real scale = real(1) / p_raw.z;
-  const Vec3 p = scale * p_raw;
+  // The ray is cast in the model frame from the camera centre c, and everything is divided by
+  // the point's depth, so the numbers stay near 1 for every `real`.
+  const Vec3 c = camera_from_model.inverse().translation();
+  const real scale = real(1) / (camera_from_model * point_in_model).z;
+  const Vec3 p = scale * (point_in_model - c);
   const real limit = real(1) - margin;
   const real tiny = real(1e-6);
   for (const Triangle& t : model.triangles) {
-    const Vec3 a = scale * (camera_from_model * model.vertices[t.a]);
-    const Vec3 b = scale * (camera_from_model * model.vertices[t.b]);
-    const Vec3 c = scale * (camera_from_model * model.vertices[t.c]);
+    const Vec3 a = scale * (model.vertices[t.a] - c);
+    const Vec3 b = scale * (model.vertices[t.b] - c);
+    const Vec3 c2 = scale * (model.vertices[t.c] - c);
     // Moller-Trumbore for the ray O + s p, s in (0, limit).
-    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 e1 = b - a, e2 = c2 - a;
     const Vec3 h = cross(p, e2);
     const real det = dot(e1, h);
     if (det > -tiny && det < tiny) continue;  // ray parallel to the triangle

@@ -37,6 +37,28 @@ bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const 
 
 namespace raster_detail {
 
+/// Narrows [lo, hi] to the pixels x where e + (x - x0) * step >= 0 (an edge function, linear
+/// in x along a row), so the inner loop visits covered pixels only: exactly the pixels of the
+/// per-pixel test e_ab >= 0, e_bc >= 0, e_ca >= 0, found with one division per edge and row.
+template <class Int>
+void clip_span(Int e, Int step, int x0, int& lo, int& hi) {
+  if (step > 0) {
+    if (e < 0) {
+      const Int first = x0 + (-e + step - 1) / step;
+      if (first > lo) lo = first > Int(hi) + 1 ? hi + 1 : static_cast<int>(first);
+    }
+  } else if (step < 0) {
+    if (e < 0) {
+      hi = lo - 1;
+    } else {
+      const Int last = x0 + e / -step;
+      if (last < hi) hi = last < Int(lo) - 1 ? lo - 1 : static_cast<int>(last);
+    }
+  } else if (e < 0) {
+    hi = lo - 1;
+  }
+}
+
 /// The scan of fill_triangle, with edge functions in `Int`: int32_t when the triangle's bounding
 /// box is small enough for every product to fit, int64_t otherwise.
 template <class Int, class Plot>
@@ -50,13 +72,13 @@ void scan_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
   const int64_t acc_step = gx * step;
   for (int y = y0; y <= y1; ++y) {
     const Int py = Int(y) << kSubpixelBits, px = Int(x0) << kSubpixelBits;
-    Int e_ab = edge_at(a, b, px, py), e_bc = edge_at(b, c, px, py), e_ca = edge_at(c, a, px, py);
-    int64_t acc = gx * (int64_t(px) - a.x) + gy * (int64_t(py) - a.y);
-    for (int x = x0; x <= x1; ++x) {
-      if ((e_ab | e_bc | e_ca) >= 0) plot(x, y, static_cast<int32_t>(a.w + (acc >> 8)));
-      e_ab += sx_ab;
-      e_bc += sx_bc;
-      e_ca += sx_ca;
+    int lo = x0, hi = x1;
+    clip_span<Int>(edge_at(a, b, px, py), sx_ab, x0, lo, hi);
+    clip_span<Int>(edge_at(b, c, px, py), sx_bc, x0, lo, hi);
+    clip_span<Int>(edge_at(c, a, px, py), sx_ca, x0, lo, hi);
+    int64_t acc = gx * ((int64_t(lo) << kSubpixelBits) - a.x) + gy * (int64_t(py) - a.y);
+    for (int x = lo; x <= hi; ++x) {
+      plot(x, y, static_cast<int32_t>(a.w + (acc >> 8)));
       acc += acc_step;
     }
   }
