@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// `edgetrack eval`: accuracy of a poses file against a ground-truth file, and the plots.
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "args.h"
+#include "commands.h"
+#include "evaluation.h"
+#include "plots.h"
+
+namespace edgetrack_app {
+
+int eval_main(int argc, char** argv) {
+  const std::vector<OptionSpec> specs = {
+      {"--poses", true, "tracked poses CSV (edgetrack track --poses)"},
+      {"--truth", true, "ground truth CSV (edgetrack synth writes truth.csv)"},
+      {"--plots", true, "directory for fig4_time_per_frame.png and fig5_camera_position.png"},
+      {"--help", false, "this text"},
+  };
+  auto args = Args::parse(argc, argv, 1, specs);
+  if (!args.ok()) return report("eval", args.error()) + 1;
+  if (args.value().has("--help")) {
+    std::printf("%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR]", specs).c_str());
+    return 0;
+  }
+  const Args& a = args.value();
+  if (!a.has("--poses") || !a.has("--truth")) {
+    std::fprintf(stderr, "%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR]", specs).c_str());
+    return 2;
+  }
+  auto poses = read_pose_table(a.text("--poses"), kPosesHeader);
+  if (!poses.ok()) return report("eval", poses.error());
+  auto truth = read_pose_table(a.text("--truth"), kTruthHeader);
+  if (!truth.ok()) return report("eval", truth.error());
+  auto evaluation = evaluate(poses.value(), truth.value(), a.text("--truth"));
+  if (!evaluation.ok()) return report("eval", evaluation.error());
+  const Evaluation& e = evaluation.value();
+  std::printf("frames %zu, lost %d\n", e.frames.size(), e.lost);
+  std::printf("mean absolute camera position error: x %.2f mm, y %.2f mm, z %.2f mm\n", e.mean_abs_mm[0],
+              e.mean_abs_mm[1], e.mean_abs_mm[2]);
+  std::printf("mean distance to ground truth: %.2f mm (largest %.2f mm)\n", e.mean_distance_mm, e.max_distance_mm);
+  std::printf("mean rotation error: %.3f deg\n", e.mean_rotation_deg);
+  std::printf("mean tracking time: %.2f ms per frame\n", e.mean_ms);
+  // One line of key=value for scripts and tests.
+  std::printf("eval: frames=%zu lost=%d x_mm=%.4f y_mm=%.4f z_mm=%.4f distance_mm=%.4f max_distance_mm=%.4f rotation_deg=%.4f\n",
+              e.frames.size(), e.lost, e.mean_abs_mm[0], e.mean_abs_mm[1], e.mean_abs_mm[2], e.mean_distance_mm,
+              e.max_distance_mm, e.mean_rotation_deg);
+  if (a.has("--plots")) {
+    const std::string dir = a.text("--plots");
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) return report("eval", {dir, 0, "cannot create the directory: " + error.message()});
+    auto written = write_plots(dir, e);
+    if (!written.ok()) return report("eval", written.error());
+    std::printf("plots: %s/fig4_time_per_frame.png %s/fig5_camera_position.png\n", dir.c_str(), dir.c_str());
+  }
+  return 0;
+}
+
+}  // namespace edgetrack_app

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The subcommands of the `edgetrack` executable.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/result.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack_app {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(int argc, char** argv);  ///< argv[0] is the subcommand's name
+};
+
+/// Commands every build has (the ARM build included).
+int eval_main(int argc, char** argv);
+/// Commands that need host libraries (OSMesa, OpenCV); empty in the ARM build.
+std::vector<Command> host_commands();
+int edgeid_main(int argc, char** argv);
+
+/// Prints "edgetrack <command>: <error>" to stderr and returns the exit status for a failure.
+int report(const std::string& command, const edgetrack::Error& error);
+
+/// The data folder of the source tree (data/), for default models.
+std::string data_dir();
+
+/// An Error naming `source` when a model vertex is not in front of the camera (Z <= 1 mm).
+edgetrack::Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
+                                       const std::string& source);
+
+/// Writes the camera as a ViSP-style XML file with its image size (read_visp_camera_xml reads it).
+edgetrack::Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera);
+
+}  // namespace edgetrack_app

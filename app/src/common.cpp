@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Helpers the subcommands share: error reporting, the data folder, pose and camera checks.
+#include <cstdio>
+
+#include "commands.h"
+
+using edgetrack::Error;
+using edgetrack::Result;
+
+namespace edgetrack_app {
+
+int report(const std::string& command, const Error& error) {
+  std::fprintf(stderr, "edgetrack %s: %s\n", command.c_str(), error.text().c_str());
+  return 1;
+}
+
+std::string data_dir() { return EDGETRACK_DATA_DIR; }
+
+Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
+                            const std::string& source) {
+  for (size_t i = 0; i < model.vertices.size(); ++i) {
+    const edgetrack::Vec3 p = camera_from_model * model.vertices[i];
+    if (p.z <= real(0.001)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "the pose puts the model behind the camera (vertex %zu at Z = %.4f m)", i,
+                    static_cast<double>(p.z));
+      return Error{source, 0, text};
+    }
+  }
+  return true;
+}
+
+Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return Error{path, 0, "cannot open the file for writing"};
+  bool ok = std::fprintf(file,
+                         "<?xml version=\"1.0\"?>\n<conf>\n  <camera>\n    <u0>%.10g</u0>\n    <v0>%.10g</v0>\n"
+                         "    <px>%.10g</px>\n    <py>%.10g</py>\n    <image_width>%d</image_width>\n"
+                         "    <image_height>%d</image_height>\n  </camera>\n</conf>\n",
+                         static_cast<double>(camera.u0), static_cast<double>(camera.v0), static_cast<double>(camera.px),
+                         static_cast<double>(camera.py), camera.width, camera.height) > 0;
+  ok = (std::fclose(file) == 0) && ok;
+  if (!ok) return Error{path, 0, "write failed"};
+  return true;
+}
+
+}  // namespace edgetrack_app

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Frame sources: numbered files, the image files of a directory in name order, video and cameras.
+#include "frame_source.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "host_io.h"
+
+using edgetrack::Error;
+using edgetrack::Result;
+
+namespace edgetrack_app {
+namespace {
+
+bool is_raw(const std::string& ext) { return ext == "rgb565" || ext == "raw"; }
+bool is_netpbm(const std::string& ext) { return ext == "pgm" || ext == "ppm" || ext == "pnm"; }
+bool is_image(const std::string& ext) {
+  static const char* const kHostImages[] = {"png", "jpg", "jpeg", "bmp", "tif", "tiff", "webp"};
+  if (is_raw(ext) || is_netpbm(ext)) return true;
+  return std::find(std::begin(kHostImages), std::end(kHostImages), ext) != std::end(kHostImages);
+}
+bool is_video(const std::string& ext) {
+  return ext == "mp4" || ext == "avi" || ext == "mkv" || ext == "mov" || ext == "mpg" || ext == "webm";
+}
+
+/// Where the one integer conversion of a printf pattern is: [begin, end) of "%...d", or begin = npos.
+bool find_conversion(const std::string& pattern, size_t& begin, size_t& end) {
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') continue;
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    size_t j = i + 1;
+    while (j < pattern.size() && (std::isdigit(static_cast<unsigned char>(pattern[j])) || pattern[j] == '0')) ++j;
+    if (j < pattern.size() && (pattern[j] == 'd' || pattern[j] == 'i' || pattern[j] == 'u')) {
+      begin = i;
+      end = j + 1;
+      return true;
+    }
+    return false;
+  }
+  return false;
+}
+
+class PatternSource : public FrameSource {
+ public:
+  PatternSource(std::string pattern, int first, int last, int raw_width, int raw_height)
+      : pattern_(std::move(pattern)), next_(first), last_(last), raw_width_(raw_width), raw_height_(raw_height) {}
+  Result<bool> next(Frame& frame) override {
+    if (last_ >= 0 && next_ > last_) return false;
+    const std::string path = expand_pattern(pattern_, next_);
+    if (!std::filesystem::exists(path)) {
+      if (last_ >= 0) return Error{path, 0, "missing frame (the sequence should run to " + std::to_string(last_) + ")"};
+      return false;
+    }
+    auto image = read_frame_file(path, raw_width_, raw_height_);
+    if (!image.ok()) return image.error();
+    frame.index = next_++;
+    frame.name = path;
+    frame.image = std::move(image).value();
+    return true;
+  }
+
+ private:
+  std::string pattern_;
+  int next_;
+  int last_;
+  int raw_width_, raw_height_;
+};
+
+class ListSource : public FrameSource {
+ public:
+  ListSource(std::vector<std::string> files, int first, int last, int raw_width, int raw_height)
+      : files_(std::move(files)), next_(first < 0 ? 0 : first), last_(last), raw_width_(raw_width), raw_height_(raw_height) {}
+  Result<bool> next(Frame& frame) override {
+    if (next_ >= static_cast<int>(files_.size()) || (last_ >= 0 && next_ > last_)) return false;
+    auto image = read_frame_file(files_[next_], raw_width_, raw_height_);
+    if (!image.ok()) return image.error();
+    frame.index = next_;
+    frame.name = files_[next_++];
+    frame.image = std::move(image).value();
+    return true;
+  }
+
+ private:
+  std::vector<std::string> files_;
+  int next_;
+  int last_;
+  int raw_width_, raw_height_;
+};
+
+class VideoSource : public FrameSource {
+ public:
+  VideoSource(std::unique_ptr<VideoInput> input, std::string name, int first, int last)
+      : input_(std::move(input)), name_(std::move(name)), first_(first < 0 ? 0 : first), last_(last) {}
+  Result<bool> next(Frame& frame) override {
+    for (;;) {
+      if (last_ >= 0 && position_ > last_) return false;
+      if (!input_->read(frame.image)) return false;
+      frame.index = position_++;
+      if (frame.index >= first_) break;
+    }
+    frame.name = name_ + ":" + std::to_string(frame.index);
+    return true;
+  }
+
+ private:
+  std::unique_ptr<VideoInput> input_;
+  std::string name_;
+  int first_, last_;
+  int position_ = 0;
+};
+
+/// A source whose first frame was read ahead.
+class PeekedSource : public FrameSource {
+ public:
+  PeekedSource(std::unique_ptr<FrameSource> source, Frame first) : source_(std::move(source)), first_(std::move(first)) {}
+  Result<bool> next(Frame& frame) override {
+    if (has_first_) {
+      frame = std::move(first_);
+      has_first_ = false;
+      return true;
+    }
+    return source_->next(frame);
+  }
+
+ private:
+  std::unique_ptr<FrameSource> source_;
+  Frame first_;
+  bool has_first_ = true;
+};
+
+/// Wraps a source so that an empty sequence is an error, reading the first frame ahead.
+Result<std::unique_ptr<FrameSource>> non_empty(std::unique_ptr<FrameSource> source, const std::string& what) {
+  Frame first;
+  auto got = source->next(first);
+  if (!got.ok()) return got.error();
+  if (!got.value()) return Error{what, 0, "empty sequence: no frame found"};
+  return std::unique_ptr<FrameSource>(new PeekedSource(std::move(source), std::move(first)));
+}
+
+}  // namespace
+
+std::string expand_pattern(const std::string& pattern, int index) {
+  size_t begin = 0, end = 0;
+  if (!find_conversion(pattern, begin, end)) return pattern;
+  const std::string spec = pattern.substr(begin, end - begin - 1) + "d";
+  char number[64];
+  std::snprintf(number, sizeof number, spec.c_str(), index);
+  return pattern.substr(0, begin) + number + pattern.substr(end);
+}
+
+Result<RgbImage> read_frame_file(const std::string& path, int raw_width, int raw_height) {
+  const std::string ext = extension_of(path);
+  if (!std::filesystem::exists(path)) return Error{path, 0, "no such file"};
+  if (is_raw(ext)) return read_raw_rgb565(path, raw_width, raw_height);
+  if (is_netpbm(ext)) return read_netpbm(path);
+  return read_image_any(path);
+}
+
+Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOptions& options) {
+  if (options.camera_device >= 0) {
+    auto camera = open_camera_device(options.camera_device);
+    if (!camera.ok()) return camera.error();
+    return non_empty(std::unique_ptr<FrameSource>(new VideoSource(std::move(camera).value(),
+                                                                  "camera " + std::to_string(options.camera_device),
+                                                                  options.first, options.last)),
+                     "camera " + std::to_string(options.camera_device));
+  }
+  const std::string& images = options.images;
+  if (images.empty()) return Error{"", 0, "no frames given (--images PATTERN|DIR|VIDEO or --camera-device N)"};
+  size_t begin = 0, end = 0;
+  if (find_conversion(images, begin, end)) {
+    int first = options.first;
+    if (first < 0) first = std::filesystem::exists(expand_pattern(images, 0)) ? 0 : 1;
+    return non_empty(std::unique_ptr<FrameSource>(
+                         new PatternSource(images, first, options.last, options.raw_width, options.raw_height)),
+                     images);
+  }
+  std::error_code error;
+  if (std::filesystem::is_directory(images, error)) {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(images, error))
+      if (entry.is_regular_file() && is_image(extension_of(entry.path().string()))) files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return non_empty(std::unique_ptr<FrameSource>(
+                         new ListSource(std::move(files), options.first, options.last, options.raw_width, options.raw_height)),
+                     images);
+  }
+  if (!std::filesystem::exists(images)) return Error{images, 0, "no such file or directory"};
+  if (is_video(extension_of(images))) {
+    auto video = open_video_file(images);
+    if (!video.ok()) return video.error();
+    return non_empty(std::unique_ptr<FrameSource>(new VideoSource(std::move(video).value(), images, options.first, options.last)),
+                     images);
+  }
+  // A single image file is a sequence of one frame.
+  return non_empty(std::unique_ptr<FrameSource>(
+                       new ListSource({images}, 0, -1, options.raw_width, options.raw_height)),
+                   images);
+}
+
+}  // namespace edgetrack_app

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Reading and writing the poses and ground-truth CSV files.
+#include "pose_table.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+using edgetrack::Error;
+using edgetrack::Result;
+using edgetrack::Se3;
+using edgetrack::Vec3;
+
+namespace edgetrack_app {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::stringstream in(line);
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.push_back("");
+  return cells;
+}
+
+bool parse_double(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
+}  // namespace
+
+Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header) {
+  std::ifstream in(path);
+  if (!in) return Error{path, 0, "cannot open the file"};
+  std::string line;
+  if (!std::getline(in, line)) return Error{path, 1, "empty file (expected the header '" + header + "')"};
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (line != header) return Error{path, 1, "header is '" + line + "', expected '" + header + "'"};
+  const size_t columns = split(header).size();
+  const bool tracking = columns == 10;
+  std::vector<PoseRow> rows;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != columns)
+      return Error{path, number, std::to_string(cells.size()) + " columns, expected " + std::to_string(columns)};
+    PoseRow row;
+    double values[8];
+    const size_t numeric = tracking ? 9 : 7;
+    for (size_t i = 0; i < numeric; ++i)
+      if (!parse_double(cells[i], values[i == 8 ? 7 : i]))
+        return Error{path, number, "column " + std::to_string(i + 1) + " is not a number: '" + cells[i] + "'"};
+    row.frame = static_cast<int>(values[0]);
+    for (int i = 0; i < 3; ++i) {
+      row.t[i] = values[1 + i];
+      row.tu[i] = values[4 + i];
+    }
+    if (tracking) {
+      row.points = std::atoi(cells[7].c_str());
+      row.ms = values[7];
+      if (cells[9] != "ok" && cells[9] != "lost")
+        return Error{path, number, "status is '" + cells[9] + "', expected ok or lost"};
+      row.lost = cells[9] == "lost";
+    }
+    rows.push_back(row);
+  }
+  if (rows.empty()) return Error{path, 0, "no rows after the header"};
+  return rows;
+}
+
+Result<PoseTableWriter> PoseTableWriter::open(const std::string& path, bool with_tracking) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return Error{path, 0, "cannot open the file for writing"};
+  PoseTableWriter writer(file, path, with_tracking);
+  if (std::fprintf(file, "%s\n", with_tracking ? kPosesHeader : kTruthHeader) < 0) writer.failed_ = true;
+  return writer;
+}
+
+PoseTableWriter::PoseTableWriter(PoseTableWriter&& other) noexcept
+    : file_(other.file_), path_(std::move(other.path_)), with_tracking_(other.with_tracking_), failed_(other.failed_) {
+  other.file_ = nullptr;
+}
+
+PoseTableWriter::~PoseTableWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void PoseTableWriter::write(const PoseRow& row) {
+  if (!file_) return;
+  int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
+                       row.tu[1], row.tu[2]);
+  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms, row.lost ? "lost" : "ok");
+  if (n >= 0) n = std::fprintf(file_, "\n");
+  if (n < 0) failed_ = true;
+}
+
+Result<bool> PoseTableWriter::close() {
+  if (!file_) return Error{path_, 0, "already closed"};
+  const bool ok = std::fclose(file_) == 0 && !failed_;
+  file_ = nullptr;
+  if (!ok) return Error{path_, 0, "write failed"};
+  return true;
+}
+
+PoseRow pose_row(int frame, const Se3& camera_from_model) {
+  PoseRow row;
+  row.frame = frame;
+  const Vec3 t = camera_from_model.translation(), tu = camera_from_model.theta_u();
+  row.t[0] = static_cast<double>(t.x);
+  row.t[1] = static_cast<double>(t.y);
+  row.t[2] = static_cast<double>(t.z);
+  row.tu[0] = static_cast<double>(tu.x);
+  row.tu[1] = static_cast<double>(tu.y);
+  row.tu[2] = static_cast<double>(tu.z);
+  return row;
+}
+
+Se3 pose_of(const PoseRow& row) {
+  return Se3::from_theta_u({real(row.t[0]), real(row.t[1]), real(row.t[2])},
+                           {real(row.tu[0]), real(row.tu[1]), real(row.tu[2])});
+}
+
+}  // namespace edgetrack_app

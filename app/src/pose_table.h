@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The CSV files of the application: the tracked poses (`frame,tx,ty,tz,tux,tuy,tuz,points,ms,status`)
+/// and the ground truth of a synthetic sequence (`frame,tx,ty,tz,tux,tuy,tuz`). Poses are
+/// camera_from_model (ViSP's cMo): translation in metres, thetaU in radians.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "edgetrack/result.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack_app {
+
+constexpr const char* kPosesHeader = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status";
+constexpr const char* kTruthHeader = "frame,tx,ty,tz,tux,tuy,tuz";
+
+struct PoseRow {
+  int frame = 0;
+  double t[3] = {0, 0, 0};   ///< metres
+  double tu[3] = {0, 0, 0};  ///< radians
+  int points = 0;            ///< poses file only
+  double ms = 0;
+  bool lost = false;
+};
+
+/// Reads a poses or truth file; `header` is the header it must start with (extra columns after
+/// it are not allowed). Errors name the file and the line.
+edgetrack::Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header);
+
+/// Writes rows as they come; poses files carry the tracking columns, truth files do not.
+class PoseTableWriter {
+ public:
+  static edgetrack::Result<PoseTableWriter> open(const std::string& path, bool with_tracking);
+  PoseTableWriter(PoseTableWriter&& other) noexcept;
+  PoseTableWriter& operator=(PoseTableWriter&&) = delete;
+  ~PoseTableWriter();
+  void write(const PoseRow& row);
+  /// Flushes and closes; an Error when anything failed to reach the file.
+  edgetrack::Result<bool> close();
+
+ private:
+  PoseTableWriter(std::FILE* file, std::string path, bool with_tracking)
+      : file_(file), path_(std::move(path)), with_tracking_(with_tracking) {}
+  std::FILE* file_;
+  std::string path_;
+  bool with_tracking_;
+  bool failed_ = false;
+};
+
+PoseRow pose_row(int frame, const edgetrack::Se3& camera_from_model);
+edgetrack::Se3 pose_of(const PoseRow& row);
+
+}  // namespace edgetrack_app

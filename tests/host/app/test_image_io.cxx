@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Our PGM/PPM and raw RGB565 readers read what the writers wrote, scale other maxvals to 8 bits,
+// and refuse broken files with a message naming the file.
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "image_io.h"
+#include "testlib/testlib_test.h"
+
+using namespace edgetrack_app;
+
+static std::string temp_path(const char* name) { return std::string(APP_TEST_TMP) + "/" + name; }
+
+static void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+static void test_image_io() {
+  RgbImage image = make_image(5, 3);
+  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<uint8_t>(i * 17);
+  const std::string ppm = temp_path("roundtrip.ppm");
+  TEST("a PPM is written", write_ppm(ppm, image).ok(), true);
+  auto back = read_netpbm(ppm);
+  TEST("the written PPM reads back", back.ok(), true);
+  TEST("the PPM round trip keeps every byte", back.ok() && back.value().rgb == image.rgb, true);
+
+  write_text(temp_path("ascii.pgm"), "P2\n# a comment\n2 2\n15\n0 15\n5 10\n");
+  auto grey = read_netpbm(temp_path("ascii.pgm"));
+  TEST("an ASCII PGM with a comment reads", grey.ok(), true);
+  if (grey.ok()) {
+    TEST_EQUAL("maxval 15 scales 15 to 255", int(grey.value().pixel(1, 0)[0]), 255);
+    TEST_EQUAL("maxval 15 scales 5 to 85", int(grey.value().pixel(0, 1)[1]), 85);
+    TEST_EQUAL("grey goes to all three channels", int(grey.value().pixel(1, 1)[2]), 170);
+  }
+
+  write_text(temp_path("short.pgm"), std::string("P5\n4 4\n255\n") + std::string(10, 'x'));
+  auto truncated = read_netpbm(temp_path("short.pgm"));
+  TEST("a truncated PGM is refused", truncated.ok(), false);
+  TEST("the message names the file", truncated.error().text().find("short.pgm") != std::string::npos, true);
+  write_text(temp_path("text.pgm"), "hello");
+  TEST("a file without a netpbm signature is refused", read_netpbm(temp_path("text.pgm")).ok(), false);
+
+  std::vector<uint16_t> packed;
+  to_rgb565(image, packed);
+  TEST("raw RGB565 is written", write_raw_rgb565(temp_path("frame.rgb565"), packed).ok(), true);
+  auto raw = read_raw_rgb565(temp_path("frame.rgb565"), 5, 3);
+  TEST("raw RGB565 reads back", raw.ok(), true);
+  TEST("raw RGB565 equals the bit-replicated packing", raw.ok() && raw.value().rgb == from_rgb565(packed, 5, 3).rgb, true);
+  auto wrong = read_raw_rgb565(temp_path("frame.rgb565"), 6, 3);
+  TEST("raw RGB565 of the wrong size is refused", wrong.ok(), false);
+  TEST("the size message gives the byte counts", wrong.error().message.find("30 bytes, 36 expected") != std::string::npos,
+       true);
+  const RgbImage white = from_rgb565({0xffff}, 1, 1);
+  TEST_EQUAL("RGB565 white expands to 255", int(white.rgb[0]) + int(white.rgb[1]) + int(white.rgb[2]), 765);
+
+  RgbImage big = make_image(4, 2);
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 2; ++y) big.pixel(x, y)[0] = static_cast<uint8_t>(x < 2 ? 10 * (x + y) : 100);
+  const RgbImage half = downscale(big, 2);
+  TEST_EQUAL("downscale halves the width", half.width, 2);
+  TEST_EQUAL("downscale averages a block (0, 10, 10, 20 -> 10)", int(half.pixel(0, 0)[0]), 10);
+  TEST_EQUAL("downscale keeps a flat block", int(half.pixel(1, 0)[0]), 100);
+}
+
+TESTMAIN(test_image_io)

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Poses and truth CSV files round-trip, bad files are refused with file and line, and the
+// evaluation reports the camera-position error in the object frame as the paper does.
+#include <cmath>
+#include <fstream>
+
+#include "evaluation.h"
+#include "pose_table.h"
+#include "testlib/testlib_test.h"
+
+using namespace edgetrack_app;
+using edgetrack::Se3;
+
+static void test_pose_table() {
+  const std::string path = std::string(APP_TEST_TMP) + "/poses.csv";
+  {
+    auto writer = PoseTableWriter::open(path, true);
+    TEST("a poses file opens for writing", writer.ok(), true);
+    PoseRow row = pose_row(3, Se3::from_theta_u({real(0.01), real(-0.02), real(0.15)}, {real(0.5), real(-0.6), real(0.1)}));
+    row.points = 61;
+    row.ms = 2.5;
+    writer.value().write(row);
+    row.frame = 4;
+    row.lost = true;
+    writer.value().write(row);
+    TEST("the poses file closes", writer.value().close().ok(), true);
+  }
+  std::ifstream in(path);
+  std::string header;
+  std::getline(in, header);
+  TEST("the header is exactly the documented one", header, std::string("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status"));
+  auto rows = read_pose_table(path, kPosesHeader);
+  TEST("the poses file reads back", rows.ok(), true);
+  if (rows.ok()) {
+    TEST_EQUAL("two rows", rows.value().size(), size_t(2));
+    TEST_EQUAL("frame number", rows.value()[0].frame, 3);
+    TEST_NEAR("tz in metres (to the resolution of real)", rows.value()[0].t[2], 0.15, 1e-6);
+    TEST_NEAR("thetaU x in radians", rows.value()[0].tu[0], 0.5, 1e-6);
+    TEST_EQUAL("points", rows.value()[0].points, 61);
+    TEST("status ok", rows.value()[0].lost, false);
+    TEST("status lost", rows.value()[1].lost, true);
+  }
+  auto as_truth = read_pose_table(path, kTruthHeader);
+  TEST("a poses file is not a truth file", as_truth.ok(), false);
+  TEST("the header error is at line 1", as_truth.error().line, 1);
+
+  {
+    std::ofstream bad(std::string(APP_TEST_TMP) + "/bad.csv");
+    bad << kTruthHeader << "\n0,0,0,0.15,0,0,0\n1,0,0,zero,0,0,0\n";
+  }
+  auto bad = read_pose_table(std::string(APP_TEST_TMP) + "/bad.csv", kTruthHeader);
+  TEST("a non-number is refused", bad.ok(), false);
+  TEST_EQUAL("at its line", bad.error().line, 3);
+
+  // Truth: the camera 150 mm in front of the model; tracked: the model shifted by (1, -2, 2) mm
+  // in the camera frame, so the camera position in the object frame is off by (-1, 2, -2) mm.
+  const Se3 truth_pose = Se3::from_theta_u({real(0), real(0), real(0.15)}, {real(0), real(0), real(0)});
+  const Se3 tracked_pose = Se3::from_theta_u({real(0.001), real(-0.002), real(0.152)}, {real(0), real(0), real(0)});
+  std::vector<PoseRow> truth = {pose_row(0, truth_pose), pose_row(1, truth_pose)};
+  std::vector<PoseRow> tracked = {pose_row(0, truth_pose), pose_row(1, tracked_pose)};
+  tracked[1].lost = true;
+  auto e = evaluate(tracked, truth, "truth.csv");
+  TEST("evaluation succeeds", e.ok(), true);
+  if (e.ok()) {
+    TEST_NEAR("mean |x| error over two frames", e.value().mean_abs_mm[0], 0.5, 1e-4);
+    TEST_NEAR("mean |y| error", e.value().mean_abs_mm[1], 1.0, 1e-4);
+    TEST_NEAR("mean |z| error", e.value().mean_abs_mm[2], 1.0, 1e-4);
+    TEST_NEAR("mean distance", e.value().mean_distance_mm, 1.5, 1e-4);
+    TEST_NEAR("camera x in the object frame", e.value().frames[1].position[0], -1.0, 1e-4);
+    TEST_EQUAL("lost frames are counted", e.value().lost, 1);
+  }
+  std::vector<PoseRow> extra = {pose_row(7, truth_pose)};
+  auto missing = evaluate(extra, truth, "truth.csv");
+  TEST("a frame without truth is an error", missing.ok(), false);
+  TEST("naming the truth file and the frame", missing.error().text(), std::string("truth.csv: no ground truth for frame 7"));
+}
+
+TESTMAIN(test_pose_table)
