@@ -61,7 +61,8 @@ static void test_pose_solver() {
             0, tol_mm);
   TEST_NEAR("exact matches: the rotation comes back (degrees)", rotation_error_deg(exact.camera_from_model, truth), 0,
             tol_mm / 10);
-  TEST("exact matches: the final RMS distance is below 0.01 px", exact.end_rms < real(0.01), true);
+  const double rms_tol = name == "s47_16" ? 0.05 : 0.01;  // S47.16 resolves 1.5e-5 m: about 0.03 px here
+  TEST_NEAR("exact matches: the final RMS distance is near 0 px", exact.end_rms, 0, rms_tol);
   TEST("the start was off by more than 1 px RMS", exact.start_rms > real(1), true);
   TEST("the analytic Jacobian converges within 12 LM iterations over both solves", exact.iterations <= 12, true);
   TEST_EQUAL("exact matches: no outlier is flagged", exact.outliers, 0);
