@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Micro-benchmark: guest instructions per +, *, /, sqrt and sin for double and float (soft-float
-/// on the PXA270) and for S47.16 and S40.23 fixed point. Each operation on each seeded operand
+/// Micro-benchmark: guest instructions per +, *, /, sqrt, sin, cos, atan2, asin, exp and log for
+/// double and float (soft-float on the PXA270) and for S47.16 and S40.23 fixed point. Each operation on each seeded operand
 /// pair runs inside its own count window; a copy "operation" per type measures what the window
 /// holds besides the operation. Run it under toolchains/qemu/count-insns.sh --windows: stdout names
 /// the windows in order ("windows <type> <op> <count>": the next <count> windows), results.sh pairs
@@ -9,8 +9,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 #include "count_markers.h"
@@ -55,22 +53,6 @@ OperandSet make_operands(std::uint64_t seed, int count, double a_lo, double a_hi
   return set;
 }
 
-namespace math {
-using std::sin;
-using std::sqrt;
-template <class T>
-T call_sqrt(T x) {
-  return sqrt(x);  // std:: for double and float, fixedpoint:: by argument-dependent lookup
-}
-template <class T>
-T call_sin(T x) {
-  return sin(x);
-}
-template <class T, class = void>
-struct HasSin : std::false_type {};
-template <class T>
-struct HasSin<T, std::void_t<decltype(sin(std::declval<T>()))>> : std::true_type {};
-}  // namespace math
 
 /// Makes the compiler treat `value` as read and rewritten here, so the computation that uses it
 /// cannot start before this point, and the one that produces it cannot finish after it.
@@ -115,6 +97,11 @@ struct AllOperands {
   OperandSet div;
   OperandSet sqrt;
   OperandSet sin;
+  OperandSet cos;
+  OperandSet atan2;
+  OperandSet asin;
+  OperandSet exp;
+  OperandSet log;
 };
 
 template <class T>
@@ -124,10 +111,34 @@ double count_type(const char* type, const AllOperands& operands) {
   checksum += count_op<T>(type, "add", operands.add, [](T x, T y) { return x + y; });
   checksum += count_op<T>(type, "mul", operands.mul, [](T x, T y) { return x * y; });
   checksum += count_op<T>(type, "div", operands.div, [](T x, T y) { return x / y; });
-  checksum += count_op<T>(type, "sqrt", operands.sqrt, [](T x, T) { return math::call_sqrt(x); });
-  if constexpr (math::HasSin<T>::value) {
-    checksum += count_op<T>(type, "sin", operands.sin, [](T x, T) { return math::call_sin(x); });
-  }
+  checksum += count_op<T>(type, "sqrt", operands.sqrt, [](T x, T) {
+    using std::sqrt;  // std:: for double and float, fixedpoint:: by argument-dependent lookup
+    return sqrt(x);
+  });
+  checksum += count_op<T>(type, "sin", operands.sin, [](T x, T) {
+    using std::sin;
+    return sin(x);
+  });
+  checksum += count_op<T>(type, "cos", operands.cos, [](T x, T) {
+    using std::cos;
+    return cos(x);
+  });
+  checksum += count_op<T>(type, "atan2", operands.atan2, [](T y, T x) {
+    using std::atan2;
+    return atan2(y, x);
+  });
+  checksum += count_op<T>(type, "asin", operands.asin, [](T x, T) {
+    using std::asin;
+    return asin(x);
+  });
+  checksum += count_op<T>(type, "exp", operands.exp, [](T x, T) {
+    using std::exp;
+    return exp(x);
+  });
+  checksum += count_op<T>(type, "log", operands.log, [](T x, T) {
+    using std::log;
+    return log(x);
+  });
   std::printf("checksum %s %.6g\n", type, checksum);
   return checksum;
 }
@@ -147,6 +158,11 @@ int main(int argc, char** argv) {
   operands.div = make_operands(4, count, -100.0, 100.0, 0.5, 100.0, true);
   operands.sqrt = make_operands(5, count, 0.0, 1000.0, 0.0, 1.0, false);
   operands.sin = make_operands(6, count, -kPi, kPi, 0.0, 1.0, false);
+  operands.cos = make_operands(7, count, -kPi, kPi, 0.0, 1.0, false);
+  operands.atan2 = make_operands(8, count, -100.0, 100.0, -100.0, 100.0, false);
+  operands.asin = make_operands(9, count, -1.0, 1.0, 0.0, 1.0, false);
+  operands.exp = make_operands(10, count, -10.0, 10.0, 0.0, 1.0, false);
+  operands.log = make_operands(11, count, 0.001, 1000.0, 0.0, 1.0, false);
 
   fixedpoint::reset_saturation_count();
   count_type<double>("double", operands);

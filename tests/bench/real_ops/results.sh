@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Prints the markdown section for docs/results/real_ops.md: guest instructions per +, *, /, sqrt
-# and sin for double, float, S47.16 and S40.23 on the emulated PXA270, and the share of them spent
-# inside libgcc's soft-float routines. Builds the ARM tree, runs real_ops under the counter.
+# Prints the markdown section for docs/results/real_ops.md: guest instructions per +, *, /, sqrt,
+# sin, cos, atan2, asin, exp and log for double, float, S47.16 and S40.23 on the emulated PXA270,
+# and the share of them spent inside libgcc's soft-float routines. Builds the ARM tree, runs
+# real_ops under the counter.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
@@ -31,7 +32,8 @@ echo "\`tests/bench/real_ops/results.sh\`: $(qemu-arm --version | head -n 1 | se
 echo
 echo "Each operation runs on $operands seeded operand pairs, each in its own count window; from each"
 echo "window the same window with a copy instead of the operation is subtracted. Operands: + and * in"
-echo "[-100, 100); / by ±[0.5, 100); sqrt of [0, 1000); sin of [-π, π)."
+echo "[-100, 100); / by ±[0.5, 100); sqrt of [0, 1000); sin and cos of [-π, π); atan2 of y and x in"
+echo "[-100, 100); asin of [-1, 1); exp of [-10, 10); log of [0.001, 1000)."
 echo
 # table <mean|range>: labels are "windows <type> <op> <count>", and the next <count> lines of the
 # windows file ("window <i> insns=<n> softfloat=<n>") are theirs.
@@ -57,7 +59,8 @@ table() {
     return sprintf("%.0f–%.0f", low[type, op] - copy_cost(type), high[type, op] - copy_cost(type))
   }
   END {
-    split("add mul div sqrt sin", ops, " "); split("+ * / sqrt sin", names, " ")
+    split("add mul div sqrt sin cos atan2 asin exp log", ops, " ")
+    count = split("+ * / sqrt sin cos atan2 asin exp log", names, " ")
     if (what == "mean") {
       print "| op | double | float | S47.16 | S40.23 | double ÷ S40.23 |"
       print "|---|---:|---:|---:|---:|---:|"
@@ -65,7 +68,7 @@ table() {
       print "| op | double | float | S47.16 | S40.23 |"
       print "|---|---:|---:|---:|---:|"
     }
-    for (k = 1; k <= 5; ++k) {
+    for (k = 1; k <= count; ++k) {
       op = ops[k]
       row = sprintf("| %s | %s | %s | %s | %s |", names[k], cell("double", op), cell("float", op),
                     cell("s47_16", op), cell("s40_23", op))
@@ -88,15 +91,14 @@ table() {
 }
 
 echo "Guest instructions per operation, mean over the operands; in brackets the share of them spent"
-echo "inside libgcc's soft-float routines (\`__aeabi_d*\`, \`__aeabi_f*\`, ...). glibc's own \`sqrt\` and"
-echo "\`sin\` code around those calls is integer code and is not counted as soft-float."
+echo "inside libgcc's soft-float routines (\`__aeabi_d*\`, \`__aeabi_f*\`, ...). glibc's own code around"
+echo "those calls (in \`sqrt\`, \`sin\`, ... \`log\`) is integer code and is not counted as soft-float."
 echo
 table mean
 echo
-echo "Fewest and most instructions one operation took (division, sqrt and sin depend on the operands):"
+echo "Fewest and most instructions one operation took (most depend on the operands):"
 echo
 table range
 echo
-grep -q '^windows s40_23 sin ' "$work/labels" || echo "—: the fixed-point type has no \`sin\` in this tree yet."
 # real_ops exits non-zero (and so stops this script) if any fixed-point result saturated.
 echo "No fixed-point result saturated ($(sed -n 's/^saturations //p' "$work/stdout") saturations)."

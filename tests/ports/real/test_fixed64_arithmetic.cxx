@@ -29,8 +29,9 @@ struct Check {
   long double error_ulps = 0;  // |result - n / d|; 0 when saturation was expected
 };
 
-/// The result must be n / d rounded to nearest and no saturation counted; or, when that rounded
-/// value is outside the int64 range, the range end of the right sign with one saturation counted.
+/// The result must be n / d rounded to nearest (halves away from zero) and no saturation
+/// counted; or, when that rounded value is outside the int64 range, the range end of the right
+/// sign with one saturation counted.
 Check check_rounded(const Exact& n, const Exact& d, std::int64_t result, std::uint64_t counted) {
   const Exact two(2);
   const Exact twice_n = n * two;
@@ -39,7 +40,9 @@ Check check_rounded(const Exact& n, const Exact& d, std::int64_t result, std::ui
   if (above || below) return {counted == 1 && result == (above ? INT64_MAX : INT64_MIN), 0};
   const Exact diff = Exact(result) * d - n;
   const long double error = std::fabs(diff.to_long_double() / d.to_long_double());
-  return {counted == 0 && Exact::compare_magnitudes(diff * two, d) <= 0, error};
+  // Within half an ulp; exactly half only when rounded away from zero (diff has n's sign).
+  const int half = Exact::compare_magnitudes(diff * two, d);
+  return {counted == 0 && (half < 0 || (half == 0 && diff.is_negative() == n.is_negative())), error};
 }
 
 /// Checks `op` against the exact value `n / d` on kSamples operand pairs from `draw`; prints the
@@ -89,6 +92,22 @@ void sweep(const char* name, const char* symbol, Random& random,
        long_double_misses, 0);
 }
 
+/// The exact product a b / 2^F and quotient a 2^F / b of raw operands as n / d with d > 0.
+template <int F>
+void exact_product(std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
+  n = Exact(a) * Exact(b);
+  d = Exact::power_of_two(F);
+}
+template <int F>
+void exact_quotient(std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
+  n = Exact(a) * Exact::power_of_two(F);
+  d = Exact(b);
+  if (b < 0) {
+    n = n.negated();
+    d = d.negated();
+  }
+}
+
 template <int F>
 void check_add_subtract(std::uint64_t seed) {
   Random random(seed);
@@ -124,10 +143,7 @@ void check_multiply(std::uint64_t seed) {
     b = rnd.raw(target < 0 ? 0 : target > 63 ? 63 : target);
   };
   sweep<F>("multiplication", "*", random, draw, [](fixed64<F> a, fixed64<F> b) { return a * b; },
-           [](std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
-             n = Exact(a) * Exact(b);
-             d = Exact::power_of_two(F);
-           });
+           exact_product<F>);
 }
 
 template <int F>
@@ -139,14 +155,87 @@ void check_divide(std::uint64_t seed) {
     while (b == 0);
   };
   sweep<F>("division", "/", random, draw, [](fixed64<F> a, fixed64<F> b) { return a / b; },
-           [](std::int64_t a, std::int64_t b, Exact& n, Exact& d) {
-             n = Exact(a) * Exact::power_of_two(F);
-             d = Exact(b);
-             if (b < 0) {
-               n = n.negated();
-               d = d.negated();
-             }
-           });
+           exact_quotient<F>);
+}
+
+/// A raw value of magnitude `m` with a random sign.
+std::int64_t with_random_sign(Random& rnd, std::uint64_t m) {
+  const auto v = static_cast<std::int64_t>(m);
+  return rnd.below(2) ? -v : v;
+}
+
+/// The 32 x 32-bit fast paths of * and their borders: magnitudes of 28 to 34 bits, magnitudes
+/// within 2^8 of 2^31 or 2^32 on either side, and exact ties (an odd factor times an odd multiple of
+/// 2^(F-1), whose product ends in exactly half an ulp).
+template <int F>
+void check_multiply_fast_path(std::uint64_t seed) {
+  Random random(seed);
+  const auto draw = [](Random& rnd, std::int64_t& a, std::int64_t& b) {
+    constexpr std::uint64_t kTwo32 = std::uint64_t{1} << 32;
+    // A magnitude within 2^8 of 2^31 or 2^32.
+    const auto near_two32 = [&rnd] { return (kTwo32 >> rnd.below(2)) - 256 + rnd.below(512); };
+    switch (rnd.below(4)) {
+      case 0:
+        a = rnd.raw(28 + static_cast<int>(rnd.below(7)));
+        b = rnd.raw(28 + static_cast<int>(rnd.below(7)));
+        break;
+      case 1:
+        a = with_random_sign(rnd, near_two32());
+        b = rnd.below(2) ? with_random_sign(rnd, near_two32()) : rnd.raw(33);
+        break;
+      case 2: {
+        a = with_random_sign(rnd, (rnd.next() >> 32) | 1);
+        const std::uint64_t odd = ((rnd.next() >> (64 - (32 - F))) | 1);  // odd * 2^(F-1) < 2^32
+        b = with_random_sign(rnd, odd << (F - 1));
+        break;
+      }
+      default:
+        a = rnd.raw(32);
+        b = rnd.raw(32);
+    }
+  };
+  sweep<F>("multiplication near the 32-bit fast path", "*", random, draw,
+           [](fixed64<F> a, fixed64<F> b) { return a * b; },
+           exact_product<F>);
+}
+
+/// The 64 / 32-bit fast path of / and its borders: divisors within 2^8 of 2^31 and 2^32 on
+/// either side, powers of two and small whole numbers; dividends below, at and just above
+/// 2^(64-F) (where |a| 2^F leaves 64 bits); exact ties (quotients ending in half an ulp).
+template <int F>
+void check_divide_fast_path(std::uint64_t seed) {
+  Random random(seed);
+  const auto draw = [](Random& rnd, std::int64_t& a, std::int64_t& b) {
+    constexpr std::uint64_t kLimit = std::uint64_t{1} << (64 - F);
+    switch (rnd.below(5)) {
+      case 0:
+        b = with_random_sign(rnd, (std::uint64_t{1} << (31 + rnd.below(2))) - 256 + rnd.below(512));
+        a = rnd.raw(64 - F);
+        break;
+      case 1:
+        b = with_random_sign(rnd, std::uint64_t{1} << rnd.below(40));
+        a = rnd.raw(64 - F);
+        break;
+      case 2:
+        b = with_random_sign(rnd, 1 + rnd.below(std::uint64_t{1} << (F + 10)));
+        a = with_random_sign(rnd, kLimit - 256 + rnd.below(512));
+        break;
+      case 3: {
+        // b = 2^(F+1) c and a = (2q + 1) c give a / b = (2q + 1) / 2^(F+1): a tie in raw units.
+        const std::uint64_t c = 1 + rnd.below(std::uint64_t{1} << (31 - F));
+        b = with_random_sign(rnd, c << (F + 1));
+        a = with_random_sign(rnd, (2 * rnd.below(std::uint64_t{1} << 20) + 1) * c);
+        break;
+      }
+      default:
+        a = rnd.raw(64 - F);
+        do b = rnd.raw(33);
+        while (b == 0);
+    }
+  };
+  sweep<F>("division near the 64 / 32-bit fast path", "/", random, draw,
+           [](fixed64<F> a, fixed64<F> b) { return a / b; },
+           exact_quotient<F>);
 }
 
 /// sqrt(x) is correctly rounded iff (2r - 1)^2 <= 4 raw 2^F <= (2r + 1)^2 (no ties: the middle
@@ -201,6 +290,84 @@ void test_fixed64_divide() {
   check_divide<16>(0x5eed0005);
   check_divide<23>(0x5eed0006);
 }
+void test_fixed64_multiply_fast_path() {
+  check_multiply_fast_path<16>(0x5eed0009);
+  check_multiply_fast_path<23>(0x5eed000a);
+  using T = fixed64<23>;
+  static_assert((T(-3) * T(1.5)).raw() == -9 * (std::int64_t{1} << 22), "int32 * in a constant expression");
+  static_assert((T(300) * T(-1.5)).raw() == -450 * (std::int64_t{1} << 23), "32-bit * in a constant expression");
+  static_assert((T(100000) * T(-3)).raw() == -300000 * (std::int64_t{1} << 23), "128-bit * in a constant expression");
+}
+void test_fixed64_divide_fast_path() {
+  check_divide_fast_path<16>(0x5eed000b);
+  check_divide_fast_path<23>(0x5eed000c);
+  using T = fixed64<23>;
+  static_assert((T(-300) / T(8)).raw() == -300 * (std::int64_t{1} << 20), "fast / in a constant expression");
+  static_assert((T(1000000) / T(-4)).raw() == -250000 * (std::int64_t{1} << 23), "128-bit / in a constant expression");
+}
+/// An unsigned 64-bit value as an Exact.
+Exact unsigned_exact(std::uint64_t x) {
+  return Exact(static_cast<std::int64_t>(x >> 1)) * Exact(2) + Exact(static_cast<std::int64_t>(x & 1));
+}
+
+/// The reciprocal behind every division: for normalised divisors (top bit set), 2^32 + v never
+/// exceeds 2^64 / d and is at most 4 below it; 64 / 32 and 128 / 64-bit quotients and
+/// remainders are exact.
+void test_wide_uint_reciprocal_and_division() {
+  using fixedpoint::detail::divide;
+  using fixedpoint::detail::reciprocal;
+  Random rnd(0x5eed000d);
+  int reciprocal_failures = 0, printed = 0;
+  const Exact two64 = Exact::power_of_two(64);
+  for (int i = 0; i < kSamples; ++i) {
+    std::uint32_t d = static_cast<std::uint32_t>(rnd.next() >> 32) | 0x80000000u;
+    if (i < 256) d = 0x80000000u + static_cast<std::uint32_t>(i);  // both ends of the range first
+    if (i >= 256 && i < 512) d = 0xffffffffu - static_cast<std::uint32_t>(i - 256);
+    const std::uint32_t v = reciprocal(d);
+    const Exact x = Exact(static_cast<std::int64_t>((std::uint64_t{1} << 32) + v));
+    const Exact dd = Exact(static_cast<std::int64_t>(d));
+    if (Exact::compare(x * dd, two64) > 0 || Exact::compare((x + Exact(5)) * dd, two64) <= 0) {
+      ++reciprocal_failures;
+      fixed64_test::report_failure(printed, "reciprocal(" + std::to_string(d) + ") gave " + std::to_string(v));
+    }
+  }
+  TEST("2^32 + reciprocal(d) lies in (2^64 / d - 5, 2^64 / d] for sampled normalised d", reciprocal_failures, 0);
+  int division_failures = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const std::uint64_t n = rnd.next() >> rnd.below(64);
+    std::uint32_t d = static_cast<std::uint32_t>(rnd.next() >> (32 + rnd.below(32)));
+    if (d == 0) d = 1;
+    const auto qr = divide(n, d);
+    const bool exact = qr.remainder < d && Exact::compare(unsigned_exact(qr.quotient) * unsigned_exact(d) +
+                                                              unsigned_exact(qr.remainder),
+                                                          unsigned_exact(n)) == 0;
+    if (!exact) {
+      ++division_failures;
+      fixed64_test::report_failure(printed, std::to_string(n) + " / " + std::to_string(d) + " gave " +
+                                                std::to_string(qr.quotient) + " remainder " +
+                                                std::to_string(qr.remainder));
+    }
+  }
+  TEST("64 / 32-bit divide gives n = q d + r with r < d", division_failures, 0);
+  // 128 / 64 bits, half of them with a dividend just below d 2^64, where the top dividend digit
+  // equals the top divisor digit and the digit estimate starts at 2^32 - 1.
+  int wide_failures = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    std::uint64_t d = rnd.next() >> rnd.below(64);
+    if (d == 0) d = 1;
+    fixedpoint::detail::Uint128 n{rnd.next() % d, rnd.next()};
+    if (i % 2 == 0) n.hi = d - 1 - rnd.below(d < (std::uint64_t{1} << 32) ? d : std::uint64_t{1} << 32);
+    const auto qr = divide(n, d);
+    const Exact exact_n = unsigned_exact(n.hi) * Exact::power_of_two(64) + unsigned_exact(n.lo);
+    const Exact recombined = unsigned_exact(qr.quotient) * unsigned_exact(d) + unsigned_exact(qr.remainder);
+    if (!(qr.remainder < d && Exact::compare(recombined, exact_n) == 0)) {
+      ++wide_failures;
+      fixed64_test::report_failure(printed, "(" + std::to_string(n.hi) + " 2^64 + " + std::to_string(n.lo) + ") / " +
+                                                std::to_string(d) + " gave " + std::to_string(qr.quotient));
+    }
+  }
+  TEST("128 / 64-bit divide gives n = q d + r with r < d", wide_failures, 0);
+}
 void test_fixed64_sqrt() {
   check_sqrt<16>(0x5eed0007);
   check_sqrt<23>(0x5eed0008);
@@ -211,3 +378,6 @@ TESTMAIN(test_fixed64_add_subtract)
 TESTMAIN(test_fixed64_multiply)
 TESTMAIN(test_fixed64_divide)
 TESTMAIN(test_fixed64_sqrt)
+TESTMAIN(test_fixed64_multiply_fast_path)
+TESTMAIN(test_fixed64_divide_fast_path)
+TESTMAIN(test_wide_uint_reciprocal_and_division)

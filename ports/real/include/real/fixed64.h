@@ -40,6 +40,16 @@ constexpr std::int64_t signed_from_magnitude(bool negative, Uint128 m) {
   return negative ? static_cast<std::int64_t>(std::uint64_t{0} - m.lo) : static_cast<std::int64_t>(m.lo);
 }
 
+/// Gives sign * m as a raw value, saturating (and counting) when it is out of range.
+constexpr std::int64_t signed_from_magnitude(bool negative, std::uint64_t m) {
+  constexpr std::uint64_t kLimit = std::uint64_t{1} << 63;
+  if (m > kLimit || (m == kLimit && !negative)) {
+    count_saturation();
+    return negative ? kRawMin : kRawMax;
+  }
+  return negative ? static_cast<std::int64_t>(std::uint64_t{0} - m) : static_cast<std::int64_t>(m);
+}
+
 /// round(n / d) (halves away from zero) as a raw value of the given sign, d != 0; saturates
 /// (and counts) when it is out of range.
 constexpr std::int64_t divide_rounded(bool negative, Uint128 n, std::uint64_t d) {
@@ -48,9 +58,17 @@ constexpr std::int64_t divide_rounded(bool negative, Uint128 n, std::uint64_t d)
     return negative ? kRawMin : kRawMax;
   }
   const Division qr = divide(n, d);
-  Uint128 q{0, qr.quotient};
-  if (qr.remainder >= d - qr.remainder) q = q + Uint128{0, 1};  // 2r >= d
-  return signed_from_magnitude(negative, q);
+  // 2r >= d rounds up; a quotient of 2^64 - 1 stays as it is, which saturates all the same.
+  const std::uint64_t rounded = qr.quotient + (qr.remainder >= d - qr.remainder ? 1u : 0u);
+  return signed_from_magnitude(negative, rounded < qr.quotient ? qr.quotient : rounded);
+}
+
+/// round(n / d) (halves away from zero) as a raw value of the given sign, for n whose low bit
+/// is 0 and 0 < d < 2^32 (fixed64's common division); saturates (and counts) when out of range.
+constexpr std::int64_t divide_rounded(bool negative, std::uint64_t n, std::uint32_t d) {
+  const Division qr = divide(n, d);
+  // 2r >= d rounds up; q + 1 cannot wrap, as q <= n / 2 for d >= 2 and r = 0 for d = 1.
+  return signed_from_magnitude(negative, qr.quotient + (qr.remainder >= d - qr.remainder ? 1u : 0u));
 }
 
 /// Rounds m / 2^s to nearest (halves away from zero), 0 <= s < 128.
@@ -135,23 +153,38 @@ class fixed64 {
     if ((a.raw_ < 0) != (b.raw_ < 0) && (difference < 0) != (a.raw_ < 0)) return saturated(a.raw_ < 0);
     return from_raw(difference);
   }
-  /// Rounded to nearest (halves away from zero): error at most half an ulp.
+  /// Rounded to nearest (halves away from zero): error at most half an ulp. Operands that fit
+  /// int32 (|x| < 2^(31-F): 256 for S40.23) take one signed 32 x 32 -> 64-bit product, those
+  /// whose magnitudes fit 32 bits one unsigned product; neither can saturate. Larger operands
+  /// take the 128-bit product.
   friend constexpr fixed64 operator*(fixed64 a, fixed64 b) {
-    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
-    const detail::Uint128 product = detail::multiply(detail::magnitude(a.raw_), detail::magnitude(b.raw_));
-    return from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(product, F)));
+    // Written so that GCC emits one SMULL and tests the high words with two EORs (ARMv5TE).
+    const auto a32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(a.raw_));
+    const auto b32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(b.raw_));
+    const std::int64_t product = std::int64_t{a32} * b32;
+    if (__builtin_expect(((a.raw_ ^ a32) | (b.raw_ ^ b32)) == 0, 1)) {
+      // floor((p + 2^(F-1) - 1) / 2^F) for p < 0 is -round(|p| / 2^F) with halves away from 0.
+      return from_raw((product + (std::int64_t{1} << (F - 1)) - (product < 0 ? 1 : 0)) >> F);
+    }
+    const bool negative = (a.raw_ ^ b.raw_) < 0;
+    const std::uint64_t ma = detail::magnitude(a.raw_), mb = detail::magnitude(b.raw_);
+    if (__builtin_expect(((ma | mb) >> 32) == 0, 1)) {
+      const std::uint64_t magnitudes = std::uint64_t{static_cast<std::uint32_t>(ma)} * static_cast<std::uint32_t>(mb);
+      const std::uint64_t m = (magnitudes + (std::uint64_t{1} << (F - 1))) >> F;  // below 2^63
+      return from_raw(negative ? -static_cast<std::int64_t>(m) : static_cast<std::int64_t>(m));
+    }
+    return multiply_general(negative, ma, mb);
   }
   /// Rounded to nearest (halves away from zero): error at most half an ulp. x / 0 saturates
   /// toward the sign of x (0 / 0 gives 0) and counts.
   friend constexpr fixed64 operator/(fixed64 a, fixed64 b) {
-    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
-    const std::uint64_t d = detail::magnitude(b.raw_);
-    if (d == 0) {
-      detail::count_saturation();
-      return from_raw(a.raw_ == 0 ? 0 : a.raw_ < 0 ? detail::kRawMin : detail::kRawMax);
-    }
-    return from_raw(
-        detail::divide_rounded(negative, detail::shift_left(detail::Uint128{0, detail::magnitude(a.raw_)}, F), d));
+    const bool negative = (a.raw_ ^ b.raw_) < 0;
+    const std::uint64_t m = detail::magnitude(a.raw_), d = detail::magnitude(b.raw_);
+    // |a| 2^F within 64 bits and |b| within 32 (for S40.23: |a| < 2^18, 0 < |b| < 512): two
+    // 32-bit quotient digits; otherwise the 128-by-64-bit division.
+    if (__builtin_expect(((m >> (64 - F)) | (d >> 32)) == 0 && d != 0, 1))
+      return from_raw(detail::divide_rounded(negative, m << F, static_cast<std::uint32_t>(d)));
+    return divide_general(negative, a.raw_, m, d);
   }
 
   constexpr fixed64& operator+=(fixed64 b) { return *this = *this + b; }
@@ -174,6 +207,21 @@ class fixed64 {
 
  private:
   static constexpr double kScale = static_cast<double>(std::int64_t{1} << F);
+
+  /// The * and / of operands past their fast paths, kept out of line so that the inlined fast
+  /// paths stay short.
+  __attribute__((noinline)) static constexpr fixed64 multiply_general(bool negative, std::uint64_t ma,
+                                                                      std::uint64_t mb) {
+    return from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(detail::multiply(ma, mb), F)));
+  }
+  __attribute__((noinline)) static constexpr fixed64 divide_general(bool negative, std::int64_t a, std::uint64_t m,
+                                                                    std::uint64_t d) {
+    if (d == 0) {
+      detail::count_saturation();
+      return from_raw(a == 0 ? 0 : a < 0 ? detail::kRawMin : detail::kRawMax);
+    }
+    return from_raw(detail::divide_rounded(negative, detail::shift_left(detail::Uint128{0, m}, F), d));
+  }
 
   static constexpr fixed64 saturated(bool negative) {
     detail::count_saturation();

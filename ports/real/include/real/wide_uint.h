@@ -42,17 +42,12 @@ constexpr Uint128 shift_right(Uint128 a, int s) {
   return {a.hi >> s, (a.lo >> s) | (a.hi << (64 - s))};
 }
 
+/// Number of leading zero bits of a nonzero 32-bit value (one CLZ on ARMv5TE; GCC and Clang
+/// also evaluate the builtin in constant expressions).
+constexpr int leading_zeros(std::uint32_t v) { return __builtin_clz(v); }
+
 /// Number of leading zero bits of a nonzero 64-bit value.
-constexpr int leading_zeros(std::uint64_t v) {
-  int n = 0;
-  if ((v >> 32) == 0) { n += 32; v <<= 32; }
-  if ((v >> 48) == 0) { n += 16; v <<= 16; }
-  if ((v >> 56) == 0) { n += 8; v <<= 8; }
-  if ((v >> 60) == 0) { n += 4; v <<= 4; }
-  if ((v >> 62) == 0) { n += 2; v <<= 2; }
-  if ((v >> 63) == 0) { n += 1; }
-  return n;
-}
+constexpr int leading_zeros(std::uint64_t v) { return __builtin_clzll(v); }
 
 /// Exact 64 x 64 -> 128-bit product from four 32 x 32 -> 64-bit partial products (one UMULL
 /// each on ARMv5TE).
@@ -75,36 +70,108 @@ struct Division {
   std::uint64_t remainder = 0;
 };
 
+/// Seeds of the reciprocal below: entry k is floor(2^25 / (k + 257)) - 2^16, which is 2^32 / d
+/// rounded down to 17 bits at the top end of the interval [(k + 256) 2^23, (k + 257) 2^23) that
+/// holds d's top nine bits, so it never exceeds 2^32 / d there (relative error below 2^-8).
+struct ReciprocalSeeds {
+  std::uint16_t entry[256] = {};
+};
+constexpr ReciprocalSeeds make_reciprocal_seeds() {
+  ReciprocalSeeds seeds;
+  for (std::uint32_t k = 0; k < 256; ++k)
+    seeds.entry[k] = static_cast<std::uint16_t>((std::uint32_t{1} << 25) / (k + 257) - (std::uint32_t{1} << 16));
+  return seeds;
+}
+inline constexpr ReciprocalSeeds kReciprocalSeeds = make_reciprocal_seeds();
+
+/// v with 2^32 + v <= 2^64 / d, at most 4 below floor(2^64 / d) - 2^32, for a normalised d
+/// (top bit set): the table seed refined by two Newton steps x' = x + x (2^64 - d x) / 2^64,
+/// each rounded down, so the estimate stays below 2^64 / d while its relative error goes from
+/// 2^-8 to 2^-16 to 2^-32. Checked for all 2^31 normalised d against 2^64 / d (4 below it at
+/// worst); tests/ports/real checks a seeded sample in every build.
+constexpr std::uint32_t reciprocal(std::uint32_t d) {
+  // x0 = seed 2^16 <= 2^64 / d, error e0 = 2^64 - d x0 < 2^56 (computed modulo 2^64).
+  const std::uint32_t seed = kReciprocalSeeds.entry[(d >> 23) - 256] + (std::uint32_t{1} << 16);
+  const std::uint64_t e0 = std::uint64_t{0} - (std::uint64_t{d} * seed << 16);
+  // x1 = x0 + x0 e0 / 2^64 in [2^32, 2^33); v1 = x1 - 2^32 and e1 = (2^64 - d x1) / 2^32.
+  const std::uint64_t x1 =
+      (std::uint64_t{seed} << 16) + ((std::uint64_t{seed} * static_cast<std::uint32_t>(e0 >> 24)) >> 24);
+  const auto v1 = static_cast<std::uint32_t>(x1);
+  const auto e1 =
+      static_cast<std::uint32_t>((std::uint64_t{0} - (std::uint64_t{d} * v1 + (std::uint64_t{d} << 32))) >> 32);
+  // x2 = x1 + x1 e1 / 2^32 / 2^32, of which 2^32 + v1 contributes e1 + v1 e1 / 2^32.
+  return v1 + e1 + static_cast<std::uint32_t>((std::uint64_t{v1} * e1) >> 32);
+}
+
+/// One 32-bit quotient digit: u / d and its remainder for a normalised d with u < d 2^32, given
+/// v = reciprocal(d). The estimate u (2^32 + v) / 2^64, rounded down, never exceeds the
+/// quotient and falls short by at most 6; the remainder corrects it.
+struct Digit {
+  std::uint32_t quotient = 0;
+  std::uint32_t remainder = 0;
+};
+constexpr Digit divide_digit(std::uint64_t u, std::uint32_t d, std::uint32_t v) {
+  const auto u1 = static_cast<std::uint32_t>(u >> 32);
+  std::uint32_t q = u1 + static_cast<std::uint32_t>((std::uint64_t{u1} * v + static_cast<std::uint32_t>(u)) >> 32);
+  std::uint64_t r = u - std::uint64_t{q} * d;
+  while (r >= d) {
+    ++q;
+    r -= d;
+  }
+  return {q, static_cast<std::uint32_t>(r)};
+}
+
+/// Divides n by a nonzero d below 2^32: two digits of divide_digit by the normalised divisor.
+constexpr Division divide(std::uint64_t n, std::uint32_t d) {
+  const int s = leading_zeros(d);
+  d <<= s;
+  const std::uint32_t v = reciprocal(d);
+  const std::uint64_t top = s == 0 ? 0 : n >> (64 - s);  // below 2^s <= d
+  const std::uint64_t ns = n << s;
+  const std::uint64_t upper = (top << 32) | (ns >> 32);
+  Digit high{0, static_cast<std::uint32_t>(upper)};  // a quotient below 2^32 skips the first digit
+  if (upper >= d) high = divide_digit(upper, d, v);
+  const Digit low = divide_digit((std::uint64_t{high.remainder} << 32) | static_cast<std::uint32_t>(ns), d, v);
+  return {(std::uint64_t{high.quotient} << 32) | low.quotient, low.remainder >> s};
+}
+
 /// Divides `n` by `d` (d != 0, n.hi < d so that the quotient fits in 64 bits).
 /// Knuth's algorithm D with base 2^32: the divisor is normalised so that its top bit is set,
 /// then each 32-bit quotient digit is estimated from the top two dividend digits and the top
-/// divisor digit, and corrected (at most twice) against the second divisor digit.
+/// divisor digit (through its reciprocal, as the core has no divide instruction), and corrected
+/// against the second divisor digit, which makes it exact for a two-digit divisor.
 constexpr Division divide(Uint128 n, std::uint64_t d) {
-  constexpr std::uint64_t kBase = std::uint64_t{1} << 32;
-  constexpr std::uint64_t kLow = kBase - 1;
+  if (n.hi == 0 && (d >> 32) == 0) return divide(n.lo, static_cast<std::uint32_t>(d));
   const int s = leading_zeros(d);
   d <<= s;
-  const std::uint64_t d1 = d >> 32, d0 = d & kLow;
+  const auto d1 = static_cast<std::uint32_t>(d >> 32), d0 = static_cast<std::uint32_t>(d);
+  const std::uint32_t v = reciprocal(d1);
   const Uint128 ns = shift_left(n, s);  // n.hi < d before the shift, so nothing is lost
   const std::uint64_t top = ns.hi;      // dividend digits 3 and 2
-  const std::uint64_t n1 = ns.lo >> 32, n0 = ns.lo & kLow;
+  const auto n1 = static_cast<std::uint32_t>(ns.lo >> 32), n0 = static_cast<std::uint32_t>(ns.lo);
 
-  // Estimates one quotient digit of (high * 2^32 + next) / d, where high < d.
-  auto digit = [d1, d0, kBase](std::uint64_t high, std::uint64_t next) {
-    std::uint64_t q = high / d1;
-    std::uint64_t r = high - q * d1;
-    while (q >= kBase || q * d0 > ((r << 32) | next)) {
+  // One quotient digit of (high * 2^32 + next) / d, where high < d.
+  auto digit = [d1, d0, v](std::uint64_t high, std::uint32_t next) {
+    std::uint32_t q = 0xffffffffu;
+    std::uint64_t r = 0;
+    if ((high >> 32) >= d1) {
+      r = high - std::uint64_t{q} * d1;  // may reach 2^32, which ends the test below
+    } else {
+      const Digit estimate = divide_digit(high, d1, v);
+      q = estimate.quotient;
+      r = estimate.remainder;
+    }
+    while ((r >> 32) == 0 && std::uint64_t{q} * d0 > ((r << 32) | next)) {
       --q;
       r += d1;
-      if (r >= kBase) break;
     }
     return q;
   };
-  const std::uint64_t q1 = digit(top, n1);
+  const std::uint32_t q1 = digit(top, n1);
   const std::uint64_t mid = ((top << 32) | n1) - q1 * d;  // < d, exact modulo 2^64
-  const std::uint64_t q0 = digit(mid, n0);
+  const std::uint32_t q0 = digit(mid, n0);
   const std::uint64_t rem = ((mid << 32) | n0) - q0 * d;
-  return {(q1 << 32) | q0, rem >> s};
+  return {(std::uint64_t{q1} << 32) | q0, rem >> s};
 }
 
 /// floor(sqrt(n)) and n - floor(sqrt(n))^2, digit by digit (two bits of n per result bit).
