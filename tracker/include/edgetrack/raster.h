@@ -137,16 +137,18 @@ void draw_line(const ScreenVertex& a, const ScreenVertex& b, int width, int heig
   const int half = 1 << (kSubpixelBits - 1);
   const int first = (major_a + half) >> kSubpixelBits, last = (major_b + half) >> kSubpixelBits;
   const int dir = first <= last ? 1 : -1;
-  // Minor coordinate and w at a major position m: value_a + slope * (m - major_a), slopes in Q16.
-  const int64_t minor_slope = d_major != 0 ? (int64_t(d_minor) << 16) / d_major : 0;
-  const int64_t w_slope = d_major != 0 ? (int64_t(b.w - a.w) << 16) / d_major : 0;
-  const int64_t offset = (int64_t(first) << kSubpixelBits) - major_a;
-  int64_t minor = (int64_t(minor_a) << 16) + minor_slope * offset;
-  int64_t w = (int64_t(a.w) << 16) + w_slope * offset;
+  // Minor coordinate and w at a major position m: value_a + slope * (m - major_a), slopes in Q16
+  // (scaled by multiplying: the values may be negative, where a left shift is undefined).
+  const int64_t q16 = 65536;
+  const int64_t minor_slope = d_major != 0 ? int64_t(d_minor) * q16 / d_major : 0;
+  const int64_t w_slope = d_major != 0 ? int64_t(b.w - a.w) * q16 / d_major : 0;
+  const int64_t offset = int64_t(first) * (1 << kSubpixelBits) - major_a;
+  int64_t minor = int64_t(minor_a) * q16 + minor_slope * offset;
+  int64_t w = int64_t(a.w) * q16 + w_slope * offset;
   const int64_t minor_step = minor_slope * dir * (1 << kSubpixelBits);
   const int64_t w_step = w_slope * dir * (1 << kSubpixelBits);
   for (int m = first;; m += dir) {
-    const int n = static_cast<int>((minor + (int64_t(half) << 16)) >> (16 + kSubpixelBits));
+    const int n = static_cast<int>((minor + half * q16) >> (16 + kSubpixelBits));
     const int x = x_major ? m : n, y = x_major ? n : m;
     if (x >= 0 && x < width && y >= 0 && y < height) plot(x, y, static_cast<int32_t>(w >> 16));
     if (m == last) break;
