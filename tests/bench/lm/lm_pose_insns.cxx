@@ -2,7 +2,8 @@
 /// Instruction counts of the pose solve on the configured `real`, for
 /// toolchains/qemu/count-insns.sh (tests/bench/lm/results.sh runs it on the ARM builds).
 ///
-///   lm_pose_insns [problems=20]   one count window per vnl_levenberg_marquardt solve of the first
+///   lm_pose_insns [problems=20]   one count window per vnl_levenberg_marquardt solve (construction and
+///                                 minimize) of the first
 ///                                 N seeded pose problems (set-up stays outside the windows);
 ///                                 one line per solve; exits non-zero if one fails or saturates.
 ///   lm_pose_insns parts           one window per building block on problem 1: residuals,
@@ -28,10 +29,11 @@ int solves(int count) {
   for (int i = 0; i < count; ++i) {
     const pose_problem::Problem problem = pose_problem::generate(static_cast<std::uint32_t>(i + 1));
     pose_problem::Residuals<real> f(problem);
+    const std::uint64_t before = fixedpoint::saturation_count();
+    // The window holds what a tracker does per frame: build the minimiser, start, minimise.
+    edgetrack_count_begin();
     vnl_levenberg_marquardt lm(f);
     vnl_vector<real> x = f.start();
-    const std::uint64_t before = fixedpoint::saturation_count();
-    edgetrack_count_begin();
     const bool converged = lm.minimize(x);
     edgetrack_count_end();
     const std::uint64_t saturations = fixedpoint::saturation_count() - before;

@@ -59,8 +59,10 @@ row() {  # row <label> <name>
 }
 echo "### Guest instructions per pose solve on the emulated PXA270"
 echo
-echo "One count window per \`vnl_levenberg_marquardt::minimize\` call on the same $problems problems"
-echo "(problem set-up outside the windows)."
+echo "One count window per solve (constructing \`vnl_levenberg_marquardt\` and calling \`minimize\`)"
+echo "on the same $problems problems (problem set-up outside the windows). The problems are"
+echo "generated on the target, in double; its libm may round differently from the host's in the last"
+echo "bit, so the iteration and evaluation counts can differ slightly from the host table."
 echo
 echo "| ARM build | instructions per solve, mean | min–max | soft-float instructions inside all solves | iterations, mean | evaluations, mean |"
 echo "|---|---:|---:|---:|---:|---:|"

@@ -32,6 +32,11 @@ struct CheckMath {
     TEST_NEAR("min(2, 3) is 2" + in, vnl_math::min(T(2), T(3)), 2.0, 0.0);
     TEST_NEAR("hypot(3, -4) is 5" + in, vnl_math::hypot(T(3), T(-4)), 5.0, ulps<T>(16));
     TEST_NEAR("hypot(0, 0) is 0" + in, vnl_math::hypot(T(0), T(0)), 0.0, 0.0);
+    TEST("the old free-function spellings agree" + in,
+         vnl_math_abs(T(-3)) == T(3) && vnl_math_sqr(T(3)) == T(9) && vnl_math_cube(T(2)) == T(8) &&
+             vnl_math_sgn(T(-1)) == -1 && vnl_math_sgn0(T(0)) == 1 && vnl_math_max(T(1), T(2)) == T(2) &&
+             vnl_math_min(T(1), T(2)) == T(1) && vnl_math_hypot(T(3), T(4)) == vnl_math::hypot(T(3), T(4)),
+         true);
   }
 };
 

@@ -86,3 +86,37 @@ T hypot(const T& a, const T& b) {
 }
 
 }  // namespace vnl_math
+
+// The free-function spellings of older VXL (the paper's era), for code written against them.
+template <class T>
+T vnl_math_abs(const T& x) {
+  return vnl_math::abs(x);
+}
+template <class T>
+T vnl_math_sqr(const T& x) {
+  return vnl_math::sqr(x);
+}
+template <class T>
+T vnl_math_cube(const T& x) {
+  return vnl_math::cube(x);
+}
+template <class T>
+int vnl_math_sgn(const T& x) {
+  return vnl_math::sgn(x);
+}
+template <class T>
+int vnl_math_sgn0(const T& x) {
+  return vnl_math::sgn0(x);
+}
+template <class T>
+T vnl_math_max(const T& a, const T& b) {
+  return vnl_math::max(a, b);
+}
+template <class T>
+T vnl_math_min(const T& a, const T& b) {
+  return vnl_math::min(a, b);
+}
+template <class T>
+T vnl_math_hypot(const T& a, const T& b) {
+  return vnl_math::hypot(a, b);
+}

@@ -27,10 +27,10 @@ class vnl_nonlinear_minimizer_of {
   };
 
   vnl_nonlinear_minimizer_of()
-      : xtol(at_least_epsilon(T(1e-8))),
-        ftol(at_least_epsilon(T(1e-10))),
-        gtol(at_least_epsilon(T(1e-5))),
-        epsfcn(at_least_epsilon(T(1e-11))) {}
+      : xtol(at_least_epsilon(kDefaultXtol)),
+        ftol(at_least_epsilon(kDefaultFtol)),
+        gtol(at_least_epsilon(kDefaultGtol)),
+        epsfcn(at_least_epsilon(kDefaultEpsfcn)) {}
 
   /// Stop when the relative reduction of the sum of squares is below v.
   void set_f_tolerance(T v) { ftol = v; }
@@ -60,6 +60,12 @@ class vnl_nonlinear_minimizer_of {
   ReturnCodes get_failure_code() const { return failure_code_; }
 
  protected:
+  // Upstream's defaults, converted at compile time (no double arithmetic at run time).
+  static constexpr T kDefaultXtol = T(1e-8);
+  static constexpr T kDefaultFtol = T(1e-10);
+  static constexpr T kDefaultGtol = T(1e-5);
+  static constexpr T kDefaultEpsfcn = T(1e-11);
+
   static T at_least_epsilon(T v) {
     const T eps = std::numeric_limits<T>::epsilon();
     return v < eps ? eps : v;
