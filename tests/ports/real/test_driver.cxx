@@ -16,6 +16,7 @@ DECLARE(test_fixed64_sqrt);
 DECLARE(test_fixed64_multiply_fast_path);
 DECLARE(test_fixed64_divide_fast_path);
 DECLARE(test_wide_uint_reciprocal_and_division);
+DECLARE(test_wide_uint_square_root);
 DECLARE(test_fixed64_sin_cos);
 DECLARE(test_fixed64_tan);
 DECLARE(test_fixed64_atan_atan2);
@@ -37,6 +38,7 @@ void register_tests() {
   REGISTER(test_fixed64_multiply_fast_path);
   REGISTER(test_fixed64_divide_fast_path);
   REGISTER(test_wide_uint_reciprocal_and_division);
+  REGISTER(test_wide_uint_square_root);
   REGISTER(test_fixed64_sin_cos);
   REGISTER(test_fixed64_tan);
   REGISTER(test_fixed64_atan_atan2);

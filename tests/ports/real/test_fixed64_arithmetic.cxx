@@ -368,6 +368,37 @@ void test_wide_uint_reciprocal_and_division() {
   }
   TEST("128 / 64-bit divide gives n = q d + r with r < d", wide_failures, 0);
 }
+/// The 64-bit integer square root (Newton estimate, then corrected) is exact: root^2 <= n <
+/// (root + 1)^2 and the remainder is n - root^2, on seeded n of every length, on perfect squares
+/// and their neighbours up to (2^32 - 1)^2, and next to every power of two.
+void test_wide_uint_square_root() {
+  using fixedpoint::detail::square_root;
+  Random rnd(0x5eed000e);
+  int failures = 0, printed = 0;
+  const auto check = [&](std::uint64_t n) {
+    const auto s = square_root(n);
+    const Exact root = unsigned_exact(s.root), next = unsigned_exact(s.root + 1), exact_n = unsigned_exact(n);
+    const bool exact = s.root <= 0xffffffffu && s.remainder.hi == 0 && Exact::compare(root * root, exact_n) <= 0 &&
+                       Exact::compare(next * next, exact_n) > 0 &&
+                       Exact::compare(root * root + unsigned_exact(s.remainder.lo), exact_n) == 0;
+    if (!exact) {
+      ++failures;
+      fixed64_test::report_failure(printed, "square_root(" + std::to_string(n) + ") gave " + std::to_string(s.root));
+    }
+  };
+  for (int i = 0; i < kSamples; ++i) check(rnd.next() >> rnd.below(64));
+  for (int i = 0; i < 2000; ++i) {
+    const std::uint64_t r = i < 1000 ? 0xffffffffu - static_cast<std::uint64_t>(i) : rnd.next() >> 32;
+    const std::uint64_t square = r * r;
+    check(square);
+    check(square - 1);
+    check(square + 1);
+    check(square + 2 * r);  // the largest n with this root
+  }
+  for (int k = 0; k < 64; ++k)
+    for (int d = -2; d <= 2; ++d) check((std::uint64_t{1} << k) + static_cast<std::uint64_t>(d));
+  TEST("64-bit square_root gives root^2 <= n < (root + 1)^2 and the remainder", failures, 0);
+}
 void test_fixed64_sqrt() {
   check_sqrt<16>(0x5eed0007);
   check_sqrt<23>(0x5eed0008);
@@ -381,3 +412,4 @@ TESTMAIN(test_fixed64_sqrt)
 TESTMAIN(test_fixed64_multiply_fast_path)
 TESTMAIN(test_fixed64_divide_fast_path)
 TESTMAIN(test_wide_uint_reciprocal_and_division)
+TESTMAIN(test_wide_uint_square_root)

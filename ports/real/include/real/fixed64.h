@@ -285,7 +285,8 @@ constexpr fixed64<F> fabs(fixed64<F> x) {
 }
 
 /// Square root, correctly rounded (error at most half an ulp): the integer square root of
-/// raw * 2^F, digit by digit on 128 bits, rounded up when the remainder exceeds the root.
+/// raw * 2^F (below 2^64 by a corrected Newton estimate, above digit by digit on 128 bits),
+/// rounded up when the remainder exceeds the root.
 /// Domain x >= 0; a negative x gives 0 and counts as a saturation.
 template <int F>
 constexpr fixed64<F> sqrt(fixed64<F> x) {
