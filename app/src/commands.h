@@ -20,6 +20,8 @@ struct Command {
 
 /// Commands every build has (the ARM build included).
 int eval_main(int argc, char** argv);
+/// `track`, when the tracker's frame loop is in the checkout (else empty).
+std::vector<Command> tracking_commands();
 /// Commands that need host libraries (OSMesa, OpenCV); empty in the ARM build.
 std::vector<Command> host_commands();
 int edgeid_main(int argc, char** argv);

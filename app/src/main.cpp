@@ -7,9 +7,9 @@
 
 int main(int argc, char** argv) {
   using edgetrack_app::Command;
-  std::vector<Command> commands = {
-      {"eval", "compare tracked poses with ground truth; plots like the paper's Fig. 4 and 5", edgetrack_app::eval_main},
-  };
+  std::vector<Command> commands = edgetrack_app::tracking_commands();
+  commands.push_back(
+      {"eval", "compare tracked poses with ground truth; plots like the paper's Fig. 4 and 5", edgetrack_app::eval_main});
   for (const Command& c : edgetrack_app::host_commands()) commands.push_back(c);
   if (argc >= 2) {
     for (const Command& c : commands)
