@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors ViSP's visp3/core/vpImage.h: a row-major image of `Type` pixels that owns its bitmap.
+/// The subset the moving edges need: sizes, `I[i][j]`, `I(i, j)`, `bitmap`, resize and copy.
+/// Unlike upstream there is no row-pointer table and no display pointer; `I[i]` computes the row.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "visp3/core/vpRGBa.h"
+
+template <class Type>
+class vpImage {
+ public:
+  vpImage() = default;
+  vpImage(unsigned int height, unsigned int width) { resize(height, width); }
+  vpImage(unsigned int height, unsigned int width, Type value) { resize(height, width, value); }
+  vpImage(const vpImage& other) : pixels_(other.pixels_), height(other.height), width(other.width) {
+    bitmap = pixels_.empty() ? nullptr : pixels_.data();
+  }
+  vpImage& operator=(const vpImage& other) {
+    if (this != &other) {
+      pixels_ = other.pixels_;
+      height = other.height;
+      width = other.width;
+      bitmap = pixels_.empty() ? nullptr : pixels_.data();
+    }
+    return *this;
+  }
+
+  /// Sets the size; the pixels are value-initialised (zero for the arithmetic types).
+  void resize(unsigned int h, unsigned int w) { resize(h, w, Type()); }
+  void resize(unsigned int h, unsigned int w, const Type& value) {
+    pixels_.assign(static_cast<std::size_t>(h) * w, value);
+    height = h;
+    width = w;
+    bitmap = pixels_.empty() ? nullptr : pixels_.data();
+  }
+  void init(unsigned int h, unsigned int w) { resize(h, w); }
+  void init(unsigned int h, unsigned int w, Type value) { resize(h, w, value); }
+
+  unsigned int getHeight() const { return height; }
+  unsigned int getWidth() const { return width; }
+  unsigned int getRows() const { return height; }
+  unsigned int getCols() const { return width; }
+  unsigned int getSize() const { return height * width; }
+
+  Type* operator[](unsigned int i) { return bitmap + static_cast<std::size_t>(i) * width; }
+  Type* operator[](int i) { return bitmap + static_cast<std::ptrdiff_t>(i) * width; }
+  const Type* operator[](unsigned int i) const { return bitmap + static_cast<std::size_t>(i) * width; }
+  const Type* operator[](int i) const { return bitmap + static_cast<std::ptrdiff_t>(i) * width; }
+
+  Type operator()(unsigned int i, unsigned int j) const { return bitmap[static_cast<std::size_t>(i) * width + j]; }
+  void operator()(unsigned int i, unsigned int j, const Type& v) { bitmap[static_cast<std::size_t>(i) * width + j] = v; }
+
+  bool operator==(const vpImage& other) const {
+    return height == other.height && width == other.width && pixels_ == other.pixels_;
+  }
+  bool operator!=(const vpImage& other) const { return !(*this == other); }
+
+ private:
+  std::vector<Type> pixels_;
+
+ public:
+  /// Points at the first pixel (row 0, column 0), or is null for an empty image, as upstream.
+  Type* bitmap = nullptr;
+
+ private:
+  unsigned int height = 0;
+  unsigned int width = 0;
+};

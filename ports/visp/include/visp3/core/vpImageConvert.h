@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors ViSP's visp3/core/vpImageConvert.h for the grey conversions the tracker needs
+/// (RGBa, RGB24 and, new here, RGB565 to grey), plus vpGreyOnDemand, which converts an RGB565
+/// frame only where moving-edge sites read it.
+///
+/// Rounding rule (all three colour formats): with 8-bit channels R, G, B,
+///   grey = (13933 R + 46871 G + 4732 B + 32768) >> 16,
+/// the BT.709 luma weights 0.2126, 0.7152, 0.0722 scaled by 2^16 to integers that sum to 65536,
+/// rounded to nearest. RGB565 channels are first widened to 8 bits by bit replication
+/// (r8 = r5 << 3 | r5 >> 2, g8 = g6 << 2 | g6 >> 4), so white stays 255 and black 0.
+/// Upstream computes the same weights in double and truncates; docs/ME.md gives the difference.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "visp3/core/vpImage.h"
+#include "visp3/core/vpRGBa.h"
+
+class vpImageConvert {
+ public:
+  /// The rounding rule above for one pixel.
+  static unsigned char rgbToGrey(unsigned int r, unsigned int g, unsigned int b) {
+    return static_cast<unsigned char>((13933u * r + 46871u * g + 4732u * b + 32768u) >> 16);
+  }
+  /// One RGB565 pixel (red in the top 5 bits) to grey, by the rule above.
+  static unsigned char rgb565ToGrey(uint16_t p) {
+    const unsigned int r5 = p >> 11, g6 = (p >> 5) & 0x3Fu, b5 = p & 0x1Fu;
+    return rgbToGrey((r5 << 3) | (r5 >> 2), (g6 << 2) | (g6 >> 4), (b5 << 3) | (b5 >> 2));
+  }
+
+  static void convert(const vpImage<vpRGBa>& src, vpImage<unsigned char>& dest);
+  static void convert(const vpImage<unsigned char>& src, vpImage<vpRGBa>& dest);
+  template <class Type>
+  static void convert(const vpImage<Type>& src, vpImage<Type>& dest) {
+    dest = src;
+  }
+
+  static void RGBToGrey(unsigned char* rgb, unsigned char* grey, unsigned int size);
+  static void RGBaToGrey(unsigned char* rgba, unsigned char* grey, unsigned int size);
+  /// New in the port (the paper's handheld pixel format): `size` RGB565 pixels to grey.
+  static void RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, unsigned int size);
+  /// Whole-frame RGB565 to grey; `dest` takes the size of `src`.
+  static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest);
+  /// Converts only rows [top, bottom) and columns [left, right) (clipped to the image);
+  /// `dest` must already have the size of `src`.
+  static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top, int left,
+                           int bottom, int right);
+};
+
+/// A grey image filled from one RGB565 frame on demand, in square tiles of kTile pixels:
+/// call require() with the box a site will read (vpMeSite::getSearchBox) before track().
+/// Each tile is converted at most once per frame; setFrame() starts a new frame without
+/// clearing anything (tiles carry the number of the frame they were converted for).
+class vpGreyOnDemand {
+ public:
+  static constexpr int kTile = 8;
+
+  /// Starts a frame; `src` must stay alive and unchanged until the next setFrame().
+  void setFrame(const vpImage<uint16_t>& src);
+  /// Makes rows [top, bottom) x columns [left, right) (clipped to the frame) valid in grey().
+  void require(int top, int left, int bottom, int right);
+  /// The grey frame: valid only where require() was called since setFrame().
+  const vpImage<unsigned char>& grey() const { return grey_; }
+  /// Pixels converted since setFrame() (a multiple of the tile area, less at the frame edges).
+  unsigned int convertedPixels() const { return converted_; }
+
+ private:
+  const vpImage<uint16_t>* src_ = nullptr;
+  vpImage<unsigned char> grey_;
+  std::vector<uint32_t> tile_frame_;
+  uint32_t frame_ = 0;
+  int tiles_across_ = 0;
+  int tiles_down_ = 0;
+  unsigned int converted_ = 0;
+};

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Integer grey conversions of vpImageConvert and the tile bookkeeping of vpGreyOnDemand.
+#include "visp3/core/vpImageConvert.h"
+
+#include <algorithm>
+
+void vpImageConvert::convert(const vpImage<vpRGBa>& src, vpImage<unsigned char>& dest) {
+  dest.resize(src.getHeight(), src.getWidth());
+  const vpRGBa* in = src.bitmap;
+  unsigned char* out = dest.bitmap;
+  for (unsigned int n = src.getSize(); n > 0; --n, ++in, ++out) *out = rgbToGrey(in->R, in->G, in->B);
+}
+
+void vpImageConvert::convert(const vpImage<unsigned char>& src, vpImage<vpRGBa>& dest) {
+  dest.resize(src.getHeight(), src.getWidth());
+  for (unsigned int n = 0; n < src.getSize(); ++n) {
+    const unsigned char v = src.bitmap[n];
+    dest.bitmap[n] = vpRGBa(v, v, v, vpRGBa::alpha_default);
+  }
+}
+
+void vpImageConvert::RGBToGrey(unsigned char* rgb, unsigned char* grey, unsigned int size) {
+  for (; size > 0; --size, rgb += 3) *grey++ = rgbToGrey(rgb[0], rgb[1], rgb[2]);
+}
+
+void vpImageConvert::RGBaToGrey(unsigned char* rgba, unsigned char* grey, unsigned int size) {
+  for (; size > 0; --size, rgba += 4) *grey++ = rgbToGrey(rgba[0], rgba[1], rgba[2]);
+}
+
+void vpImageConvert::RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, unsigned int size) {
+  for (; size > 0; --size) *grey++ = rgb565ToGrey(*rgb565++);
+}
+
+void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest) {
+  dest.resize(src.getHeight(), src.getWidth());
+  RGB565ToGrey(src.bitmap, dest.bitmap, src.getSize());
+}
+
+void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top,
+                                  int left, int bottom, int right) {
+  top = std::max(top, 0);
+  left = std::max(left, 0);
+  bottom = std::min(bottom, static_cast<int>(src.getHeight()));
+  right = std::min(right, static_cast<int>(src.getWidth()));
+  if (left >= right) return;
+  for (int i = top; i < bottom; ++i) {
+    RGB565ToGrey(src[i] + left, dest[i] + left, static_cast<unsigned int>(right - left));
+  }
+}
+
+void vpGreyOnDemand::setFrame(const vpImage<uint16_t>& src) {
+  src_ = &src;
+  if (grey_.getHeight() != src.getHeight() || grey_.getWidth() != src.getWidth()) {
+    grey_.resize(src.getHeight(), src.getWidth());
+    tiles_down_ = (static_cast<int>(src.getHeight()) + kTile - 1) / kTile;
+    tiles_across_ = (static_cast<int>(src.getWidth()) + kTile - 1) / kTile;
+    tile_frame_.assign(static_cast<std::size_t>(tiles_down_) * tiles_across_, 0);
+    frame_ = 0;
+  }
+  ++frame_;
+  if (frame_ == 0) {  // the counter wrapped: forget every stamp once
+    std::fill(tile_frame_.begin(), tile_frame_.end(), 0);
+    frame_ = 1;
+  }
+  converted_ = 0;
+}
+
+void vpGreyOnDemand::require(int top, int left, int bottom, int right) {
+  if (src_ == nullptr) return;
+  const int ti0 = std::max(top, 0) / kTile, tj0 = std::max(left, 0) / kTile;
+  const int ti1 = std::min((bottom + kTile - 1) / kTile, tiles_down_);
+  const int tj1 = std::min((right + kTile - 1) / kTile, tiles_across_);
+  for (int ti = ti0; ti < ti1; ++ti) {
+    uint32_t* stamp = &tile_frame_[static_cast<std::size_t>(ti) * tiles_across_];
+    for (int tj = tj0; tj < tj1; ++tj) {
+      if (stamp[tj] == frame_) continue;
+      stamp[tj] = frame_;
+      const int i0 = ti * kTile, j0 = tj * kTile;
+      const int i1 = std::min(i0 + kTile, static_cast<int>(grey_.getHeight()));
+      const int j1 = std::min(j0 + kTile, static_cast<int>(grey_.getWidth()));
+      vpImageConvert::RGB565ToGrey(*src_, grey_, i0, j0, i1, j1);
+      converted_ += static_cast<unsigned int>((i1 - i0) * (j1 - j0));
+    }
+  }
+}
