@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Reading and writing the tracking tests' golden files.
+#include "golden.h"
+
+#include <cstdio>
+#include <fstream>
+
+using namespace edgetrack;
+
+namespace edgetrack_test {
+
+std::string golden_name(Scene scene) {
+  return scene == Scene::kCube ? "cube60_double_positions.txt" : "wood_toy_double_positions.txt";
+}
+
+bool write_golden(const std::string& path, const SequenceRun& run) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return false;
+  for (const FrameResult& frame : run.frames) {
+    const Vec3 c = camera_position(frame.camera_from_model);
+    std::fprintf(file, "%.9f %.9f %.9f\n", static_cast<double>(c.x), static_cast<double>(c.y),
+                 static_cast<double>(c.z));
+  }
+  return std::fclose(file) == 0;
+}
+
+std::vector<Vec3> read_golden(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<Vec3> positions;
+  double x, y, z;
+  while (in >> x >> y >> z) positions.push_back({real(x), real(y), real(z)});  // test set-up only
+  return positions;
+}
+
+}  // namespace edgetrack_test

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Golden files of the tracking tests: one line per frame, the tracked camera position in the
+/// model frame, "x y z" in metres, written by tracker_write_golden from a double build.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run_sequence.h"
+
+namespace edgetrack_test {
+
+constexpr int kGoldenFrames = 60;
+
+std::string golden_name(Scene scene);
+bool write_golden(const std::string& path, const SequenceRun& run);
+/// The positions in the file, or an empty vector when it cannot be read.
+std::vector<edgetrack::Vec3> read_golden(const std::string& path);
+
+}  // namespace edgetrack_test

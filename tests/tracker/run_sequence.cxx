@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The sequence runner shared by the tracking tests, the golden-file writer and the benchmark.
+#include "run_sequence.h"
+
+#include <cmath>
+
+#include "edgetrack/model_io.h"
+#include "edgetrack/scene_renderer.h"
+
+using namespace edgetrack;
+
+namespace edgetrack_test {
+namespace {
+
+bool hidden_by_more_than_a_pixel(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                                 const Vec3& point_in_model, const real& margin) {
+  const Se3 model_from_camera = camera_from_model.inverse();
+  const Vec3 p = camera_from_model * point_in_model;
+  const real dx = p.z / camera.px, dy = p.z / camera.py;
+  const Vec3 shifts[5] = {{real(0), real(0), real(0)}, {dx, real(0), real(0)}, {-dx, real(0), real(0)},
+                          {real(0), dy, real(0)}, {real(0), -dy, real(0)}};
+  for (const Vec3& shift : shifts)
+    if (point_visible(model, camera_from_model, model_from_camera * (p + shift), margin)) return false;
+  return true;
+}
+
+}  // namespace
+
+SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const TrackerParams& params) {
+  SequenceRun run;
+  const Result<EdgeModel> model = load_model(model_path(scene));
+  if (!model.ok()) return run;
+  const PinholeCamera camera = qvga_camera();
+  run.truth = true_poses(scene, frames);
+  Result<Tracker> tracker = Tracker::create(model.value(), camera, run.truth[0], params);
+  if (!tracker.ok()) return run;
+  run.loaded = true;
+  SceneRenderer renderer(camera, SceneStyle{});
+  Rgb565Frame frame;
+  const real margin = real(0.02);
+  double error_sum = 0, points_sum = 0;
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(model.value(), run.truth[k], static_cast<uint32_t>(1000 + k), frame);
+    const Se3 sampling_pose = tracker.value().camera_from_model();
+    const FrameResult result = tracker.value().track(frame.pixels.data());
+    run.frames.push_back(result);
+    const Vec3 d = camera_position(result.camera_from_model) - camera_position(run.truth[k]);
+    const double error_mm =
+        1000 * std::sqrt(static_cast<double>(d.x) * static_cast<double>(d.x) +
+                         static_cast<double>(d.y) * static_cast<double>(d.y) + static_cast<double>(d.z) * static_cast<double>(d.z));
+    run.position_error_mm.push_back(error_mm);
+    error_sum += error_mm;
+    points_sum += result.points_sampled;
+    run.outliers += result.pose.outliers;
+    if (visibility_check) {
+      for (const ControlPoint& p : tracker.value().control_points())
+        run.hidden_points_sampled +=
+            hidden_by_more_than_a_pixel(model.value(), camera, sampling_pose, p.point_in_model, margin);
+      if (k % 4 == 0)  // every fourth frame is enough to show that hidden candidates exist
+        for (const ControlPoint& p : sample_control_points(model.value(), camera, sampling_pose, SamplingParams{}))
+          run.hidden_points_dropped +=
+              hidden_by_more_than_a_pixel(model.value(), camera, sampling_pose, p.point_in_model, margin);
+    }
+  }
+  run.mean_position_error_mm = error_sum / frames;
+  run.mean_points_sampled = points_sum / frames;
+  return run;
+}
+
+}  // namespace edgetrack_test

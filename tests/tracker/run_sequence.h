@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Runs the tracker over a synthetic sequence rendered in-process, from the true first pose,
+/// and collects per-frame poses, errors, counts and ground-truth visibility checks.
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/tracker.h"
+#include "synthetic_sequence.h"
+
+namespace edgetrack_test {
+
+struct SequenceRun {
+  bool loaded = false;
+  std::vector<edgetrack::Se3> truth;
+  std::vector<edgetrack::FrameResult> frames;
+  std::vector<double> position_error_mm;  ///< |camera position - true camera position| per frame
+  double mean_position_error_mm = 0;
+  double mean_points_sampled = 0;
+  /// Sampled points that ray casting finds hidden by more than a pixel: hidden along the rays
+  /// through the point and through the points one pixel left, right, above and below it. Must
+  /// be 0. (Within a pixel of an occluding contour the raster and the exact ray may disagree.)
+  int hidden_points_sampled = 0;
+  int hidden_points_dropped = 0;  ///< candidates hidden in the same sense (every 4th frame), all dropped
+  int outliers = 0;               ///< matches the pose step left out
+};
+
+/// Tracks `frames` frames of the scene; `visibility_check` adds the ray-casting checks.
+SequenceRun run_sequence(Scene scene, int frames, bool visibility_check,
+                         const edgetrack::TrackerParams& params = edgetrack::TrackerParams{});
+
+}  // namespace edgetrack_test

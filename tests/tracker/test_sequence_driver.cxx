@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracking-sequence tests' driver (they need the whole tracker, moving edges and LM).
+#include "testlib/testlib_register.h"
+
+DECLARE(test_tracking_cube);
+DECLARE(test_tracking_wood_toy);
+
+void register_tests() {
+  REGISTER(test_tracking_cube);
+  REGISTER(test_tracking_wood_toy);
+}
+
+DEFINE_MAIN

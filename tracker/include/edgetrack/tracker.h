@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The frame loop of the paper's tracker: visible edges (Edge-ID), grey scaling, moving edges,
+/// pose. Each step is a free function with plain inputs and outputs; Tracker holds the state
+/// between frames and times each step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "edgetrack/control_points.h"
+#include "edgetrack/edge_id_buffer.h"
+#include "edgetrack/edge_model.h"
+#include "edgetrack/moving_edges.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/pose_solver.h"
+#include "edgetrack/result.h"
+#include "edgetrack/se3.h"
+#include "visp3/core/vpImage.h"
+#include "visp3/me/vpMe.h"
+
+namespace edgetrack {
+
+struct TrackerParams {
+  SamplingParams sampling;
+  PoseParams pose;
+  unsigned int me_range = 4;  ///< moving-edge search range, pixels each side (vpMe's default)
+};
+
+/// The paper's four steps (Table 1).
+enum class Step { kVisibleEdges = 0, kGreyScaling = 1, kMovingEdges = 2, kPose = 3 };
+constexpr int kStepCount = 4;
+const char* step_name(Step step);
+
+/// What one frame did: its pose, the step times (host clock, nanoseconds) and the counts.
+struct FrameResult {
+  Se3 camera_from_model;
+  int64_t step_ns[kStepCount] = {0, 0, 0, 0};
+  int points_sampled = 0;  ///< visible control points
+  int points_matched = 0;  ///< of those, the ones the moving edges found and the pose kept
+  PoseSolution pose;       ///< residuals and LM counts
+};
+
+class Tracker {
+ public:
+  /// Checks the inputs and returns a tracker starting from `initial` (camera_from_model).
+  static Result<Tracker> create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                                const TrackerParams& params);
+
+  /// Tracks one RGB565 frame of the camera's size (camera.width * camera.height pixels).
+  FrameResult track(const uint16_t* rgb565);
+
+  const Se3& camera_from_model() const { return camera_from_model_; }
+  /// The visible control points and the matches of the last frame (with the pose step's
+  /// outliers marked), for tests and display.
+  const std::vector<ControlPoint>& control_points() const { return visible_; }
+  const std::vector<EdgeMatch>& matches() const { return matches_; }
+  const EdgeIdBuffer& edge_ids() const { return edge_ids_; }
+
+ private:
+  Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
+
+  EdgeModel model_;
+  PinholeCamera camera_;
+  TrackerParams params_;
+  vpMe me_;
+  Se3 camera_from_model_;
+  EdgeIdBuffer edge_ids_;
+  vpImage<unsigned char> grey_;
+  std::vector<ControlPoint> visible_;
+  std::vector<EdgeMatch> matches_;
+};
+
+}  // namespace edgetrack

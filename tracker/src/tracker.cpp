@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracker's frame loop, one line per step, timed per step like the paper's Table 1.
+#include "edgetrack/tracker.h"
+
+#include <chrono>
+
+#include "visp3/core/vpImageConvert.h"
+
+namespace edgetrack {
+namespace {
+
+/// One lap per step on the host's monotonic clock.
+class StepClock {
+ public:
+  StepClock() : last_(std::chrono::steady_clock::now()) {}
+  void lap(Step step, FrameResult& result) {
+    const auto now = std::chrono::steady_clock::now();
+    result.step_ns[static_cast<int>(step)] = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace
+
+const char* step_name(Step step) {
+  switch (step) {
+    case Step::kVisibleEdges: return "visible edges detection";
+    case Step::kGreyScaling: return "image grey scaling";
+    case Step::kMovingEdges: return "ME";
+    case Step::kPose: return "pose calculation";
+  }
+  return "?";
+}
+
+Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                                const TrackerParams& params) {
+  if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
+  if (model.edges.empty()) return Error{"", 0, "the model has no edge to track"};
+  if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
+  if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
+  if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
+  return Tracker(model, camera, initial, params);
+}
+
+Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params)
+    : model_(model),
+      camera_(camera),
+      params_(params),
+      camera_from_model_(initial),
+      edge_ids_(camera),
+      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {
+  me_.setRange(params.me_range);
+  me_.setSampleStep(params.sampling.step);
+}
+
+FrameResult Tracker::track(const uint16_t* rgb565) {
+  FrameResult result;
+  StepClock clock;
+  edge_ids_.render(model_, camera_from_model_);
+  visible_ = keep_visible(sample_control_points(model_, camera_, camera_from_model_, params_.sampling), edge_ids_);
+  clock.lap(Step::kVisibleEdges, result);
+  vpImageConvert::RGB565ToGrey(rgb565, grey_.bitmap, grey_.getSize());
+  clock.lap(Step::kGreyScaling, result);
+  matches_ = search_moving_edges(grey_, visible_, me_);
+  clock.lap(Step::kMovingEdges, result);
+  result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose);
+  clock.lap(Step::kPose, result);
+  camera_from_model_ = result.pose.camera_from_model;
+  result.camera_from_model = camera_from_model_;
+  result.points_sampled = static_cast<int>(visible_.size());
+  result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
+  return result;
+}
+
+}  // namespace edgetrack
