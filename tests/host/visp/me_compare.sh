@@ -5,6 +5,8 @@
 # 0.5 px and whose suppression decision agrees. Exits non-zero below TARGET percent.
 #   me_compare.sh UPSTREAM_EXE PORTS_EXE TARGET     (sites on visp-images-data's mbt/cube and line)
 #   me_compare.sh UPSTREAM_EXE PORTS_EXE masks      (masks and defaults must be identical)
+#   me_compare.sh UPSTREAM_EXE PORTS_EXE grey       (RGB24 to grey: within one level everywhere,
+#                                                    the same level for at least 99% of colours)
 set -euo pipefail
 up=$1 ours=$2 target=$3
 data=${VISP_INPUT_IMAGE_PATH:-/usr/share/visp-images-data}/ViSP-images
@@ -22,6 +24,18 @@ if [ "$target" = masks ]; then
   cmp -s "$tmp/u" "$tmp/o" || { echo "defaults differ"; diff "$tmp/u" "$tmp/o"; status=1; }
   [ $status -eq 0 ] && echo "masks (sizes 3 5 7 9, n_mask 180 90 36) and defaults identical to upstream"
   exit $status
+fi
+
+if [ "$target" = grey ]; then
+  "$up" grey >"$tmp/u"; "$ours" grey >"$tmp/o"
+  paste -d' ' "$tmp/u" "$tmp/o" | awk '
+    { n++; d = $8 - $4; count[d]++; if (d < -1 || d > 1) far++ }
+    END {
+      printf "RGB24 to grey, %d colours, ours - upstream: -1 %.3f%%, 0 %.3f%%, +1 %.3f%%, beyond one level %d\n",
+             n, 100 * count[-1] / n, 100 * count[0] / n, 100 * count[1] / n, far
+      exit (far == 0 && count[0] >= 0.99 * n) ? 0 : 1
+    }'
+  exit
 fi
 
 # Straight edges of the first frame (i1,j1,i2,j2,spacing): the cube's outline, the paper sheet

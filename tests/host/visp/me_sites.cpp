@@ -11,7 +11,9 @@
 ///       with track(I, &me, false), then tracked frame to frame with track(I, &me) while kept;
 ///       prints "frame site state ifloat jfloat" for every site and frame.
 ///   me_sites bench RANGE PGM REPEATS SEGMENT...   prints nanoseconds per track() call
+///   me_sites grey                    prints "r g b grey" of RGB24 to grey for a grid of colours
 #include <visp3/core/vpImage.h>
+#include <visp3/core/vpImageConvert.h>
 #include <visp3/me/vpMe.h>
 #include <visp3/me/vpMeSite.h>
 
@@ -148,12 +150,28 @@ int bench(unsigned int range, const std::string& pgm, int repeats, const std::ve
   return 0;
 }
 
+/// RGB24 to grey through vpImageConvert::RGBToGrey for every colour of a 3 x 3 x 5 level grid.
+int print_grey() {
+  std::vector<unsigned char> rgb;
+  for (int r = 0; r < 256; r += 3)
+    for (int g = 0; g < 256; g += 3)
+      for (int b = 0; b < 256; b += 5) rgb.insert(rgb.end(), {static_cast<unsigned char>(r),
+                                                              static_cast<unsigned char>(g),
+                                                              static_cast<unsigned char>(b)});
+  const unsigned int n = static_cast<unsigned int>(rgb.size() / 3);
+  std::vector<unsigned char> grey(n);
+  vpImageConvert::RGBToGrey(rgb.data(), grey.data(), n);
+  for (unsigned int k = 0; k < n; ++k) std::printf("%d %d %d %d\n", rgb[3 * k], rgb[3 * k + 1], rgb[3 * k + 2], grey[k]);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "masks" && argc == 4) return print_masks(std::atoi(argv[2]), std::atoi(argv[3]));
   if (mode == "defaults") return print_defaults();
+  if (mode == "grey") return print_grey();
   if (mode == "track" && argc >= 7) {
     return track(std::atoi(argv[2]), argv[3], std::atoi(argv[4]), std::atoi(argv[5]), seeds_from(argc, argv, 6));
   }
@@ -161,6 +179,6 @@ int main(int argc, char** argv) {
     return bench(std::atoi(argv[2]), argv[3], std::atoi(argv[4]), seeds_from(argc, argv, 5));
   }
   std::fprintf(stderr, "usage: me_sites masks SIZE NMASK | defaults | track RANGE PATTERN FIRST LAST SEGMENT... |"
-                       " bench RANGE PGM REPEATS SEGMENT...\n");
+                       " bench RANGE PGM REPEATS SEGMENT... | grey\n");
   return 2;
 }
