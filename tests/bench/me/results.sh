@@ -40,6 +40,14 @@ for tree in "$host" "$host_s40"; do
   echo
 done
 
+echo "RGB24 to grey against upstream's \`vpImageConvert::RGBToGrey\` (host double):"
+echo
+echo '```'
+"$top/tests/host/visp/me_compare.sh" "$host/tests/host/visp/me_sites_upstream" \
+  "$host/tests/host/visp/me_sites_ports" grey || true
+echo '```'
+echo
+
 echo "### Host nanoseconds per track() (range 7, mask 5, 128 sites on mbt/cube frame 0, contrast test on)"
 echo
 echo "| library | ns per track() |"
