@@ -26,14 +26,6 @@ arm=$(bench_tree arm s40_23 edgetrack)
 edgetrack="$host/app/edgetrack"
 arm_edgetrack=(qemu-arm -cpu pxa270 -L /usr/arm-linux-gnueabi "$arm/app/edgetrack")
 
-if ! "$edgetrack" track --help >/dev/null 2>&1; then
-  echo "run-main: this checkout has no tracker frame loop (tracker/include/edgetrack/tracker.h), so edgetrack" \
-    "has no track command; rendering the synthetic sequence and counting instructions only" >&2
-  "$edgetrack" synth --out "$out/synthetic/sequence"
-  "$top/tests/bench/real_ops/results.sh" | tee "$out/real_ops.md"
-  echo "Partial results (no tracking) are under $out" >&2
-  exit 1
-fi
 
 # run_track NAME EDGETRACK... TRACK-OPTIONS: tracks into $out/NAME, keeps the summary.
 run_track() {
