@@ -128,7 +128,7 @@ int track_main(int argc, char** argv) {
   if (a.has("--config")) {
     auto ecm = read_ecm_config(a.text("--config"));
     if (!ecm.ok()) return report("track", ecm.error());
-    if (ecm.value().range > 0) params.me_range = static_cast<unsigned>(ecm.value().range);
+    if (ecm.value().range > 0) params.me.setRange(static_cast<unsigned>(ecm.value().range));
     if (ecm.value().sample_step > 0) params.sampling.step = real(ecm.value().sample_step);
     const EcmConfig& c = ecm.value();
     if (c.threshold >= 0 || c.mu1 >= 0 || c.mu2 >= 0 || c.mask_size >= 0 || c.mask_number >= 0)

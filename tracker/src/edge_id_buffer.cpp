@@ -27,6 +27,16 @@ void EdgeIdBuffer::clear_dirty() {
   dirty_y1_ = -1;
 }
 
+void EdgeIdBuffer::assign(const uint16_t* rgb565) {
+  std::copy(rgb565, rgb565 + colours_.size(), colours_.begin());
+  std::fill(inverse_depth_.begin(), inverse_depth_.end(), 0);
+  // Everything may be drawn now: the next render() clears the whole image.
+  dirty_x0_ = 0;
+  dirty_y0_ = 0;
+  dirty_x1_ = camera_.width - 1;
+  dirty_y1_ = camera_.height - 1;
+}
+
 void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) {
   clear_dirty();
   if (edge_colours_.size() != model.edges.size()) {

@@ -41,6 +41,7 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
   if (model.edges.empty()) return Error{"", 0, "the model has no edge to track"};
   if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
   if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
+  if (params.me.getRange() == 0) return Error{"", 0, "the moving-edge range must be at least 1 pixel"};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
   return Tracker(model, camera, initial, params);
 }
@@ -49,17 +50,18 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
     : model_(model),
       camera_(camera),
       params_(params),
+      me_(params.me),
       camera_from_model_(initial),
       edge_ids_(camera),
       grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {
-  me_.setRange(params.me_range);
   me_.setSampleStep(params.sampling.step);
 }
 
 FrameResult Tracker::track(const uint16_t* rgb565) {
   FrameResult result;
   StepClock clock;
-  edge_ids_.render(model_, camera_from_model_);
+  if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
+  else edge_ids_.render(model_, camera_from_model_);
   visible_ = keep_visible(sample_control_points(model_, camera_, camera_from_model_, params_.sampling), edge_ids_);
   clock.lap(Step::kVisibleEdges, result);
   vpImageConvert::RGB565ToGrey(rgb565, grey_.bitmap, grey_.getSize());

@@ -39,8 +39,7 @@ int main(int argc, char* argv[]) {
   if (argc > 3 && std::string(argv[3]) == "steps") {
     // Tracker::track's steps, one count window each; the pose carries over as in the tracker.
     const TrackerParams params;
-    vpMe me;
-    me.setRange(params.me_range);
+    vpMe me = params.me;
     me.setSampleStep(params.sampling.step);
     EdgeIdBuffer edge_ids(camera);
     vpImage<unsigned char> grey(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));

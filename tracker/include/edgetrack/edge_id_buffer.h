@@ -25,6 +25,10 @@ class EdgeIdBuffer {
   /// their own faces pass and edges behind other faces do not.
   void render(const EdgeModel& model, const Se3& camera_from_model);
 
+  /// Takes an Edge-ID image drawn elsewhere (GL): width * height RGB565 pixels, row 0 at the
+  /// top, in the paper's 8-level code. The depth buffer is cleared: it stays this renderer's.
+  void assign(const uint16_t* rgb565);
+
   /// The edge index drawn at pixel (x, y), or -1 for the background or outside the image.
   int edge_at(int x, int y) const;
   /// True when edge `edge` is drawn at the pixel nearest to `pixel`, or at one of the two

@@ -23,7 +23,19 @@ namespace edgetrack {
 struct TrackerParams {
   SamplingParams sampling;
   PoseParams pose;
-  unsigned int me_range = 4;  ///< moving-edge search range, pixels each side (vpMe's default)
+  /// Moving-edge settings with upstream's meanings (range, threshold, mask size and number).
+  /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
+  /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
+  vpMe me;
+};
+
+/// Draws the Edge-ID image the visibility test reads. The tracker's default is the portable
+/// EdgeIdBuffer::render; the host app plugs in GL this way (`--visibility gl`).
+class EdgeIdSource {
+ public:
+  virtual ~EdgeIdSource() = default;
+  /// Fills `out` (EdgeIdBuffer::assign or render) for the model seen from camera_from_model.
+  virtual void draw(const EdgeModel& model, const Se3& camera_from_model, EdgeIdBuffer& out) = 0;
 };
 
 /// The paper's four steps (Table 1).
@@ -49,6 +61,10 @@ class Tracker {
   /// Tracks one RGB565 frame of the camera's size (camera.width * camera.height pixels).
   FrameResult track(const uint16_t* rgb565);
 
+  /// Visible edges come from `source` from the next frame on (nullptr: the portable
+  /// renderer). The source must outlive the tracker or be reset first.
+  void set_edge_id_source(EdgeIdSource* source) { edge_id_source_ = source; }
+
   const Se3& camera_from_model() const { return camera_from_model_; }
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
@@ -65,6 +81,7 @@ class Tracker {
   vpMe me_;
   Se3 camera_from_model_;
   EdgeIdBuffer edge_ids_;
+  EdgeIdSource* edge_id_source_ = nullptr;
   vpImage<unsigned char> grey_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
