@@ -4,6 +4,31 @@
 
 #include <algorithm>
 
+namespace {
+
+/// The rule's weighted sum of an RGB565 pixel, split by byte: the high byte holds red and the
+/// top three green bits, the low byte the low three green bits and blue. Bit replication widens
+/// green as g8 = (gh << 5) + (gh >> 1) + (gl << 2) (no bits overlap), so the sum is exactly
+/// high[p >> 8] + low[p & 0xFF]: two loads and an add per pixel instead of three multiplies.
+struct Rgb565Sums {
+  uint32_t high[256];  ///< 13933 r8 + 46871 (green from gh) + 32768 (the rounding)
+  uint32_t low[256];   ///< 46871 (green from gl) + 4732 b8
+};
+
+constexpr Rgb565Sums make_rgb565_sums() {
+  Rgb565Sums sums{};
+  for (uint32_t byte = 0; byte < 256; ++byte) {
+    const uint32_t r5 = byte >> 3, gh = byte & 7u, gl = byte >> 5, b5 = byte & 0x1Fu;
+    sums.high[byte] = 13933u * ((r5 << 3) | (r5 >> 2)) + 46871u * ((gh << 5) + (gh >> 1)) + 32768u;
+    sums.low[byte] = 46871u * (gl << 2) + 4732u * ((b5 << 3) | (b5 >> 2));
+  }
+  return sums;
+}
+
+constexpr Rgb565Sums kRgb565Sums = make_rgb565_sums();
+
+}  // namespace
+
 void vpImageConvert::convert(const vpImage<vpRGBa>& src, vpImage<unsigned char>& dest) {
   dest.resize(src.getHeight(), src.getWidth());
   const vpRGBa* in = src.bitmap;
@@ -28,7 +53,10 @@ void vpImageConvert::RGBaToGrey(unsigned char* rgba, unsigned char* grey, unsign
 }
 
 void vpImageConvert::RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, unsigned int size) {
-  for (; size > 0; --size) *grey++ = rgb565ToGrey(*rgb565++);
+  for (; size > 0; --size) {
+    const unsigned int p = *rgb565++;
+    *grey++ = static_cast<unsigned char>((kRgb565Sums.high[p >> 8] + kRgb565Sums.low[p & 0xFFu]) >> 16);
+  }
 }
 
 void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest) {
@@ -49,11 +77,15 @@ void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned
 }
 
 void vpGreyOnDemand::setFrame(const vpImage<uint16_t>& src) {
-  src_ = &src;
-  if (grey_.getHeight() != src.getHeight() || grey_.getWidth() != src.getWidth()) {
-    grey_.resize(src.getHeight(), src.getWidth());
-    tiles_down_ = (static_cast<int>(src.getHeight()) + kTile - 1) / kTile;
-    tiles_across_ = (static_cast<int>(src.getWidth()) + kTile - 1) / kTile;
+  setFrame(src.bitmap, src.getHeight(), src.getWidth());
+}
+
+void vpGreyOnDemand::setFrame(const uint16_t* pixels, unsigned int rows, unsigned int cols) {
+  src_ = pixels;
+  if (grey_.getHeight() != rows || grey_.getWidth() != cols) {
+    grey_.resize(rows, cols);
+    tiles_down_ = (static_cast<int>(rows) + kTile - 1) / kTile;
+    tiles_across_ = (static_cast<int>(cols) + kTile - 1) / kTile;
     tile_frame_.assign(static_cast<std::size_t>(tiles_down_) * tiles_across_, 0);
     frame_ = 0;
   }
@@ -78,7 +110,9 @@ void vpGreyOnDemand::require(int top, int left, int bottom, int right) {
       const int i0 = ti * kTile, j0 = tj * kTile;
       const int i1 = std::min(i0 + kTile, static_cast<int>(grey_.getHeight()));
       const int j1 = std::min(j0 + kTile, static_cast<int>(grey_.getWidth()));
-      vpImageConvert::RGB565ToGrey(*src_, grey_, i0, j0, i1, j1);
+      const unsigned int width = grey_.getWidth();
+      for (int i = i0; i < i1; ++i)
+        vpImageConvert::RGB565ToGrey(src_ + i * width + j0, grey_[i] + j0, static_cast<unsigned int>(j1 - j0));
       converted_ += static_cast<unsigned int>((i1 - i0) * (j1 - j0));
     }
   }

@@ -139,6 +139,14 @@ void test_on_demand() {
   TEST_EQUAL("the new frame's pixel is converted from the new frame", static_cast<int>(demand.grey()[20][20]), 255);
   TEST_EQUAL("one tile converted for one pixel", demand.convertedPixels(), 64u);
 
+  // A raw camera buffer (no vpImage) gives the same pixels.
+  vpGreyOnDemand raw;
+  raw.setFrame(frame.bitmap, rows, cols);
+  raw.require(10, 13, 17, 20);
+  TEST_EQUAL("a raw frame converts the same tiles", raw.convertedPixels(), 256u);
+  raw.require(0, 0, rows, cols);
+  TEST("a raw frame converted whole equals the full conversion", raw.grey() == full, true);
+
   vpImage<unsigned char> part(rows, cols, 7);
   vpImageConvert::RGB565ToGrey(frame, part, 5, 6, 9, 11);
   bool box_only = true;

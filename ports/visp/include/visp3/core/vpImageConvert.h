@@ -58,6 +58,8 @@ class vpGreyOnDemand {
 
   /// Starts a frame; `src` must stay alive and unchanged until the next setFrame().
   void setFrame(const vpImage<uint16_t>& src);
+  /// The same for a raw row-major frame of rows x cols pixels (a camera buffer, no copy).
+  void setFrame(const uint16_t* pixels, unsigned int rows, unsigned int cols);
   /// Makes rows [top, bottom) x columns [left, right) (clipped to the frame) valid in grey().
   void require(int top, int left, int bottom, int right);
   /// The grey frame: valid only where require() was called since setFrame().
@@ -66,7 +68,7 @@ class vpGreyOnDemand {
   unsigned int convertedPixels() const { return converted_; }
 
  private:
-  const vpImage<uint16_t>* src_ = nullptr;
+  const uint16_t* src_ = nullptr;
   vpImage<unsigned char> grey_;
   std::vector<uint32_t> tile_frame_;
   uint32_t frame_ = 0;
