@@ -4,10 +4,12 @@
 
 DECLARE(test_tracking_cube);
 DECLARE(test_tracking_wood_toy);
+DECLARE(test_tracker_grey);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
   REGISTER(test_tracking_wood_toy);
+  REGISTER(test_tracker_grey);
 }
 
 DEFINE_MAIN

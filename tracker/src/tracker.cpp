@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "visp3/core/vpImageConvert.h"
+#include "edgetrack/me_search_box.h"
 
 namespace edgetrack {
 namespace {
@@ -57,18 +57,41 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
   me_.setSampleStep(params.sampling.step);
 }
 
+const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsigned int& converted) {
+  if (params_.grey == GreyScaling::kWholeFrame) {
+    vpImageConvert::RGB565ToGrey(rgb565, grey_.bitmap, grey_.getSize());
+    converted = grey_.getSize();
+    return grey_;
+  }
+  grey_on_demand_.setFrame(rgb565, grey_.getHeight(), grey_.getWidth());
+  for (const ControlPoint& point : visible_) {
+    const PixelBox box = me_search_box(point, me_);
+    grey_on_demand_.require(box.top, box.left, box.bottom, box.right);
+  }
+  converted = grey_on_demand_.convertedPixels();
+  return grey_on_demand_.grey();
+}
+
 FrameResult Tracker::track(const uint16_t* rgb565) {
   FrameResult result;
   StepClock clock;
+  begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
   else edge_ids_.render(model_, camera_from_model_);
   visible_ = keep_visible(sample_control_points(model_, camera_, camera_from_model_, params_.sampling), edge_ids_);
+  end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
-  vpImageConvert::RGB565ToGrey(rgb565, grey_.bitmap, grey_.getSize());
+  begin(Step::kGreyScaling);
+  const vpImage<unsigned char>& grey = grey_scale(rgb565, result.grey_pixels);
+  end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
-  matches_ = search_moving_edges(grey_, visible_, me_);
+  begin(Step::kMovingEdges);
+  matches_ = search_moving_edges(grey, visible_, me_);
+  end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
+  begin(Step::kPose);
   result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose);
+  end(Step::kPose);
   clock.lap(Step::kPose, result);
   camera_from_model_ = result.pose.camera_from_model;
   result.camera_from_model = camera_from_model_;

@@ -16,9 +16,16 @@
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
 #include "visp3/core/vpImage.h"
+#include "visp3/core/vpImageConvert.h"
 #include "visp3/me/vpMe.h"
 
 namespace edgetrack {
+
+/// How the grey step turns the RGB565 frame into the grey image the moving edges read.
+enum class GreyScaling {
+  kOnDemand,   ///< only the 8x8 tiles the control points' searches read (me_search_box.h)
+  kWholeFrame  ///< every pixel, as the paper does
+};
 
 struct TrackerParams {
   SamplingParams sampling;
@@ -27,6 +34,7 @@ struct TrackerParams {
   /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
   /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
   vpMe me;
+  GreyScaling grey = GreyScaling::kOnDemand;
 };
 
 /// Draws the Edge-ID image the visibility test reads. The tracker's default is the portable
@@ -43,12 +51,22 @@ enum class Step { kVisibleEdges = 0, kGreyScaling = 1, kMovingEdges = 2, kPose =
 constexpr int kStepCount = 4;
 const char* step_name(Step step);
 
+/// Called at the start and the end of each step of Tracker::track (a benchmark opens and
+/// closes its instruction-count windows there).
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void begin(Step step) = 0;
+  virtual void end(Step step) = 0;
+};
+
 /// What one frame did: its pose, the step times (host clock, nanoseconds) and the counts.
 struct FrameResult {
   Se3 camera_from_model;
   int64_t step_ns[kStepCount] = {0, 0, 0, 0};
   int points_sampled = 0;  ///< visible control points
   int points_matched = 0;  ///< of those, the ones the moving edges found and the pose kept
+  unsigned int grey_pixels = 0;  ///< pixels the grey step converted
   PoseSolution pose;       ///< residuals and LM counts
 };
 
@@ -64,6 +82,9 @@ class Tracker {
   /// Visible edges come from `source` from the next frame on (nullptr: the portable
   /// renderer). The source must outlive the tracker or be reset first.
   void set_edge_id_source(EdgeIdSource* source) { edge_id_source_ = source; }
+  /// `observer` sees each step begin and end from the next frame on (nullptr: none). It must
+  /// outlive the tracker or be reset first.
+  void set_step_observer(StepObserver* observer) { step_observer_ = observer; }
 
   const Se3& camera_from_model() const { return camera_from_model_; }
   /// The visible control points and the matches of the last frame (with the pose step's
@@ -74,6 +95,14 @@ class Tracker {
 
  private:
   Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
+  /// The grey step: converts what the moving edges will read and returns the image they read.
+  const vpImage<unsigned char>& grey_scale(const uint16_t* rgb565, unsigned int& converted);
+  void begin(Step step) {
+    if (step_observer_) step_observer_->begin(step);
+  }
+  void end(Step step) {
+    if (step_observer_) step_observer_->end(step);
+  }
 
   EdgeModel model_;
   PinholeCamera camera_;
@@ -82,7 +111,9 @@ class Tracker {
   Se3 camera_from_model_;
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
-  vpImage<unsigned char> grey_;
+  StepObserver* step_observer_ = nullptr;
+  vpImage<unsigned char> grey_;  ///< the whole-frame grey image
+  vpGreyOnDemand grey_on_demand_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
 };
