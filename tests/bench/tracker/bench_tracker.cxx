@@ -2,10 +2,10 @@
 /// The Table 1 benchmark: tracks the generated cube (or wood toy) sequence and prints, per
 /// frame, the host time of the paper's four steps, the points sampled and matched and the
 /// residual. Each Tracker::track() call is one count window for toolchains/qemu/count-insns.sh;
-/// the frames are rendered before, outside the windows.
-/// With "steps", the same frame loop runs from the step functions themselves, with one count
-/// window per step (4 per frame, in the paper's order), for the per-step instruction shares.
-///   bench_tracker [frames] [cube|toy] [steps]
+/// the frames are rendered before, outside the windows. With "steps", a StepObserver opens one
+/// window per step of Tracker::track instead (4 per frame, in the paper's order). "whole" makes
+/// the grey step convert whole frames (the paper's way) instead of on demand.
+///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,10 +17,20 @@
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
 #include "synthetic_sequence.h"
-#include "visp3/core/vpImageConvert.h"
 
 using namespace edgetrack;
 using namespace edgetrack_test;
+
+namespace {
+
+/// One count window per step.
+class CountEachStep : public StepObserver {
+ public:
+  void begin(Step) override { edgetrack_count_begin(); }
+  void end(Step) override { edgetrack_count_end(); }
+};
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
   const int frames = argc > 1 ? std::atoi(argv[1]) : 60;
@@ -36,54 +46,36 @@ int main(int argc, char* argv[]) {
   std::vector<Rgb565Frame> images(static_cast<size_t>(frames));
   for (int k = 0; k < frames; ++k) renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), images[k]);
 
-  if (argc > 3 && std::string(argv[3]) == "steps") {
-    // Tracker::track's steps, one count window each; the pose carries over as in the tracker.
-    const TrackerParams params;
-    vpMe me = params.me;
-    me.setSampleStep(params.sampling.step);
-    EdgeIdBuffer edge_ids(camera);
-    vpImage<unsigned char> grey(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
-    Se3 pose = truth[0];
-    std::printf("# real=%s steps: 4 windows per frame (visible edges, grey, ME, pose)\n", real_name());
-    for (int k = 0; k < frames; ++k) {
-      edgetrack_count_begin();
-      edge_ids.render(model.value(), pose);
-      const std::vector<ControlPoint> visible =
-          keep_visible(sample_control_points(model.value(), camera, pose, params.sampling), edge_ids);
-      edgetrack_count_end();
-      edgetrack_count_begin();
-      vpImageConvert::RGB565ToGrey(images[k].pixels.data(), grey.bitmap, grey.getSize());
-      edgetrack_count_end();
-      edgetrack_count_begin();
-      std::vector<EdgeMatch> matches = search_moving_edges(grey, visible, me);
-      edgetrack_count_end();
-      edgetrack_count_begin();
-      const PoseSolution solution = solve_pose(matches, camera, pose, params.pose);
-      edgetrack_count_end();
-      pose = solution.camera_from_model;
-      std::printf("steps %d %zu %zu\n", k, visible.size(), matches.size());
-    }
-    return 0;
+  const std::string windows = argc > 3 ? argv[3] : "frame", grey = argc > 4 ? argv[4] : "on-demand";
+  if ((windows != "frame" && windows != "steps") || (grey != "on-demand" && grey != "whole")) {
+    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole]\n");
+    return 2;
   }
-
-  Result<Tracker> tracker = Tracker::create(model.value(), camera, truth[0], TrackerParams{});
+  const bool per_step = windows == "steps", whole = grey == "whole";
+  TrackerParams params;
+  params.grey = whole ? GreyScaling::kWholeFrame : GreyScaling::kOnDemand;
+  Result<Tracker> tracker = Tracker::create(model.value(), camera, truth[0], params);
   if (!tracker.ok()) {
     std::fprintf(stderr, "%s\n", tracker.error().text().c_str());
     return 1;
   }
-  std::printf("# real=%s scene=%s frames=%d\n", real_name(), scene == Scene::kCube ? "cube" : "toy", frames);
-  std::printf("# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm\n");
+  CountEachStep count_each_step;
+  if (per_step) tracker.value().set_step_observer(&count_each_step);
+  std::printf("# real=%s scene=%s frames=%d grey=%s windows=%s\n", real_name(), scene == Scene::kCube ? "cube" : "toy",
+              frames, grey.c_str(), per_step ? "4 per frame (visible edges, grey, ME, pose)" : "1 per frame");
+  std::printf(
+      "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels\n");
   for (int k = 0; k < frames; ++k) {
-    edgetrack_count_begin();
+    if (!per_step) edgetrack_count_begin();
     const FrameResult r = tracker.value().track(images[k].pixels.data());
-    edgetrack_count_end();
+    if (!per_step) edgetrack_count_end();
     const Vec3 d = camera_position(r.camera_from_model) - camera_position(truth[k]);
     const double error_mm =  // in double: squares of sub-millimetre values underflow in fixed point
         1000 * std::hypot(static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z));
-    std::printf("frame %d %lld %lld %lld %lld %d %d %d %.4f %d %.4f\n", k, static_cast<long long>(r.step_ns[0]),
+    std::printf("frame %d %lld %lld %lld %lld %d %d %d %.4f %d %.4f %u\n", k, static_cast<long long>(r.step_ns[0]),
                 static_cast<long long>(r.step_ns[1]), static_cast<long long>(r.step_ns[2]),
                 static_cast<long long>(r.step_ns[3]), r.points_sampled, r.points_matched, r.pose.outliers,
-                static_cast<double>(r.pose.end_rms), r.pose.evaluations, error_mm);
+                static_cast<double>(r.pose.end_rms), r.pose.evaluations, error_mm, r.grey_pixels);
   }
   return 0;
 }
