@@ -66,22 +66,26 @@ void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned
 
 void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top,
                                   int left, int bottom, int right) {
+  RGB565ToGrey(src.bitmap, dest, top, left, bottom, right);
+}
+
+unsigned int vpImageConvert::RGB565ToGrey(const uint16_t* src, vpImage<unsigned char>& dest, int top, int left,
+                                          int bottom, int right) {
+  const int width = static_cast<int>(dest.getWidth());
   top = std::max(top, 0);
   left = std::max(left, 0);
-  bottom = std::min(bottom, static_cast<int>(src.getHeight()));
-  right = std::min(right, static_cast<int>(src.getWidth()));
-  if (left >= right) return;
+  bottom = std::min(bottom, static_cast<int>(dest.getHeight()));
+  right = std::min(right, width);
+  if (left >= right || top >= bottom) return 0;
   for (int i = top; i < bottom; ++i) {
-    RGB565ToGrey(src[i] + left, dest[i] + left, static_cast<unsigned int>(right - left));
+    RGB565ToGrey(src + i * width + left, dest[i] + left, static_cast<unsigned int>(right - left));
   }
+  return static_cast<unsigned int>((bottom - top) * (right - left));
 }
 
 void vpGreyOnDemand::setFrame(const vpImage<uint16_t>& src) {
-  setFrame(src.bitmap, src.getHeight(), src.getWidth());
-}
-
-void vpGreyOnDemand::setFrame(const uint16_t* pixels, unsigned int rows, unsigned int cols) {
-  src_ = pixels;
+  src_ = src.bitmap;
+  const unsigned int rows = src.getHeight(), cols = src.getWidth();
   if (grey_.getHeight() != rows || grey_.getWidth() != cols) {
     grey_.resize(rows, cols);
     tiles_down_ = (static_cast<int>(rows) + kTile - 1) / kTile;
@@ -108,12 +112,7 @@ void vpGreyOnDemand::require(int top, int left, int bottom, int right) {
       if (stamp[tj] == frame_) continue;
       stamp[tj] = frame_;
       const int i0 = ti * kTile, j0 = tj * kTile;
-      const int i1 = std::min(i0 + kTile, static_cast<int>(grey_.getHeight()));
-      const int j1 = std::min(j0 + kTile, static_cast<int>(grey_.getWidth()));
-      const unsigned int width = grey_.getWidth();
-      for (int i = i0; i < i1; ++i)
-        vpImageConvert::RGB565ToGrey(src_ + i * width + j0, grey_[i] + j0, static_cast<unsigned int>(j1 - j0));
-      converted_ += static_cast<unsigned int>((i1 - i0) * (j1 - j0));
+      converted_ += vpImageConvert::RGB565ToGrey(src_, grey_, i0, j0, i0 + kTile, j0 + kTile);
     }
   }
 }

@@ -16,14 +16,13 @@
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
 #include "visp3/core/vpImage.h"
-#include "visp3/core/vpImageConvert.h"
 #include "visp3/me/vpMe.h"
 
 namespace edgetrack {
 
 /// How the grey step turns the RGB565 frame into the grey image the moving edges read.
 enum class GreyScaling {
-  kOnDemand,   ///< only the 8x8 tiles the control points' searches read (me_search_box.h)
+  kOnDemand,   ///< only the boxes the control points' searches read (me_search_box.h)
   kWholeFrame  ///< every pixel, as the paper does
 };
 
@@ -112,8 +111,8 @@ class Tracker {
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
   StepObserver* step_observer_ = nullptr;
-  vpImage<unsigned char> grey_;  ///< the whole-frame grey image
-  vpGreyOnDemand grey_on_demand_;
+  /// The grey frame; on demand, only the current frame's search boxes are up to date.
+  vpImage<unsigned char> grey_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
 };

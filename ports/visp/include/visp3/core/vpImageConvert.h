@@ -46,6 +46,10 @@ class vpImageConvert {
   /// `dest` must already have the size of `src`.
   static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top, int left,
                            int bottom, int right);
+  /// The same from a raw row-major frame of dest's size (a camera buffer, no copy); returns the
+  /// number of pixels converted.
+  static unsigned int RGB565ToGrey(const uint16_t* src, vpImage<unsigned char>& dest, int top, int left,
+                                   int bottom, int right);
 };
 
 /// A grey image filled from one RGB565 frame on demand, in square tiles of kTile pixels:
@@ -58,8 +62,6 @@ class vpGreyOnDemand {
 
   /// Starts a frame; `src` must stay alive and unchanged until the next setFrame().
   void setFrame(const vpImage<uint16_t>& src);
-  /// The same for a raw row-major frame of rows x cols pixels (a camera buffer, no copy).
-  void setFrame(const uint16_t* pixels, unsigned int rows, unsigned int cols);
   /// Makes rows [top, bottom) x columns [left, right) (clipped to the frame) valid in grey().
   void require(int top, int left, int bottom, int right);
   /// The grey frame: valid only where require() was called since setFrame().
