@@ -9,6 +9,7 @@ packages=(
   libcminpack-dev libeigen3-dev              # upstream MINPACK and Eigen's LM, for comparisons
   libvisp-dev visp-images-data               # upstream ViSP 3.5 and its real image sequences
   libopencv-dev libosmesa6-dev               # host image/video I/O and offscreen GL
+  libx11-dev xvfb xauth xdotool              # track --init-click: display check; its test on a virtual display
 )
 
 missing=()

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "args.h"
+#include "click_init.h"
 #include "commands.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
@@ -18,6 +19,7 @@
 #include "overlay.h"
 #include "pose_from_points.h"
 #include "pose_table.h"
+#include "visibility.h"
 
 using edgetrack::Error;
 using edgetrack::PinholeCamera;
@@ -28,7 +30,8 @@ namespace edgetrack_app {
 namespace {
 
 const char* const kSynopsis =
-    "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt) --images PATTERN|DIR|VIDEO [--first N] [--last N] "
+    "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt | --init-click I.init "
+    "[--save-clicks P.txt] [--save-pose P.pos]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
     "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config ME.xml]";
 
 /// Per-step totals over a run, for the Table 1 summary.
@@ -84,6 +87,10 @@ int track_main(int argc, char** argv) {
       {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
       {"--init", true, "ViSP .init file of 3D points, with --init-points: initial pose from points"},
       {"--init-points", true, "image positions of the .init points, one 'u v' line each (pixels)"},
+      {"--init-click", true, "ViSP .init file whose points are clicked on the first frame in a window (host, display)"},
+      {"--save-clicks", true, "with --init-click: write the clicked positions (an --init-points file)"},
+      {"--save-pose", true, "with --init-click: write the accepted initial pose (a .pos file for --init-pose)"},
+      {"--visibility", true, "Edge-ID renderer: soft (portable, the default) or gl (OSMesa, host)"},
       {"--images", true, "printf pattern (seq/frame%04d.pgm), directory, or video file (host)"},
       {"--camera-device", true, "track a live camera (host) instead of --images"},
       {"--first", true, "first frame number"},
@@ -105,7 +112,10 @@ int track_main(int argc, char** argv) {
     return 0;
   }
   const bool from_points = a.has("--init") && a.has("--init-points");
-  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") == from_points) || (!a.has("--images") && !a.has("--camera-device"))) {
+  const bool clicked = a.has("--init-click");
+  const bool saves = a.has("--save-clicks") || a.has("--save-pose");
+  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + from_points + clicked != 1) ||
+      (saves && !clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
     std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
     return 2;
   }
@@ -149,14 +159,20 @@ int track_main(int argc, char** argv) {
                                 " does not match the camera's " + std::to_string(camera_read.value().width) + "x" +
                                 std::to_string(camera_read.value().height) + " (" + a.text("--camera") + ")"});
   const PinholeCamera camera = downscaled(camera_read.value(), factor.value());
-  const std::string init_source = from_points ? a.text("--init-points") : a.text("--init-pose");
+  const std::string init_source =
+      from_points ? a.text("--init-points") : clicked ? a.text("--init-click") : a.text("--init-pose");
   auto initial = from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), camera_read.value())
+                 : clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
+                                                  frame.image, camera_read.value(), model.value())
                              : edgetrack::read_pos(a.text("--init-pose"));
   if (!initial.ok()) return report("track", initial.error());
   auto in_front = check_in_front(model.value(), initial.value(), init_source);
   if (!in_front.ok()) return report("track", in_front.error());
+  auto edge_id_source = make_edge_id_source(a.text("--visibility", "soft"), camera);
+  if (!edge_id_source.ok()) return report("track", edge_id_source.error()) + 1;
   auto tracker = edgetrack::Tracker::create(model.value(), camera, initial.value(), params);
   if (!tracker.ok()) return report("track", {init_source, 0, tracker.error().message});
+  tracker.value().set_edge_id_source(edge_id_source.value().get());
 
   // Outputs.
   std::unique_ptr<PoseTableWriter> poses;

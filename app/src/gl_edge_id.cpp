@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "gl_renderer.h"
+#include "visibility.h"
 
 using edgetrack::Error;
 using edgetrack::Result;
@@ -94,6 +95,20 @@ std::vector<uint16_t> GlEdgeIdBuffer::draw_colours(const std::vector<edgetrack::
   glEnd();
   glFinish();
   return pixels_;
+}
+
+void GlEdgeIdSource::draw(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
+                          edgetrack::EdgeIdBuffer& out) {
+  gl_->render(model, camera_from_model);
+  // No flip: load_pinhole_projection sends image row v to GL row v, and OSMesa stores GL's
+  // bottom row first, so the buffer already starts with image row 0 as assign() wants.
+  out.assign(gl_->pixels().data());
+}
+
+Result<std::unique_ptr<edgetrack::EdgeIdSource>> make_gl_edge_id_source(const edgetrack::PinholeCamera& camera) {
+  auto gl = GlEdgeIdBuffer::create(camera);
+  if (!gl.ok()) return gl.error();
+  return std::unique_ptr<edgetrack::EdgeIdSource>(new GlEdgeIdSource(std::move(gl).value()));
 }
 
 }  // namespace edgetrack_app

@@ -2,8 +2,8 @@
 /// Edge-ID through real GL, as the paper did it (section 3.4), on the host with OSMesa: the
 /// model's faces fill the depth buffer, its edges are drawn with the depth test (hidden-line
 /// removal) into a 16-bit RGB565 colour buffer, each in the colour of its index, and read back.
-/// Used to check the portable Edge-ID against GL and to measure the colour approximation of
-/// the naive and the 8-level codes.
+/// Used by `track --visibility gl` (GlEdgeIdSource), to check the portable Edge-ID against GL
+/// and to measure the colour approximation of the naive and the 8-level codes.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +15,7 @@
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/tracker.h"
 
 namespace edgetrack_app {
 
@@ -38,6 +39,9 @@ class GlEdgeIdBuffer {
   /// pixel (0, 0), and returns the pixels read back. At most width * height colours.
   std::vector<uint16_t> draw_colours(const std::vector<edgetrack::Rgb888>& colours);
 
+  /// The RGB565 image of the last render, width * height pixels, image row 0 first.
+  const std::vector<uint16_t>& pixels() const { return pixels_; }
+
  private:
   explicit GlEdgeIdBuffer(const edgetrack::PinholeCamera& camera);
   void make_current();
@@ -45,6 +49,18 @@ class GlEdgeIdBuffer {
   edgetrack::PinholeCamera camera_;
   void* context_ = nullptr;
   std::vector<uint16_t> pixels_;
+};
+
+/// The tracker's Edge-ID drawn by GL (`track --visibility gl`): each frame the GL image is
+/// copied into the tracker's EdgeIdBuffer, whose visibility test then reads it.
+class GlEdgeIdSource : public edgetrack::EdgeIdSource {
+ public:
+  explicit GlEdgeIdSource(std::unique_ptr<GlEdgeIdBuffer> gl) : gl_(std::move(gl)) {}
+  void draw(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
+            edgetrack::EdgeIdBuffer& out) override;
+
+ private:
+  std::unique_ptr<GlEdgeIdBuffer> gl_;
 };
 
 }  // namespace edgetrack_app

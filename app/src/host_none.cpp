@@ -2,10 +2,12 @@
 /// What the host-only parts become in builds without OpenCV and OSMesa (the ARM target): PPM is
 /// written with our own writer; other formats, video, plots and the OSMesa commands are refused
 /// with a message naming the file.
+#include "click_init.h"
 #include "commands.h"
 #include "host_io.h"
 #include "overlay.h"
 #include "plots.h"
+#include "visibility.h"
 
 using edgetrack::Error;
 using edgetrack::Result;
@@ -43,5 +45,16 @@ Result<bool> write_plots(const std::string& dir, const Evaluation&) {
 std::vector<Command> host_commands() { return {}; }
 
 Result<std::unique_ptr<Overlay>> make_overlay(const edgetrack::PinholeCamera& camera) { return make_soft_overlay(camera); }
+
+Result<std::unique_ptr<edgetrack::EdgeIdSource>> make_gl_edge_id_source(const edgetrack::PinholeCamera&) {
+  return Error{"", 0, "--visibility gl needs the host build (OSMesa); this build has --visibility soft only"};
+}
+
+Result<edgetrack::Se3> click_initial_pose(const ClickInitOptions& options, const RgbImage&, const edgetrack::PinholeCamera&,
+                                          const edgetrack::EdgeModel&) {
+  return Error{options.init_path, 0,
+               "--init-click needs the host build (a window); give the points' image positions with --init I.init "
+               "--init-points P.txt instead"};
+}
 
 }  // namespace edgetrack_app

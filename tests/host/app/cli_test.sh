@@ -11,38 +11,11 @@ mbt=/usr/share/visp-images-data/ViSP-images/mbt
 data=$(cd "$(dirname "$0")/../../../data" && pwd)
 rm -rf "$work" && mkdir -p "$work"
 
-fail() { echo "FAIL ($name): $*"; exit 1; }
-
-# expect_error TEXT COMMAND...: non-zero exit, exactly one line on stderr, containing TEXT.
-expect_error() {
-  local text=$1
-  shift
-  "$@" >"$work/stdout" 2>"$work/stderr"
-  local status=$?
-  cat "$work/stderr"
-  [ "$status" -ne 0 ] || fail "exit status 0"
-  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "expected one line on stderr"
-  grep -qF -- "$text" "$work/stderr" || fail "stderr lacks '$text'"
-  echo "ok: exit $status, message names the problem"
-}
+# fail, expect_error, less, check_poses
+source "$(dirname "$0")/cli_common.sh"
 
 # field KEY: the value of KEY=... on the eval: line of $work/eval.txt.
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$work/eval.txt"; }
-# less A B: A < B as numbers.
-less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
-
-# check_poses FILE ROWS MIN_POINTS: the poses file has ROWS rows, none lost, and on average at
-# least MIN_POINTS matched points per frame.
-check_poses() {
-  local rows lost points
-  rows=$(($(wc -l <"$1") - 1))
-  lost=$(awk -F, 'NR > 1 && $10 != "ok"' "$1" | wc -l)
-  points=$(awk -F, 'NR > 1 { s += $8; n++ } END { printf "%.1f", s / n }' "$1")
-  echo "$1: $rows frames, $lost lost, $points points per frame"
-  [ "$rows" -eq "$2" ] || fail "expected $2 frames"
-  [ "$lost" -eq 0 ] || fail "frames lost"
-  less "$(($3 - 1)).999" "$points" || fail "fewer than $3 points per frame"
-}
 
 # as_truth POSES TRUTH: a poses file as a truth file (its first seven columns).
 as_truth() { { echo "frame,tx,ty,tz,tux,tuy,tuz"; tail -n +2 "$1" | cut -d, -f1-7; } >"$2"; }

@@ -1,0 +1,34 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# Helpers of the command-line tests (sourced by cli_test.sh and track_host_test.sh); they use
+# the caller's $name (the case) and $work (its directory).
+
+fail() { echo "FAIL ($name): $*"; exit 1; }
+
+# expect_error TEXT COMMAND...: non-zero exit, exactly one line on stderr, containing TEXT.
+expect_error() {
+  local text=$1
+  shift
+  "$@" >"$work/stdout" 2>"$work/stderr"
+  local status=$?
+  cat "$work/stderr"
+  [ "$status" -ne 0 ] || fail "exit status 0"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "expected one line on stderr"
+  grep -qF -- "$text" "$work/stderr" || fail "stderr lacks '$text'"
+  echo "ok: exit $status, message names the problem"
+}
+
+# less A B: A < B as numbers.
+less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
+
+# check_poses FILE ROWS MIN_POINTS: the poses file has ROWS rows, none lost, and on average at
+# least MIN_POINTS matched points per frame.
+check_poses() {
+  local rows lost points
+  rows=$(($(wc -l <"$1") - 1))
+  lost=$(awk -F, 'NR > 1 && $10 != "ok"' "$1" | wc -l)
+  points=$(awk -F, 'NR > 1 { s += $8; n++ } END { printf "%.1f", s / n }' "$1")
+  echo "$1: $rows frames, $lost lost, $points points per frame"
+  [ "$rows" -eq "$2" ] || fail "expected $2 frames"
+  [ "$lost" -eq 0 ] || fail "frames lost"
+  less "$(($3 - 1)).999" "$points" || fail "fewer than $3 points per frame"
+}
