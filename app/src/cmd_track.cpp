@@ -3,7 +3,9 @@
 /// and the Table 1 summary of the run.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -58,6 +60,27 @@ void print_table1(const RunTotals& totals) {
               total > 0 ? 1000 * n / total : 0.0, totals.points_matched / n, totals.points_sampled / n, totals.lost);
 }
 
+/// Whether a frame's pose can be trusted (docs/APP.md, "lost"): the pose step solved, at least
+/// half of the visible control points were matched and kept, and the matches sit closer to the
+/// solved pose than chance would put them. A site on an image of no relation to the model
+/// (noise, background) takes whichever pixel of its +-range search responds most, so its
+/// distance to the pose is spread over the range and their median is about half of it; on a
+/// tracked frame it stays under a pixel or a small share of the range.
+bool frame_trusted(const edgetrack::FrameResult& result, const std::vector<edgetrack::EdgeMatch>& matches,
+                   const PinholeCamera& camera, const edgetrack::TrackerParams& params) {
+  if (!result.pose.solved || result.points_matched < params.pose.min_points) return false;
+  if (2 * result.points_matched < result.points_sampled) return false;
+  std::vector<double> distances;
+  distances.reserve(matches.size());
+  for (const edgetrack::EdgeMatch& m : matches)
+    distances.push_back(std::fabs(static_cast<double>(
+        dot(m.point.normal, camera.project(result.camera_from_model * m.point.point_in_model) - m.found))));
+  const size_t mid = distances.size() / 2;
+  std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(mid), distances.end());
+  const double chance_share = 0.4, floor_px = 1.0;
+  return distances[mid] <= std::max(chance_share * params.me.getRange(), floor_px);
+}
+
 /// The camera for a frame `factor` times smaller: the same rays land at (u + 0.5) / factor - 0.5.
 PinholeCamera downscaled(const PinholeCamera& camera, int factor) {
   if (factor <= 1) return camera;
@@ -96,11 +119,12 @@ int track_main(int argc, char** argv) {
       {"--first", true, "first frame number"},
       {"--last", true, "last frame number (inclusive)"},
       {"--raw-size", true, "WIDTHxHEIGHT of raw RGB565 frames (.rgb565, .raw)"},
-      {"--downscale", true, "track frames N times smaller (640x480 -> QVGA with 2); the camera follows"},
+      {"--downscale", true, "track frames N times smaller (640x480 -> QVGA with 2); the camera, sample step and range follow"},
       {"--poses", true, "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status)"},
       {"--overlay", true, "write overlay frames (wireframe and cone) into this directory"},
       {"--video", true, "write the overlay as a video (host)"},
-      {"--config", true, "ViSP XML whose <ecm> block sets the moving-edge range and sample step"},
+      {"--config", true, "ViSP XML whose <ecm> block sets the moving-edge threshold, mask size and number, range and "
+                         "sample step (mu1/mu2 are read, not used: no contrast is kept between frames)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -138,12 +162,18 @@ int track_main(int argc, char** argv) {
   if (a.has("--config")) {
     auto ecm = read_ecm_config(a.text("--config"));
     if (!ecm.ok()) return report("track", ecm.error());
-    if (ecm.value().range > 0) params.me.setRange(static_cast<unsigned>(ecm.value().range));
-    if (ecm.value().sample_step > 0) params.sampling.step = real(ecm.value().sample_step);
-    const EcmConfig& c = ecm.value();
-    if (c.threshold >= 0 || c.mu1 >= 0 || c.mu2 >= 0 || c.mask_size >= 0 || c.mask_number >= 0)
-      std::fprintf(stderr, "note: %s: the mask, threshold and mu1/mu2 of <ecm> are not applied (the tracker takes "
-                   "the range and the sample step)\n", a.text("--config").c_str());
+    auto applied = apply_ecm_config(ecm.value(), a.text("--config"), params);
+    if (!applied.ok()) return report("track", applied.error());
+    if (ecm.value().mu1 >= 0 || ecm.value().mu2 >= 0)
+      std::fprintf(stderr, "note: %s: <mu1>/<mu2> are not used: sites are re-sampled every frame, so there is no "
+                   "previous contrast to compare with\n", a.text("--config").c_str());
+  }
+  // The sample step and the range (defaults or <ecm>) are pixels of the input frames, like the
+  // camera: scaled with it, the smaller frames get the same control points on the object and a
+  // search that reaches no farther into the scene (rounded down, at least 1 pixel).
+  if (factor.value() > 1) {
+    params.sampling.step = params.sampling.step / real(factor.value());
+    params.me.setRange(std::max(1u, params.me.getRange() / static_cast<unsigned>(factor.value())));
   }
   auto source = open_frame_source(source_options);
   if (!source.ok()) return report("track", source.error());
@@ -203,6 +233,7 @@ int track_main(int argc, char** argv) {
   const std::string overlay_ext = host_io_available() ? "png" : "ppm";
 
   RunTotals totals;
+  Se3 trusted_pose = initial.value();  // the pose of the last frame not lost
   const bool progress = !a.has("--quiet");
   const bool terminal = isatty(2) != 0;
   const auto start = std::chrono::steady_clock::now();
@@ -221,20 +252,29 @@ int track_main(int argc, char** argv) {
       totals.step_ms[s] += result.step_ns[s] / 1e6;
       ms += result.step_ns[s] / 1e6;
     }
-    const bool lost = !result.pose.solved || result.points_matched < params.pose.min_points;
+    const bool lost = !frame_trusted(result, tracker.value().matches(), camera, params);
+    if (lost) {
+      // The next frame starts from the last trusted pose, not from one fitted to noise.
+      auto restarted = edgetrack::Tracker::create(model.value(), camera, trusted_pose, params);
+      if (!restarted.ok()) return report("track", {frame.name, 0, restarted.error().message});
+      tracker = std::move(restarted);
+      tracker.value().set_edge_id_source(edge_id_source.value().get());
+    } else {
+      trusted_pose = result.camera_from_model;
+    }
     ++totals.frames;
     totals.lost += lost ? 1 : 0;
     totals.points_matched += result.points_matched;
     totals.points_sampled += result.points_sampled;
     if (poses) {
-      PoseRow row = pose_row(frame.index, result.camera_from_model);
+      PoseRow row = pose_row(frame.index, trusted_pose);
       row.points = result.points_matched;
       row.ms = ms;
       row.lost = lost;
       poses->write(row);
     }
     if (overlay) {
-      const RgbImage drawn = overlay->draw(image, model.value(), result.camera_from_model, cone);
+      const RgbImage drawn = overlay->draw(image, model.value(), trusted_pose, cone);
       if (!overlay_dir.empty()) {
         char name[64];
         std::snprintf(name, sizeof name, "/overlay%04d.", frame.index);

@@ -80,4 +80,22 @@ Result<EcmConfig> read_ecm_config(const std::string& path) {
   return config;
 }
 
+Result<bool> apply_ecm_config(const EcmConfig& config, const std::string& path, edgetrack::TrackerParams& params) {
+  // Limits: a mask needs a centre and neighbours and at most one orientation per degree
+  // (upstream's angle step is 180 / n_mask, whole degrees); a range of 0 searches nothing.
+  if (config.mask_size >= 0 && (config.mask_size < 3 || config.mask_size > 15))
+    return Error{path, 0, "<mask><size> must be 3..15 pixels, not " + std::to_string(config.mask_size)};
+  if (config.mask_number >= 0 && (config.mask_number < 1 || config.mask_number > 180))
+    return Error{path, 0, "<mask><nb_mask> must be 1..180, not " + std::to_string(config.mask_number)};
+  if (config.range == 0) return Error{path, 0, "<range><tracking> must be at least 1 pixel"};
+  if (config.threshold == 0) return Error{path, 0, "<contrast><edge_threshold> must be positive"};
+  if (config.sample_step == 0) return Error{path, 0, "<sample><step> must be positive"};
+  if (config.mask_size > 0) params.me.setMaskSize(static_cast<unsigned>(config.mask_size));
+  if (config.mask_number > 0) params.me.setMaskNumber(static_cast<unsigned>(config.mask_number));
+  if (config.range > 0) params.me.setRange(static_cast<unsigned>(config.range));
+  if (config.threshold > 0) params.me.setThreshold(real(config.threshold));
+  if (config.sample_step > 0) params.sampling.step = real(config.sample_step);
+  return true;
+}
+
 }  // namespace edgetrack_app

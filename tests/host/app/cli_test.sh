@@ -20,6 +20,46 @@ field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$work/eval.txt"; }
 # as_truth POSES TRUTH: a poses file as a truth file (its first seven columns).
 as_truth() { { echo "frame,tx,ty,tz,tux,tuy,tuz"; tail -n +2 "$1" | cut -d, -f1-7; } >"$2"; }
 
+# vertex_offset A.csv B.csv: per frame, the mean distance in 640x480 pixels between the corners of
+# mbt/cube.cao projected with the camera of cube.xml at the pose of A and at the pose of B (the
+# overlay's disagreement); prints the largest over the frames and the frame it is at.
+vertex_offset() {
+  local camera
+  camera=$(sed -n 's:.*<\(px\|py\|u0\|v0\)>\([^<]*\)<.*:\2:p' "$mbt/cube.xml" | tr '\n' ' ')
+  paste -d, "$1" "$2" | awk -F, -v camera="$camera" '
+    function project(t1, t2, t3, w1, w2, w3, x, y, z,   th, k1, k2, k3, c, s, C, X, Y, Z) {
+      th = sqrt(w1 * w1 + w2 * w2 + w3 * w3)
+      if (th > 1e-12) { k1 = w1 / th; k2 = w2 / th; k3 = w3 / th } else { k1 = 1; k2 = 0; k3 = 0 }
+      c = cos(th); s = sin(th); C = 1 - c
+      X = (c + k1 * k1 * C) * x + (k1 * k2 * C - k3 * s) * y + (k1 * k3 * C + k2 * s) * z + t1
+      Y = (k2 * k1 * C + k3 * s) * x + (c + k2 * k2 * C) * y + (k2 * k3 * C - k1 * s) * z + t2
+      Z = (k3 * k1 * C - k2 * s) * x + (k3 * k2 * C + k1 * s) * y + (c + k3 * k3 * C) * z + t3
+      U = u0 + px * X / Z; V = v0 + py * Y / Z
+    }
+    BEGIN { split(camera, k, " "); u0 = k[1]; v0 = k[2]; px = k[3]; py = k[4] }
+    NR > 1 {
+      d = 0
+      for (i = 0; i < 8; i++) {
+        x = (i % 2) ? -0.084 : 0; y = (int(i / 2) % 2) ? 0.084 : 0; z = (i >= 4) ? 0.084 : 0
+        project($2, $3, $4, $5, $6, $7, x, y, z); ua = U; va = V
+        project($12, $13, $14, $15, $16, $17, x, y, z)
+        d += sqrt((ua - U)^2 + (va - V)^2) / 8
+      }
+      if (d > worst) { worst = d; at = $1 }
+    }
+    END { printf "%.2f %d\n", worst, at }'
+}
+
+# noisy_sequence DIR: mbt/cube frames 0-19 with frame 10 replaced by uniform noise and frame 12
+# by a flat grey image.
+noisy_sequence() {
+  mkdir -p "$1"
+  for i in $(seq 0 19); do ln -sf "$mbt/cube/image$(printf %04d "$i").pgm" "$1/image$(printf %04d "$i").pgm"; done
+  rm -f "$1/image0010.pgm" "$1/image0012.pgm"
+  { printf 'P5\n640 480\n255\n'; LC_ALL=C awk 'BEGIN { srand(7); for (i = 0; i < 640 * 480; i++) printf "%c", int(rand() * 256) }'; } >"$1/image0010.pgm"
+  { printf 'P5\n640 480\n255\n'; head -c $((640 * 480)) /dev/zero | tr '\0' '\200'; } >"$1/image0012.pgm"
+}
+
 track_cube() {
   "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm" --last 39 --quiet "$@"
 }
@@ -80,6 +120,73 @@ case $name in
     echo "mean distance between the cube positions: $offset mm"
     less "$offset" 3.0 || fail "QVGA and 640x480 cube positions differ by 3 mm or more"
     less "$(field rotation_deg)" 2.0 || fail "QVGA and 640x480 orientations differ by 2 degrees or more" ;;
+  mbt_cube_all_frames_qvga_on_640x480)
+    # All 218 frames at 640x480 and at QVGA: none lost, and the QVGA pose puts the cube's corners
+    # within 8 px (640x480 pixels) of where the 640x480 pose does in every frame. Before the step
+    # and range were scaled with --downscale, QVGA drifted off the cube from frame ~190 (26 px).
+    track_cube --init-pose "$mbt/cube.0.pos" --last 217 --poses "$work/full.csv" || fail "track failed"
+    track_cube --init-pose "$mbt/cube.0.pos" --last 217 --downscale 2 --poses "$work/qvga.csv" ||
+      fail "track --downscale 2 failed"
+    check_poses "$work/full.csv" 218 40
+    check_poses "$work/qvga.csv" 218 40
+    read -r worst at <<<"$(vertex_offset "$work/full.csv" "$work/qvga.csv")"
+    echo "largest mean corner offset QVGA vs 640x480: $worst px at frame $at"
+    less "$worst" 8.0 || fail "the QVGA pose leaves the 640x480 one by 8 px or more (frame $at)" ;;
+  mbt_cube_config_applied)
+    # cube.xml's <ecm>: step 4 samples about 2.5 times the points of the default 10 px, and the
+    # run stays with the default one; an edge threshold no edge reaches loses every frame.
+    track_cube --init-pose "$mbt/cube.0.pos" --poses "$work/default.csv" || fail "track failed"
+    track_cube --init-pose "$mbt/cube.0.pos" --config "$mbt/cube.xml" --poses "$work/config.csv" ||
+      fail "track --config failed"
+    check_poses "$work/config.csv" 40 110
+    read -r worst at <<<"$(vertex_offset "$work/default.csv" "$work/config.csv")"
+    echo "largest mean corner offset with cube.xml vs defaults: $worst px at frame $at"
+    less "$worst" 4.0 || fail "cube.xml's settings move the pose by 4 px or more (frame $at)"
+    sed 's:<edge_threshold>5000<:<edge_threshold>100000000<:' "$mbt/cube.xml" >"$work/blind.xml"
+    track_cube --init-pose "$mbt/cube.0.pos" --config "$work/blind.xml" --poses "$work/blind.csv" ||
+      fail "track --config blind.xml failed"
+    lost=$(awk -F, 'NR > 1 && $10 == "lost" && $8 == 0' "$work/blind.csv" | wc -l)
+    echo "threshold 1e8: $lost of 40 frames lost with no point matched"
+    [ "$lost" -eq 40 ] || fail "the edge threshold of --config is not applied" ;;
+  error_bad_config)
+    sed 's:<size>5<:<size>1<:' "$mbt/cube.xml" >"$work/bad.xml"
+    expect_error "$work/bad.xml: <mask><size> must be 3..15 pixels, not 1" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --config "$work/bad.xml" ;;
+  lost_on_noise_and_blank_frames)
+    # A frame of noise (every site finds an edge, at chance distances) and a flat frame (no
+    # edge) are lost, at 640x480 and QVGA; the frames around them are not, and tracking resumes
+    # from the last trusted pose: frame 19 within 1 mm of the clean run's.
+    noisy_sequence "$work/seq"
+    for scale in 1 2; do
+      track_cube --init-pose "$mbt/cube.0.pos" --last 19 --downscale $scale --poses "$work/clean$scale.csv" ||
+        fail "track failed"
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+        --images "$work/seq/image%04d.pgm" --downscale $scale --poses "$work/noisy$scale.csv" --quiet ||
+        fail "track failed"
+      lost=$(awk -F, 'NR > 1 && $10 == "lost" { printf "%s%d", sep, $1; sep = " " }' "$work/noisy$scale.csv")
+      echo "downscale $scale: frames lost: $lost"
+      [ "$lost" = "10 12" ] || fail "expected frames 10 and 12 lost, not '$lost'"
+      as_truth "$work/clean$scale.csv" "$work/clean_truth.csv"
+      { head -n 1 "$work/noisy$scale.csv"; tail -n 1 "$work/noisy$scale.csv"; } >"$work/last.csv"
+      "$edgetrack" eval --poses "$work/last.csv" --truth "$work/clean_truth.csv" | tee "$work/eval.txt" ||
+        fail "eval failed"
+      less "$(field distance_mm)" 1.0 || fail "frame 19 is 1 mm or more from the clean run"
+    done ;;
+  lost_when_object_leaves)
+    # A synthetic cube still for 10 frames, then jumping 6 mm (~11 px) per frame out of the view,
+    # faster than the moving edges search: the tracker stays behind on the cluttered background
+    # and every frame from the first jump on is lost, the ten before it are not.
+    awk 'BEGIN { print "frame,tx,ty,tz,tux,tuy,tuz"
+                 for (i = 0; i < 30; i++) printf "%d,%.4f,0.004,0.16,0.62,-0.62,0.21\n", i, i < 10 ? 0 : 0.006 * (i - 9) }' \
+      >"$work/trajectory.csv"
+    "$edgetrack" synth --out "$work/syn" --trajectory "$work/trajectory.csv" --frames 30 >/dev/null || fail "synth failed"
+    "$edgetrack" track --model "$data/models/cube60.cao" --camera "$work/syn/camera.xml" \
+      --init-pose "$work/syn/first.pos" --images "$work/syn/frames/frame%04d.ppm" --poses "$work/poses.csv" --quiet ||
+      fail "track failed"
+    status=$(awk -F, 'NR > 1 { printf "%s", ($10 == "lost") == ($1 >= 10) ? "." : "x" }' "$work/poses.csv")
+    echo "frames as expected (. yes, x no): $status"
+    [ "$status" = "$(printf '.%.0s' $(seq 30))" ] || fail "expected frames 0-9 ok and 10-29 lost" ;;
   mbt_cube_init_from_points)
     # The .init points where cube.0.pos projects them, rounded to whole pixels as clicks are:
     # tracking from there matches tracking from cube.0.pos within 2 mm after 40 frames.
