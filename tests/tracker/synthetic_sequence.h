@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The synthetic sequences of the tracking tests and the Table 1 benchmark: the paper's set-up
-/// (QVGA, px = py = 300, a model about 150 mm away, 60 frames, smooth motion of up to about
+/// (QVGA, px = py = 220, a model about 150 mm away, 60 frames, smooth motion of up to about
 /// 3 pixels per frame), rendered in-process by the test-image renderer.
 #pragma once
 
@@ -11,10 +11,11 @@
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/synthetic_trajectory.h"
 
 namespace edgetrack_test {
 
-/// The QVGA camera of the pose problems: px = py = 300, u0 = 160, v0 = 120.
+/// The QVGA camera of the sequences: px = py = 220, u0 = 160, v0 = 120 (the .cxx says why).
 edgetrack::PinholeCamera qvga_camera();
 
 enum class Scene { kCube, kWoodToy };
@@ -27,9 +28,5 @@ std::string model_path(Scene scene);
 
 /// The camera position in the model frame, -R^T t: what the paper's accuracy figures compare.
 edgetrack::Vec3 camera_position(const edgetrack::Se3& camera_from_model);
-
-/// Largest image displacement of any model vertex between consecutive poses, pixels.
-double largest_vertex_motion(const edgetrack::EdgeModel& model, const edgetrack::PinholeCamera& camera,
-                             const std::vector<edgetrack::Se3>& poses);
 
 }  // namespace edgetrack_test

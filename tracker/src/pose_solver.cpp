@@ -142,25 +142,25 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.solved = true;
   if (params.tukey_c <= real(0)) return solution;
 
-  std::vector<real> distances;
-  distances.reserve(matches.size());
-  for (const EdgeMatch& m : matches)
-    distances.push_back(fabs(dot(m.point.normal, camera.project(pose * m.point.point_in_model) - m.found)));
-  real c = params.tukey_c * real(1.4826) * median_of(distances);
-  if (c < params.tukey_floor) c = params.tukey_floor;
-  std::vector<real> weights(matches.size());  // square roots of Tukey's weights: 1 - (d / c)^2
-  for (size_t i = 0; i < matches.size(); ++i) {
-    const real u = distances[i] / c;
-    if (u >= real(1)) {
-      weights[i] = real(0);
-      matches[i].outlier = true;
-      ++solution.outliers;
-    } else {
-      weights[i] = real(1) - u * u;
+  std::vector<real> distances(matches.size()), weights(matches.size());
+  for (int round = 0; round < params.robust_rounds; ++round) {
+    for (size_t i = 0; i < matches.size(); ++i) {
+      const EdgeMatch& m = matches[i];
+      distances[i] = fabs(dot(m.point.normal, camera.project(pose * m.point.point_in_model) - m.found));
     }
+    real c = params.tukey_c * real(1.4826) * median_of(distances);
+    if (c < params.tukey_floor) c = params.tukey_floor;
+    solution.outliers = 0;
+    for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
+      const real u = distances[i] / c;
+      matches[i].outlier = u >= real(1);
+      weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
+      solution.outliers += matches[i].outlier;
+    }
+    if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
+    if (!solve_once(matches, weights, camera, pose, params, solution, pose)) break;
+    solution.camera_from_model = pose;
   }
-  if (matches.size() - static_cast<size_t>(solution.outliers) < needed) return solution;
-  if (solve_once(matches, weights, camera, pose, params, solution, pose)) solution.camera_from_model = pose;
   return solution;
 }
 

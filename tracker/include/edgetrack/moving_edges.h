@@ -13,13 +13,26 @@
 
 namespace edgetrack {
 
+/// How far the sub-pixel refinement reads from the site's pixel, in whole pixels, besides the
+/// mask around each read: along the image axis nearest to the normal (a climb of up to 2 pixels
+/// and the parabola's neighbour) and across it (the lines either side). me_search_box.h must
+/// cover these for the on-demand grey step.
+constexpr int kRefinementReachAlong = 3;
+constexpr int kRefinementReachAcross = 1;
+
 /// Runs vpMeSite::track at every control point: the site starts at the point's pixel with the
 /// normal angle alpha = atan2(n_y, n_x) and keeps the strongest edge within +-me.getRange()
 /// pixels that passes the likelihood threshold (no contrast test: sites are re-sampled every
-/// frame, so there is no previous contrast to compare with). The found pixel is then refined to
-/// sub-pixel precision by a parabola through the likelihoods of it and its two neighbours along
-/// the image axis nearest to the normal (not in ViSP, which keeps whole pixels). Returns only the
-/// matched points (state NO_SUPPRESSION).
+/// frame, so there is no previous contrast to compare with). The match is then refined to
+/// sub-pixel precision (not in ViSP, which keeps whole pixels): on the line of the image axis
+/// nearest to the normal through the site's pixel and on the two lines beside it, the edge's
+/// position is the likelihood's local maximum (climbing up to 2 pixels from the site's column
+/// or row) refined by a parabola through it and its two neighbours; the match is where the
+/// control point's normal crosses the polyline through those three positions (the middle one
+/// alone when a side line's peak is under half the middle one). Unlike the site's whole pixel,
+/// which jumps when a rounding-size move of the control point changes the truncated path, this
+/// moves continuously with the control point, so double and fixed-point builds agree. Returns
+/// only the matched points (state NO_SUPPRESSION).
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                                            const vpMe& me);
 
