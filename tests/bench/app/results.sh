@@ -63,18 +63,22 @@ row "wood toy, default" "host double" "$work/toy" "$models/wood_toy.cao" "$host_
 row "wood toy, default" "ARMv5TE S40.23 (QEMU)" "$work/toy" "$models/wood_toy.cao" "${arm_s40[@]}"
 echo
 echo "ViSP's real \`mbt/cube\` sequence (218 frames, its own model, camera and initial pose; no ground"
-echo "truth), host double, default parameters; QVGA is \`--downscale 2\` (frames and camera halved):"
+echo "truth), host double, with the default moving-edge parameters (10 px step, range 4) and with"
+echo "\`--config cube.xml\` (its <ecm> block: 4 px step, range 7, threshold 5000); QVGA is"
+echo "\`--downscale 2\` (frames, camera, step and range halved, the range rounded down):"
 echo
-echo "| size | frames | lost | points tracked/frame | points sampled/frame |"
-echo "|---|---:|---:|---:|---:|"
-for size in 640x480 QVGA; do
+echo "| size | settings | frames | lost | points tracked/frame | points sampled/frame |"
+echo "|---|---|---:|---:|---:|---:|"
+for run in "640x480 default" "QVGA default" "640x480 cube.xml" "QVGA cube.xml"; do
+  set -- $run
   extra=()
-  [ "$size" = QVGA ] && extra=(--downscale 2)
+  [ "$1" = QVGA ] && extra+=(--downscale 2)
+  [ "$2" = cube.xml ] && extra+=(--config "$mbt/cube.xml")
   "$host_double" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
-    --images "$mbt/cube/image%04d.pgm" --poses "$work/mbt_$size.csv" --quiet "${extra[@]}" >"$work/track.txt"
+    --images "$mbt/cube/image%04d.pgm" --poses "$work/mbt_$1_$2.csv" --quiet "${extra[@]}" >"$work/track.txt"
   sed -n 's/.*, \([0-9.]*\) points tracked of \([0-9.]*\) sampled per frame, \([0-9]*\) frames lost/\1 \2 \3/p' "$work/track.txt" |
-    awk -v size="$size" -v frames="$(($(wc -l <"$work/mbt_$size.csv") - 1))" \
-      '{ printf "| %s | %d | %d | %s | %s |\n", size, frames, $3, $1, $2 }'
+    awk -v size="$1" -v settings="$2" -v frames="$(($(wc -l <"$work/mbt_$1_$2.csv") - 1))" \
+      '{ printf "| %s | %s | %d | %d | %s | %s |\n", size, settings, frames, $3, $1, $2 }'
 done
 echo
 echo "Edge-ID through GL (\`edgetrack edgeid\`: OSMesa, faces in the depth buffer, edges depth-tested"
@@ -94,4 +98,4 @@ edgeid_row() {
 }
 edgeid_row "60 mm cube, default (truth)" --model "$models/cube60.cao" --camera "$work/paper/camera.xml" --poses "$work/paper/truth.csv"
 edgeid_row "wood toy, default (truth)" --model "$models/wood_toy.cao" --camera "$work/toy/camera.xml" --poses "$work/toy/truth.csv"
-edgeid_row "mbt/cube 640x480 (tracked)" --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --size 640x480 --poses "$work/mbt_640x480.csv"
+edgeid_row "mbt/cube 640x480 (tracked)" --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --size 640x480 --poses "$work/mbt_640x480_default.csv"
