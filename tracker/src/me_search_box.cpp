@@ -2,7 +2,6 @@
 /// The read box of one control point's moving-edge search.
 #include "edgetrack/me_search_box.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "edgetrack/moving_edges.h"
@@ -11,30 +10,32 @@ namespace edgetrack {
 
 PixelBox me_search_box(const ControlPoint& point, const vpMe& me) {
   using std::fabs;
-  // The site (moving_edges.cpp) steps from pixel - range * (sin a, cos a) to pixel + range *
-  // (sin a, cos a) with a = atan2(normal.y, normal.x) and truncates each candidate to whole
-  // pixels; the candidates' extremes are the truncated end points. Here sin a and cos a are
-  // replaced by the unit normal itself, which skips an atan2, a sine and a cosine per point
-  // (about 1900 guest instructions in S40.23). They differ by rounding only, range times that
-  // is far below a pixel, so each truncated end moves by at most one pixel: kSlack adds that
-  // pixel. The sub-pixel refinement then reads around the found pixel, kRefinementReachAlong
-  // pixels along the image axis nearest to the normal and kRefinementReachAcross across it
-  // (moving_edges.h; the same axis test as moving_edges.cpp).
-  constexpr int kSlack = 1;
-  const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
-  const int reach_x = kSlack + (along_x ? kRefinementReachAlong : kRefinementReachAcross);
-  const int reach_y = kSlack + (along_x ? kRefinementReachAcross : kRefinementReachAlong);
+  // The site (moving_edges.cpp) puts its candidates at pixel + k (cos a, sin a), |k| <= range,
+  // a = atan2(normal.y, normal.x), truncated to whole pixels, and convolves a mask_size mask
+  // whose top-left is half a mask before each. Here cos a and sin a are replaced by the unit
+  // normal, which skips an atan2, a sine and a cosine per point (about 1900 guest instructions
+  // in S40.23). The two differ by rounding only, a few units in the last place of `real`, far
+  // below kRounding, so pushing each end out by range * kRounding keeps every candidate inside.
+  constexpr real kRounding = real(1.0 / 1024);
   const int range = static_cast<int>(me.getRange());
   const int size = static_cast<int>(me.getMaskSize());
   const int half = (size - 1) >> 1;
-  const real di = range * point.normal.y, dj = range * point.normal.x;
-  const int i_a = static_cast<int>(point.pixel.y - di), i_b = static_cast<int>(point.pixel.y + di);
-  const int j_a = static_cast<int>(point.pixel.x - dj), j_b = static_cast<int>(point.pixel.x + dj);
+  const real di = range * (fabs(point.normal.y) + kRounding), dj = range * (fabs(point.normal.x) + kRounding);
   PixelBox box;
-  box.top = std::min(i_a, i_b) - half - reach_y;
-  box.bottom = std::max(i_a, i_b) - half + size + reach_y;
-  box.left = std::min(j_a, j_b) - half - reach_x;
-  box.right = std::max(j_a, j_b) - half + size + reach_x;
+  box.top = static_cast<int>(point.pixel.y - di) - half;
+  box.bottom = static_cast<int>(point.pixel.y + di) - half + size;
+  box.left = static_cast<int>(point.pixel.x - dj) - half;
+  box.right = static_cast<int>(point.pixel.x + dj) - half + size;
+  // The sub-pixel refinement also reads around the found pixel, kRefinementReachAlong pixels
+  // along the image axis nearest to the normal and kRefinementReachAcross across it
+  // (moving_edges.h; the same axis test as moving_edges.cpp).
+  const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
+  const int reach_x = along_x ? kRefinementReachAlong : kRefinementReachAcross;
+  const int reach_y = along_x ? kRefinementReachAcross : kRefinementReachAlong;
+  box.left -= reach_x;
+  box.right += reach_x;
+  box.top -= reach_y;
+  box.bottom += reach_y;
   return box;
 }
 
