@@ -174,11 +174,11 @@ case $name in
       less "$(field distance_mm)" 1.0 || fail "frame 19 is 1 mm or more from the clean run"
     done ;;
   lost_when_object_leaves)
-    # A synthetic cube still for 10 frames, then jumping 6 mm (~11 px) per frame out of the view,
+    # A synthetic cube still for 10 frames, then jumping 8 mm (~11 px) per frame out of the view,
     # faster than the moving edges search: the tracker stays behind on the cluttered background
     # and every frame from the first jump on is lost, the ten before it are not.
     awk 'BEGIN { print "frame,tx,ty,tz,tux,tuy,tuz"
-                 for (i = 0; i < 30; i++) printf "%d,%.4f,0.004,0.16,0.62,-0.62,0.21\n", i, i < 10 ? 0 : 0.006 * (i - 9) }' \
+                 for (i = 0; i < 30; i++) printf "%d,%.4f,0.004,0.16,0.62,-0.62,0.21\n", i, i < 10 ? 0 : 0.008 * (i - 9) }' \
       >"$work/trajectory.csv"
     "$edgetrack" synth --out "$work/syn" --trajectory "$work/trajectory.csv" --frames 30 >/dev/null || fail "synth failed"
     "$edgetrack" track --model "$data/models/cube60.cao" --camera "$work/syn/camera.xml" \
