@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// On-demand grey scaling is exact: tracking a generated sequence with the grey step converting
-/// only the tiles the moving edges read gives bit-identical poses and matches, every frame, to
+/// only the boxes the moving edges read gives bit-identical poses and matches, every frame, to
 /// converting the whole frame (the paper's way), and converts far fewer pixels.
 #include <cstdio>
 #include <vector>
