@@ -21,7 +21,7 @@ fi
 mbt=/usr/share/visp-images-data/ViSP-images/mbt
 models=$top/data/models
 
-"$host_double" synth --out "$work/paper" >/dev/null
+"$host_double" synth --out "$work/paper" >"$work/synth.txt"
 "$host_double" synth --out "$work/hard" --noise 6 --blur 1.0 --occluder >/dev/null
 "$host_double" synth --out "$work/toy" --model "$models/wood_toy.cao" >/dev/null
 
@@ -44,8 +44,10 @@ echo "## The edgetrack application on rendered and real sequences (app)"
 echo
 echo "\`tests/bench/app/results.sh\`: host $(bench_machine); ARM build on $(qemu-arm --version | head -n 1 | sed 's/ (.*//'), \`-cpu pxa270\`."
 echo
-echo "Sequences rendered by \`edgetrack synth\` with OSMesa (QVGA, px = py = 300, 60 frames, the"
-echo "\`paper\` trajectory: the model about 150 mm away, up to 2.9 px of motion per frame), tracked by"
+paper_px=$(sed -n 's:.*<px>\([^<]*\)<.*:\1:p' "$work/paper/camera.xml")
+paper_motion=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$work/synth.txt")
+echo "Sequences rendered by \`edgetrack synth\` with OSMesa (QVGA, px = py = $paper_px, 60 frames, the"
+echo "\`paper\` trajectory: the model about 150 mm away, up to $paper_motion px of motion per frame), tracked by"
 echo "\`edgetrack track\` from the true first pose with default parameters, compared by \`edgetrack eval\`:"
 echo "mean absolute error of the camera position in the object frame per axis and as a distance (mm),"
 echo "largest distance, mean rotation error (degrees). \"default\": noise 2 grey levels, blur 0.6 px;"
