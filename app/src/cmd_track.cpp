@@ -255,10 +255,8 @@ int track_main(int argc, char** argv) {
     const bool lost = !frame_trusted(result, tracker.value().matches(), camera, params);
     if (lost) {
       // The next frame starts from the last trusted pose, not from one fitted to noise.
-      auto restarted = edgetrack::Tracker::create(model.value(), camera, trusted_pose, params);
-      if (!restarted.ok()) return report("track", {frame.name, 0, restarted.error().message});
-      tracker = std::move(restarted);
-      tracker.value().set_edge_id_source(edge_id_source.value().get());
+      if (!tracker.value().reset(trusted_pose))
+        return report("track", {frame.name, 0, "the last trusted pose puts the model behind the camera"});
     } else {
       trusted_pose = result.camera_from_model;
     }

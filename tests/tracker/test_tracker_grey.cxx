@@ -16,14 +16,6 @@ using namespace edgetrack_test;
 
 namespace {
 
-bool same_pose(const Se3& a, const Se3& b) {
-  bool same = a.translation().x == b.translation().x && a.translation().y == b.translation().y &&
-              a.translation().z == b.translation().z;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) same = same && a.rotation().m[r][c] == b.rotation().m[r][c];
-  return same;
-}
-
 bool same_matches(const std::vector<EdgeMatch>& a, const std::vector<EdgeMatch>& b) {
   if (a.size() != b.size()) return false;
   for (size_t k = 0; k < a.size(); ++k) {
@@ -58,7 +50,7 @@ void compare_grey_modes(Scene scene, int frames) {
     renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), frame);
     const FrameResult a = on_demand.value().track(frame.pixels.data());
     const FrameResult b = whole.value().track(frame.pixels.data());
-    same_poses += same_pose(a.camera_from_model, b.camera_from_model);
+    same_poses += bit_identical(a.camera_from_model, b.camera_from_model);
     same_match_lists += same_matches(on_demand.value().matches(), whole.value().matches());
     matches += static_cast<int>(on_demand.value().matches().size());
     on_demand_pixels += a.grey_pixels;

@@ -75,6 +75,12 @@ const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsign
   return grey_;
 }
 
+bool Tracker::reset(const Se3& camera_from_model) {
+  if (camera_from_model.translation().z <= real(0)) return false;
+  camera_from_model_ = camera_from_model;
+  return true;
+}
+
 FrameResult Tracker::track(const uint16_t* rgb565) {
   FrameResult result;
   StepClock clock;

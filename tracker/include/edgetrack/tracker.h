@@ -86,6 +86,10 @@ class Tracker {
   void set_step_observer(StepObserver* observer) { step_observer_ = observer; }
 
   const Se3& camera_from_model() const { return camera_from_model_; }
+  /// Continues from `camera_from_model` at the next frame (after a lost frame, or a new
+  /// initialisation); keeps the buffers, the parameters and the Edge-ID source. False, and
+  /// nothing changes, when the pose puts the model behind the camera.
+  bool reset(const Se3& camera_from_model);
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
   const std::vector<ControlPoint>& control_points() const { return visible_; }
