@@ -32,18 +32,20 @@ class PointToLineResiduals : public vnl_least_squares_function {
   PointToLineResiduals(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
                        const PinholeCamera& camera, const Se3& start)
       : vnl_least_squares_function(6, static_cast<unsigned>(matches.size()), use_gradient),
-        matches_(matches),
-        start_(start) {
-    rotated_.reserve(matches.size());
-    coefficients_.reserve(matches.size());
+        start_(start),
+        rotated_(matches.size()),
+        coefficients_(matches.size()),
+        unweighted_(matches.size()),
+        turned_(matches.size()),
+        moved_(matches.size()) {
     for (size_t i = 0; i < matches.size(); ++i) {
       const EdgeMatch& m = matches[i];
-      rotated_.push_back(start.rotation() * m.point.point_in_model);
+      rotated_[i] = start.rotation() * m.point.point_in_model;
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
-      const real weight = weights.empty() ? real(1) : weights[i];
       const Vec2& n = m.point.normal;
-      coefficients_.push_back({weight * n.x * camera.px, weight * n.y * camera.py,
-                               weight * (n.x * (camera.u0 - m.found.x) + n.y * (camera.v0 - m.found.y))});
+      unweighted_[i] = {n.x * camera.px, n.y * camera.py,
+                        n.x * (camera.u0 - m.found.x) + n.y * (camera.v0 - m.found.y)};
+      coefficients_[i] = weights.empty() ? unweighted_[i] : weights[i] * unweighted_[i];
     }
   }
 
@@ -51,24 +53,34 @@ class PointToLineResiduals : public vnl_least_squares_function {
     const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
     const Mat33 r = rotation_exp(w);
     const Vec3 t = start_.translation() + v;
-    for (size_t i = 0; i < matches_.size(); ++i) {
-      const Vec3 p = r * rotated_[i] + t;
+    evaluated_ = false;
+    for (size_t i = 0; i < rotated_.size(); ++i) {
+      const Vec3 z = r * rotated_[i];
+      const Vec3 p = z + t;
       if (p.z <= real(0)) {
         throw_failure();
         return;
       }
+      turned_[i] = z;
+      moved_[i] = p;
       fx[static_cast<unsigned>(i)] = dot(coefficients_[i], p) / p.z;
     }
+    for (unsigned k = 0; k < 6; ++k) evaluated_at_[k] = x[k];
+    evaluated_ = true;
   }
 
   void gradf(const vnl_vector<real>& x, vnl_matrix<real>& jacobian) override {
-    const Vec3 w{x[3], x[4], x[5]};
-    const Mat33 r = rotation_exp(w);
-    const Mat33 jl = so3_left_jacobian(w);
-    const Vec3 t = start_.translation() + Vec3{x[0], x[1], x[2]};
-    for (size_t i = 0; i < matches_.size(); ++i) {
-      const Vec3 z = r * rotated_[i];
-      const Vec3 p = z + t;
+    // MINPACK asks for the Jacobian where it evaluated last (the start, then each accepted
+    // step), so the rotation and the moved points come from that evaluation.
+    if (!evaluated_at(x)) {
+      vnl_vector<real> fx(get_number_of_residuals());
+      f(x, fx);
+      if (failure) return;
+    }
+    const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
+    for (size_t i = 0; i < rotated_.size(); ++i) {
+      const Vec3& z = turned_[i];
+      const Vec3& p = moved_[i];
       const real inv_z = real(1) / p.z;
       // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
       const Vec3& k = coefficients_[i];
@@ -86,24 +98,49 @@ class PointToLineResiduals : public vnl_least_squares_function {
     }
   }
 
+  /// The unweighted distances |delta_i| at x, for the next round's weights.
+  void distances(const vnl_vector<real>& x, std::vector<real>& out) {
+    using std::fabs;
+    if (!evaluated_at(x)) {
+      vnl_vector<real> fx(get_number_of_residuals());
+      f(x, fx);
+    }
+    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = fabs(dot(unweighted_[i], moved_[i]) / moved_[i].z);
+  }
+
   Se3 pose(const vnl_vector<real>& x) const {
     const Vec3 w{x[3], x[4], x[5]};
     return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0], x[1], x[2]});
   }
 
  private:
-  const std::vector<EdgeMatch>& matches_;
+  bool evaluated_at(const vnl_vector<real>& x) const {
+    if (!evaluated_) return false;
+    for (unsigned k = 0; k < 6; ++k)
+      if (!(x[k] == evaluated_at_[k])) return false;
+    return true;
+  }
+
   Se3 start_;
   std::vector<Vec3> rotated_;       ///< R0 * point_in_model, fixed during the minimisation
   std::vector<Vec3> coefficients_;  ///< (a, b, c) of each residual, see the constructor
+  std::vector<Vec3> unweighted_;    ///< the same before the weights
+  /// At the last evaluation (x = evaluated_at_): R(w) R0 * point_in_model and the camera-frame
+  /// point, for the Jacobian.
+  std::vector<Vec3> turned_, moved_;
+  real evaluated_at_[6] = {};
+  bool evaluated_ = false;
 };
 
-/// One Levenberg-Marquardt solve over `matches` from `start`; adds its counts to `solution`.
+/// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
+/// residual evaluations; adds its counts to `solution`. With `distances`, also the unweighted
+/// point-to-line distances at the new pose.
 bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
-                const Se3& start, const PoseParams& params, PoseSolution& solution, Se3& pose) {
+                const Se3& start, const PoseParams& params, int max_evaluations, PoseSolution& solution, Se3& pose,
+                std::vector<real>* distances) {
   PointToLineResiduals residuals(matches, weights, camera, start);
   vnl_levenberg_marquardt lm(residuals);
-  lm.set_max_function_evals(params.max_evaluations);
+  lm.set_max_function_evals(max_evaluations);
   lm.set_x_tolerance(params.x_tolerance);
   lm.set_f_tolerance(params.f_tolerance);
   lm.set_g_tolerance(params.g_tolerance);
@@ -117,7 +154,8 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   if (!(ok || lm.get_failure_code() == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS) || residuals.failure)
     return false;
   pose = residuals.pose(x);
-  return true;
+  if (distances) residuals.distances(x, *distances);
+  return !residuals.failure;
 }
 
 real median_of(std::vector<real> values) {
@@ -130,24 +168,22 @@ real median_of(std::vector<real> values) {
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params) {
-  using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   if (matches.size() < needed) return solution;
+  const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
+  std::vector<real> distances(matches.size()), weights;
   Se3 pose;
-  const std::vector<real> unweighted;
-  if (!solve_once(matches, unweighted, camera, start, params, solution, pose)) return solution;
+  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose,
+                  robust ? &distances : nullptr))
+    return solution;
   solution.camera_from_model = pose;
   solution.solved = true;
-  if (params.tukey_c <= real(0)) return solution;
+  if (!robust) return solution;
 
-  std::vector<real> distances(matches.size()), weights(matches.size());
+  weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
-    for (size_t i = 0; i < matches.size(); ++i) {
-      const EdgeMatch& m = matches[i];
-      distances[i] = fabs(dot(m.point.normal, camera.project(pose * m.point.point_in_model) - m.found));
-    }
     real c = params.tukey_c * real(1.4826) * median_of(distances);
     if (c < params.tukey_floor) c = params.tukey_floor;
     solution.outliers = 0;
@@ -158,7 +194,10 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
       solution.outliers += matches[i].outlier;
     }
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    if (!solve_once(matches, weights, camera, pose, params, solution, pose)) break;
+    const bool last = round + 1 == params.robust_rounds;
+    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose,
+                    last ? nullptr : &distances))
+      break;
     solution.camera_from_model = pose;
   }
   return solution;
