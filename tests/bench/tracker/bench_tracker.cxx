@@ -61,10 +61,13 @@ int main(int argc, char* argv[]) {
   }
   CountEachStep count_each_step;
   if (per_step) tracker.value().set_step_observer(&count_each_step);
-  std::printf("# real=%s scene=%s frames=%d grey=%s windows=%s camera=%dx%d px=%g py=%g robust_rounds=%d\n",
+  std::printf(
+      "# real=%s scene=%s frames=%d grey=%s windows=%s camera=%dx%d px=%g py=%g robust_rounds=%d "
+      "robust_evaluations=%d\n",
               real_name(), scene == Scene::kCube ? "cube" : "toy", frames, grey.c_str(),
               per_step ? "4 per frame (visible edges, grey, ME, pose)" : "1 per frame", camera.width, camera.height,
-              static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds);
+              static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds,
+              params.pose.robust_evaluations);
   std::printf(
       "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels\n");
   for (int k = 0; k < frames; ++k) {
