@@ -46,11 +46,12 @@ void compare_with_golden(Scene scene, const SequenceRun& run, double max_toleran
 /// reproduce it. S40.23: within 0.1 mm in every frame (the claim), mean a tenth of that.
 /// What keeps it there: the moving edges' sub-pixel match moves continuously with the control
 /// point (a site's whole pixel jumps when rounding moves its truncated path) and three robust
-/// rounds in the pose step (one left the pose leaning on gross mismatches). Measured: largest
-/// 0.021 mm (cube) and 0.027 mm (toy), mean 0.0017 and 0.0016 mm. Rare single-point events
-/// remain (two competing edges within the search range, a point on an occluding contour, a
-/// pixel the renderer rounds differently): over 64 runs with other noise seeds and trajectory
-/// phases, one of them moved a frame by more than 0.1 mm (up to 0.15 mm) in 3 runs.
+/// rounds in the pose step (one left the pose leaning on gross mismatches). Measured (one-step
+/// robust rounds): largest 0.021 mm (cube) and 0.026 mm (toy), mean 0.0015 and 0.0019 mm.
+/// Rare single-point events remain (two competing edges within the search range, a point on an
+/// occluding contour, a pixel the renderer rounds differently): over 64 runs with other noise
+/// seeds and trajectory phases, with robust rounds run to convergence, one of them moved a
+/// frame by more than 0.1 mm (up to 0.15 mm) in 3 runs; not re-run with one-step rounds.
 void tolerances(double& max_mm, double& mean_mm) {
   const std::string name = real_name();
   if (name == "double") {
