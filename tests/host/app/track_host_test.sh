@@ -161,10 +161,12 @@ case $name in
     env -u DISPLAY "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm" \
       --last 19 --quiet --init "$mbt/cube.init" --init-points "$work/clicks.txt" --poses "$work/from_clicks.csv" >/dev/null ||
       fail "rerun from the saved clicks failed"
+    # Not bit-exact: the .pos holds thetaU in decimal, and the rotation rebuilt from it differs in
+    # its last bits; S40.23 carries that through 20 frames (measured 0.003 mm, 0.001 deg).
     for rerun in from_pos from_clicks; do
       read -r mm deg < <(largest_difference "$work/clicked.csv" "$work/$rerun.csv")
       echo "$rerun: largest difference to the clicked run $mm mm, $deg deg"
-      less "$mm" 0.01 && less "$deg" 0.001 || fail "the $rerun rerun does not repeat the clicked run"
+      less "$mm" 0.02 && less "$deg" 0.01 || fail "the $rerun rerun does not repeat the clicked run"
     done ;;
   *)
     fail "unknown case" ;;
