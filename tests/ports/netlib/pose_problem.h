@@ -5,10 +5,11 @@
 /// edges, each observed with seeded Gaussian noise along its projected edge normal.
 ///
 /// Frames and units: camera_from_model maps model points (metres) to camera points; pixels for
-/// residuals. The six parameters x = (w, t) give the pose R = exp([w]x) R0, translation t, where
-/// R0 is the start rotation (so the start is w = 0, t = t0). Residual i is eq. (3) without the
-/// absolute value, (q_i - p_i(x)) . n_i: the signed distance in pixels from the projected
-/// control point p_i to the observed edge line through q_i with normal n_i.
+/// residuals. The six parameters x = (w, t) give the pose R = exp([w]x) R0, translation t in
+/// millimetres (see kMillimetresPerMetre), where R0 is the start rotation (so the start is
+/// w = 0, t = t0). Residual i is eq. (3) without the absolute value, (q_i - p_i(x)) . n_i: the
+/// signed distance in pixels from the projected control point p_i to the observed edge line
+/// through q_i with normal n_i.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,14 @@
 #include "vnl/vnl_vector_fixed.h"
 
 namespace pose_problem {
+
+/// The solver works in millimetres (the parameters t and the points inside Residuals). In
+/// metres the Jacobian's translation columns are ~2000 px/m, past the 512 below which S40.23's
+/// multiply is one 32 x 32-bit product (ports/real/include/real/fixed64.h), both in the Jacobian
+/// and in MINPACK's QR of it; in millimetres they are ~2 px/mm, and the model points get 1000x
+/// finer fixed-point resolution. MINPACK (mode 1) scales each column by its norm, so in exact
+/// arithmetic the iterations do not depend on the unit (docs/results/lm.md: what it saves).
+constexpr double kMillimetresPerMetre = 1000;
 
 using Vec3 = vnl_vector_fixed<double, 3>;
 using Mat33 = vnl_matrix_fixed<double, 3, 3>;
@@ -49,7 +58,7 @@ struct Problem {
 /// translation of up to 5 mm. Deterministic for a given seed on every platform.
 Problem generate(std::uint32_t seed);
 
-/// The pose given by the parameters x = (w, t) (see the file comment).
+/// The pose (translation in metres) given by the parameters x = (w, t mm) (see the file comment).
 Pose pose_from_parameters(const Problem& problem, const double x[6]);
 /// Angle of R_a R_b^T in degrees.
 double rotation_error_deg(const Pose& a, const Pose& b);
@@ -67,7 +76,7 @@ class Residuals : public vnl_least_squares_function_of<T> {
   void residuals(const T* x, T* f) const;
   /// The m x 6 Jacobian, column-major with leading dimension ld.
   void jacobian(const T* x, T* fjac, int ld) const { jacobian_strided(x, fjac, 1, ld); }
-  /// The start parameters (0, 0, 0, t0).
+  /// The start parameters (0, 0, 0, t0 in millimetres).
   vnl_vector<T> start() const;
 
   void f(const vnl_vector<T>& x, vnl_vector<T>& fx) override { residuals(x.data_block(), fx.data_block()); }
@@ -83,10 +92,11 @@ class Residuals : public vnl_least_squares_function_of<T> {
                     vnl_vector_fixed<T, 3>& in_camera) const;
 
   T px_, py_, u0_, v0_;
-  std::vector<vnl_vector_fixed<T, 3>> y_;  ///< R0 * point_in_model
+  T aspect_;                               ///< py / px
+  std::vector<vnl_vector_fixed<T, 3>> y_;  ///< R0 * point_in_model, millimetres
   std::vector<T> q_;                       ///< 2 per point
   std::vector<T> n_;                       ///< 2 per point
-  vnl_vector_fixed<T, 3> t0_;
+  vnl_vector_fixed<T, 3> t0_;              ///< start translation, millimetres
 };
 
 }  // namespace pose_problem
