@@ -221,8 +221,17 @@ Summary summarise(const std::vector<Problem>& problems, const Row& row) {
 int main(int argc, char** argv) {
   const int count = argc > 1 ? std::atoi(argv[1]) : 200;
   const int passes = argc > 2 ? std::atoi(argv[2]) : 5;
+  // "metres": the same problems solved in the paper's unit instead of millimetres.
+  const bool metres = argc > 3 && std::string(argv[3]) == "metres";
+  if (count < 1 || passes < 1 || (argc > 3 && !metres)) {
+    std::fprintf(stderr, "usage: lm_compare [PROBLEMS [PASSES [metres]]]\n");
+    return 2;
+  }
   std::vector<Problem> problems;
-  for (int i = 0; i < count; ++i) problems.push_back(pose_problem::generate(static_cast<std::uint32_t>(i + 1)));
+  for (int i = 0; i < count; ++i) {
+    problems.push_back(pose_problem::generate(static_cast<std::uint32_t>(i + 1)));
+    if (metres) problems.back().units_per_metre = 1;
+  }
 
   std::vector<Row> rows;
   rows.push_back(ours<double>("ours (vnl_levenberg_marquardt), double", problems));

@@ -44,6 +44,14 @@ echo "problems, the rows interleaved within each pass, on a machine shared with 
 echo
 "$host/tests/bench/lm/lm_compare" "$problems" "$passes"
 echo
+echo "### The same problems in the paper's unit, metres"
+echo
+echo "Only the solver's length unit differs (translation parameters and model points in metres; one"
+echo "timing pass). Here the Jacobian's translation columns (~2000 px/m) and S47.16's resolution of"
+echo "the model points (2^-16 m = 0.015 mm) are what the paper's fixed-point types faced."
+echo
+"$host/tests/bench/lm/lm_compare" "$problems" 1 metres
+echo
 
 count() {  # count <build dir> <label>: per-solve windows and solve lines of lm_pose_insns
   "$top/toolchains/qemu/count-insns.sh" --out "$work/$2.summary" --windows "$work/$2.windows" \

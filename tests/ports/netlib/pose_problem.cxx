@@ -106,7 +106,7 @@ Problem generate(std::uint32_t seed) {
 Pose pose_from_parameters(const Problem& problem, const double x[6]) {
   Pose pose;
   pose.rotation = vnl_rotation_matrix(Vec3(x[0], x[1], x[2])) * problem.start.rotation;
-  pose.translation = Vec3(x[3], x[4], x[5]) / kMillimetresPerMetre;
+  pose.translation = Vec3(x[3], x[4], x[5]) / problem.units_per_metre;
   return pose;
 }
 

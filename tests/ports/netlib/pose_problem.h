@@ -47,6 +47,8 @@ struct ControlPoint {
 /// One problem: the camera, the true pose, the start pose and the control points.
 struct Problem {
   double px = 300, py = 300, u0 = 160, v0 = 120;
+  /// The solver's length unit (its t and points): millimetres; 1 gives the paper's metres.
+  double units_per_metre = kMillimetresPerMetre;
   Pose truth;
   Pose start;
   std::vector<ControlPoint> points;
@@ -58,7 +60,7 @@ struct Problem {
 /// translation of up to 5 mm. Deterministic for a given seed on every platform.
 Problem generate(std::uint32_t seed);
 
-/// The pose (translation in metres) given by the parameters x = (w, t mm) (see the file comment).
+/// The pose (translation in metres) given by the parameters x = (w, t in the problem's unit).
 Pose pose_from_parameters(const Problem& problem, const double x[6]);
 /// Angle of R_a R_b^T in degrees.
 double rotation_error_deg(const Pose& a, const Pose& b);

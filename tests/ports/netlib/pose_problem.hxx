@@ -17,14 +17,14 @@ Residuals<T>::Residuals(const Problem& problem)
       v0_(T(problem.v0)),
       aspect_(T(problem.py / problem.px)) {
   for (const ControlPoint& c : problem.points) {
-    const Vec3 y = problem.start.rotation * c.point_in_model * kMillimetresPerMetre;
+    const Vec3 y = problem.start.rotation * c.point_in_model * problem.units_per_metre;
     y_.emplace_back(T(y[0]), T(y[1]), T(y[2]));
     q_.push_back(T(c.q[0]));
     q_.push_back(T(c.q[1]));
     n_.push_back(T(c.n[0]));
     n_.push_back(T(c.n[1]));
   }
-  for (unsigned i = 0; i < 3; ++i) t0_[i] = T(problem.start.translation[i] * kMillimetresPerMetre);
+  for (unsigned i = 0; i < 3; ++i) t0_[i] = T(problem.start.translation[i] * problem.units_per_metre);
 }
 
 template <class T>

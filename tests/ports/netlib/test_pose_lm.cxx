@@ -51,7 +51,7 @@ void check_problem_set_up() {
   vnl_vector<double> truth(6), fx(60);
   for (unsigned k = 0; k < 3; ++k) {
     truth[k] = w[k];
-    truth[3 + k] = p.truth.translation[k] * pose_problem::kMillimetresPerMetre;
+    truth[3 + k] = p.truth.translation[k] * p.units_per_metre;
   }
   f.f(truth, fx);
   TEST_NEAR("the residual RMS at the true pose is the 0.3 px noise", fx.rms(), 0.3, 0.1);
