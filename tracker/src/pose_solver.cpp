@@ -13,6 +13,13 @@
 namespace edgetrack {
 namespace {
 
+/// The solve works in millimetres (the translation parameters and the camera-frame points). In
+/// metres the Jacobian's translation columns are px / Z ~ 1500 px/m, past the 512 below which
+/// S40.23's multiply is one 32 x 32-bit product (real/fixed64.h), both in the Jacobian and in
+/// MINPACK's QR of it; in millimetres they are ~1.5 px/mm. MINPACK scales each column by its
+/// norm, so in exact arithmetic the steps do not depend on the unit.
+constexpr int kMillimetresPerMetre = 1000;
+
 /// The left Jacobian of SO(3), J(w) = I + b hat(w) + c hat(w)^2: d(exp(hat(w)) y)/dw is
 /// -hat(exp(hat(w)) y) J(w).
 Mat33 so3_left_jacobian(const Vec3& w) {
@@ -33,6 +40,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
                        const PinholeCamera& camera, const Se3& start)
       : vnl_least_squares_function(6, static_cast<unsigned>(matches.size()), use_gradient),
         start_(start),
+        start_translation_mm_(real(kMillimetresPerMetre) * start.translation()),
         rotated_(matches.size()),
         coefficients_(matches.size()),
         unweighted_(matches.size()),
@@ -40,7 +48,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
         moved_(matches.size()) {
     for (size_t i = 0; i < matches.size(); ++i) {
       const EdgeMatch& m = matches[i];
-      rotated_[i] = start.rotation() * m.point.point_in_model;
+      rotated_[i] = start.rotation() * (real(kMillimetresPerMetre) * m.point.point_in_model);
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
       const Vec2& n = m.point.normal;
       unweighted_[i] = {n.x * camera.px, n.y * camera.py,
@@ -52,7 +60,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
   void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {
     const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
     const Mat33 r = rotation_exp(w);
-    const Vec3 t = start_.translation() + v;
+    const Vec3 t = start_translation_mm_ + v;
     evaluated_ = false;
     for (size_t i = 0; i < rotated_.size(); ++i) {
       const Vec3 z = r * rotated_[i];
@@ -110,7 +118,8 @@ class PointToLineResiduals : public vnl_least_squares_function {
 
   Se3 pose(const vnl_vector<real>& x) const {
     const Vec3 w{x[3], x[4], x[5]};
-    return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0], x[1], x[2]});
+    const real mm(kMillimetresPerMetre);
+    return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0] / mm, x[1] / mm, x[2] / mm});
   }
 
  private:
@@ -122,11 +131,12 @@ class PointToLineResiduals : public vnl_least_squares_function {
   }
 
   Se3 start_;
-  std::vector<Vec3> rotated_;       ///< R0 * point_in_model, fixed during the minimisation
+  Vec3 start_translation_mm_;
+  std::vector<Vec3> rotated_;       ///< R0 * point_in_model in millimetres, fixed during the minimisation
   std::vector<Vec3> coefficients_;  ///< (a, b, c) of each residual, see the constructor
   std::vector<Vec3> unweighted_;    ///< the same before the weights
   /// At the last evaluation (x = evaluated_at_): R(w) R0 * point_in_model and the camera-frame
-  /// point, for the Jacobian.
+  /// point, millimetres, for the Jacobian.
   std::vector<Vec3> turned_, moved_;
   real evaluated_at_[6] = {};
   bool evaluated_ = false;

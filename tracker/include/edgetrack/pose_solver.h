@@ -64,7 +64,8 @@ struct PoseSolution {
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM
 /// minimises the sum of their squares). p_i(x) projects point_in_model with the pose
 /// R = exp(hat(w)) R0, t = t0 + v for x = (v, w): the exponential map around the start pose
-/// `start`, so x = 0 is the start and the rotation needs no constraint.
+/// `start`, so x = 0 is the start and the rotation needs no constraint. LM sees v and the
+/// camera-frame points in millimetres, where S40.23's products stay in their fast range.
 /// Matches given weight 0 by the last robust solve are returned with `outlier` set.
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params);
