@@ -160,8 +160,13 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   solution.iterations += lm.get_num_jacobian_evaluations();
   if (solution.evaluations == lm.get_num_evaluations()) solution.start_rms = lm.get_start_error();
   solution.end_rms = lm.get_end_error();
-  // Hitting the evaluation limit still leaves the best estimate LM found; a failure does not.
-  if (!(ok || lm.get_failure_code() == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS) || residuals.failure)
+  // Hitting the evaluation limit still leaves the best estimate LM found, and so does a step
+  // bound down to the scalar's resolution (MINPACK's info 7: x cannot be improved at this
+  // precision; in millimetres S47.16 ends exact-match solves this way); a failure does not.
+  const int code = lm.get_failure_code();
+  if (!(ok || code == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS ||
+        code == vnl_levenberg_marquardt::FAILED_XTOL_TOO_SMALL) ||
+      residuals.failure)
     return false;
   pose = residuals.pose(x);
   if (distances) residuals.distances(x, *distances);
