@@ -142,6 +142,18 @@ class PointToLineResiduals : public vnl_least_squares_function {
   bool evaluated_ = false;
 };
 
+/// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
+/// tolerances reached at the scalar's resolution (info 6, 7, 8: no further reduction, step or
+/// gradient test is possible at this precision). A fixed-point solve whose tolerances lie near
+/// its resolution ends this way at its optimum: in millimetres S47.16 often does (frames were
+/// lost in the app tests when these counted as failures). Other codes are failures.
+bool keeps_best_estimate(int code) {
+  return code == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS ||
+         code == vnl_levenberg_marquardt::FAILED_FTOL_TOO_SMALL ||
+         code == vnl_levenberg_marquardt::FAILED_XTOL_TOO_SMALL ||
+         code == vnl_levenberg_marquardt::FAILED_GTOL_TOO_SMALL;
+}
+
 /// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
 /// residual evaluations; adds its counts to `solution`. With `distances`, also the unweighted
 /// point-to-line distances at the new pose.
@@ -160,14 +172,7 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   solution.iterations += lm.get_num_jacobian_evaluations();
   if (solution.evaluations == lm.get_num_evaluations()) solution.start_rms = lm.get_start_error();
   solution.end_rms = lm.get_end_error();
-  // Hitting the evaluation limit still leaves the best estimate LM found, and so does a step
-  // bound down to the scalar's resolution (MINPACK's info 7: x cannot be improved at this
-  // precision; in millimetres S47.16 ends exact-match solves this way); a failure does not.
-  const int code = lm.get_failure_code();
-  if (!(ok || code == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS ||
-        code == vnl_levenberg_marquardt::FAILED_XTOL_TOO_SMALL) ||
-      residuals.failure)
-    return false;
+  if (!(ok || keeps_best_estimate(lm.get_failure_code())) || residuals.failure) return false;
   pose = residuals.pose(x);
   if (distances) residuals.distances(x, *distances);
   return !residuals.failure;
