@@ -47,7 +47,8 @@ void compare_with_golden(Scene scene, const SequenceRun& run, double max_toleran
 /// What keeps it there: the moving edges' sub-pixel match moves continuously with the control
 /// point (a site's whole pixel jumps when rounding moves its truncated path) and three robust
 /// rounds in the pose step (one left the pose leaning on gross mismatches). Measured (one-step
-/// robust rounds): largest 0.021 mm (cube) and 0.026 mm (toy), mean 0.0015 and 0.0019 mm.
+/// robust rounds, LM in millimetres): largest 0.021 mm (cube) and 0.026 mm (toy), mean 0.0014
+/// and 0.0015 mm.
 /// Rare single-point events remain (two competing edges within the search range, a point on an
 /// occluding contour, a pixel the renderer rounds differently): over 64 runs with other noise
 /// seeds and trajectory phases, with robust rounds run to convergence, one of them moved a
