@@ -125,6 +125,8 @@ int track_main(int argc, char** argv) {
       {"--video", true, "write the overlay as a video (host)"},
       {"--config", true, "ViSP XML whose <ecm> block sets the moving-edge threshold, mask size and number, range and "
                          "sample step (mu1/mu2 are read, not used: no contrast is kept between frames)"},
+      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
+                             "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -148,9 +150,13 @@ int track_main(int argc, char** argv) {
   auto first = a.integer("--first", -1), last = a.integer("--last", -1), device = a.integer("--camera-device", -1);
   auto factor = a.integer("--downscale", 1);
   auto raw = a.size("--raw-size", source_options.raw_width, source_options.raw_height);
-  for (const Error* bad : {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error()})
+  auto hypotheses = a.integer("--hypotheses", edgetrack::TrackerParams{}.hypotheses);
+  for (const Error* bad :
+       {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error(), &hypotheses.error()})
     if (!bad->message.empty()) return report("track", *bad) + 1;
   if (factor.value() < 1 || factor.value() > 8) return report("track", {"", 0, "--downscale must be 1..8"}) + 1;
+  if (hypotheses.value() < 1 || hypotheses.value() > edgetrack::kMaxHypotheses)
+    return report("track", {"", 0, "--hypotheses must be 1.." + std::to_string(edgetrack::kMaxHypotheses)}) + 1;
   source_options.first = first.value();
   source_options.last = last.value();
   source_options.camera_device = device.value();
@@ -159,6 +165,7 @@ int track_main(int argc, char** argv) {
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("track", model.error());
   edgetrack::TrackerParams params;
+  params.hypotheses = hypotheses.value();
   if (a.has("--config")) {
     auto ecm = read_ecm_config(a.text("--config"));
     if (!ecm.ok()) return report("track", ecm.error());

@@ -52,7 +52,12 @@ static void test_pose_solver() {
   ids.render(cube, start);
   const std::vector<ControlPoint> points = keep_visible(sample_control_points(cube, camera, start, {}), ids);
   std::vector<EdgeMatch> matches;
-  for (const ControlPoint& p : points) matches.push_back({p, camera.project(truth * p.point_in_model), false});
+  for (const ControlPoint& p : points) {
+    EdgeMatch m;
+    m.point = p;
+    m.found = camera.project(truth * p.point_in_model);
+    matches.push_back(m);
+  }
   TEST("there are about 80 visible control points", matches.size() >= 60 && matches.size() <= 100, true);
   const PoseParams params;
   std::vector<EdgeMatch> clean = matches;

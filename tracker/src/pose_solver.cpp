@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_least_squares_function.h"
@@ -106,14 +107,13 @@ class PointToLineResiduals : public vnl_least_squares_function {
     }
   }
 
-  /// The unweighted distances |delta_i| at x, for the next round's weights.
-  void distances(const vnl_vector<real>& x, std::vector<real>& out) {
-    using std::fabs;
+  /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
+  void signed_distances(const vnl_vector<real>& x, std::vector<real>& out) {
     if (!evaluated_at(x)) {
       vnl_vector<real> fx(get_number_of_residuals());
       f(x, fx);
     }
-    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = fabs(dot(unweighted_[i], moved_[i]) / moved_[i].z);
+    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = dot(unweighted_[i], moved_[i]) / moved_[i].z;
   }
 
   Se3 pose(const vnl_vector<real>& x) const {
@@ -156,7 +156,7 @@ bool keeps_best_estimate(int code) {
 
 /// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
 /// residual evaluations; adds its counts to `solution`. With `distances`, also the unweighted
-/// point-to-line distances at the new pose.
+/// signed point-to-line distances at the new pose.
 bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
                 const Se3& start, const PoseParams& params, int max_evaluations, PoseSolution& solution, Se3& pose,
                 std::vector<real>* distances) {
@@ -174,7 +174,7 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   solution.end_rms = lm.get_end_error();
   if (!(ok || keeps_best_estimate(lm.get_failure_code())) || residuals.failure) return false;
   pose = residuals.pose(x);
-  if (distances) residuals.distances(x, *distances);
+  if (distances) residuals.signed_distances(x, *distances);
   return !residuals.failure;
 }
 
@@ -182,6 +182,26 @@ real median_of(std::vector<real> values) {
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   return values[mid];
+}
+
+/// Each match's hypothesis nearest to the pose where `distances` (signed, to `found`) were
+/// measured becomes its `found` (swapped with the alternative); `distances` become the chosen
+/// ones' |delta|. The line through hypothesis h is parallel to found's, so
+/// delta_h = delta + n . (found - h): no projection per hypothesis.
+void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+  using std::fabs;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    EdgeMatch& m = matches[i];
+    real delta = distances[i];
+    for (int a = 0; a < m.alternative_count; ++a) {
+      const real d = delta + dot(m.point.normal, m.found - m.alternatives[a]);
+      if (fabs(d) < fabs(delta)) {
+        std::swap(m.found, m.alternatives[a]);
+        delta = d;
+      }
+    }
+    distances[i] = fabs(delta);
+  }
 }
 
 }  // namespace
@@ -204,6 +224,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
 
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
+    choose_nearest_hypotheses(matches, distances);
     real c = params.tukey_c * real(1.4826) * median_of(distances);
     if (c < params.tukey_floor) c = params.tukey_floor;
     solution.outliers = 0;

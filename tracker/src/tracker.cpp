@@ -3,6 +3,7 @@
 #include "edgetrack/tracker.h"
 
 #include <chrono>
+#include <string>
 
 #include "edgetrack/me_search_box.h"
 #include "visp3/core/vpImageConvert.h"
@@ -43,6 +44,8 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
   if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
   if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
   if (params.me.getRange() == 0) return Error{"", 0, "the moving-edge range must be at least 1 pixel"};
+  if (params.hypotheses < 1 || params.hypotheses > kMaxHypotheses)
+    return Error{"", 0, "the number of edge hypotheses must be 1 to " + std::to_string(kMaxHypotheses)};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
   return Tracker(model, camera, initial, params);
 }
@@ -95,7 +98,7 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, me_);
+  matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

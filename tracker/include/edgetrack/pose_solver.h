@@ -67,6 +67,13 @@ struct PoseSolution {
 /// `start`, so x = 0 is the start and the rotation needs no constraint. LM sees v and the
 /// camera-frame points in millimetres, where S40.23's products stay in their fast range.
 /// Matches given weight 0 by the last robust solve are returned with `outlier` set.
+/// Matches with alternatives (several edge hypotheses, moving_edges.h): the first solve uses
+/// each match's `found` (its strongest edge, so a wrong hypothesis pulls it no more than with
+/// one hypothesis); before each robust round, each match takes the hypothesis nearest to the
+/// projection at the previous solve's pose, and its weight follows that distance. Choosing per
+/// round, not per LM evaluation, keeps the residuals a smooth function within each solve, as
+/// MINPACK's trust region assumes; a robust round is one LM step, so the choice follows every
+/// step after the first solve. The chosen hypothesis is returned in `found`.
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params);
 

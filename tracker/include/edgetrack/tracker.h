@@ -33,6 +33,10 @@ struct TrackerParams {
   /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
   /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
   vpMe me;
+  /// Edge hypotheses each control point keeps (1 to kMaxHypotheses): the strongest edge along
+  /// its normal and the next local maxima of the likelihood; the pose step uses the one nearest
+  /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match.
+  int hypotheses = 1;
   GreyScaling grey = GreyScaling::kOnDemand;
 };
 
