@@ -9,8 +9,9 @@ using namespace edgetrack;
 
 namespace edgetrack_test {
 
-std::string golden_name(Scene scene) {
-  return scene == Scene::kCube ? "cube60_double_positions.txt" : "wood_toy_double_positions.txt";
+std::string golden_name(Scene scene, int hypotheses) {
+  const std::string stem = scene == Scene::kCube ? "cube60_double" : "wood_toy_double";
+  return stem + (hypotheses == 1 ? "" : "_k" + std::to_string(hypotheses)) + "_positions.txt";
 }
 
 bool write_golden(const std::string& path, const SequenceRun& run) {

@@ -12,7 +12,8 @@ namespace edgetrack_test {
 
 constexpr int kGoldenFrames = 60;
 
-std::string golden_name(Scene scene);
+/// The file of the run with `hypotheses` edge hypotheses per control point (TrackerParams).
+std::string golden_name(Scene scene, int hypotheses);
 bool write_golden(const std::string& path, const SequenceRun& run);
 /// The positions in the file, or an empty vector when it cannot be read.
 std::vector<edgetrack::Vec3> read_golden(const std::string& path);

@@ -3,7 +3,7 @@
 /// follows the 60 mm cube within 1 mm with about 60 control points per frame and the
 /// self-occluding wood toy within 2 mm (mean camera position error), never samples a hidden
 /// edge, and each `real` stays near the double run stored in tests/tracker/golden (S40.23
-/// within 0.1 mm in every frame).
+/// within 0.1 mm in every frame), with the default edge hypotheses and with one.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -24,9 +24,12 @@ double distance_mm(const Vec3& a, const Vec3& b) {
   return 1000 * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-/// Compares a run with the double golden file: mean and largest distance per frame, mm.
-void compare_with_golden(Scene scene, const SequenceRun& run, double max_tolerance_mm, double mean_tolerance_mm) {
-  const std::vector<Vec3> golden = read_golden(std::string(EDGETRACK_GOLDEN_DIR) + "/" + golden_name(scene));
+/// Compares a run with `hypotheses` edge hypotheses with the double golden file: mean and
+/// largest distance per frame, mm.
+void compare_with_golden(Scene scene, int hypotheses, const SequenceRun& run, double max_tolerance_mm,
+                         double mean_tolerance_mm) {
+  const std::vector<Vec3> golden =
+      read_golden(std::string(EDGETRACK_GOLDEN_DIR) + "/" + golden_name(scene, hypotheses));
   TEST_EQUAL("the golden file has one position per frame", golden.size(), run.frames.size());
   if (golden.size() != run.frames.size()) return;
   double worst = 0, sum = 0;
@@ -35,11 +38,22 @@ void compare_with_golden(Scene scene, const SequenceRun& run, double max_toleran
     worst = std::fmax(worst, d);
     sum += d;
   }
-  std::printf("%s vs double golden: mean %.4f mm, largest %.4f mm\n", real_name(), sum / golden.size(), worst);
-  TEST_NEAR((std::string("camera positions stay near the double run, mean (") + real_name() + ", mm)").c_str(),
-            sum / golden.size(), 0, mean_tolerance_mm);
-  TEST_NEAR((std::string("camera positions stay near the double run, every frame (") + real_name() + ", mm)").c_str(),
-            worst, 0, max_tolerance_mm);
+  std::printf("%s, %d hypotheses, vs double golden: mean %.4f mm, largest %.4f mm\n", real_name(), hypotheses,
+              sum / golden.size(), worst);
+  const std::string what = std::string(" (") + real_name() + ", " + std::to_string(hypotheses) + " hypotheses, mm)";
+  TEST_NEAR(("camera positions stay near the double run, mean" + what).c_str(), sum / golden.size(), 0,
+            mean_tolerance_mm);
+  TEST_NEAR(("camera positions stay near the double run, every frame" + what).c_str(), worst, 0, max_tolerance_mm);
+}
+
+/// The single-hypothesis tracker (the paper's) against its own golden file, which predates
+/// multiple hypotheses: hypotheses = 1 reproduces it.
+void compare_single_hypothesis_with_golden(Scene scene, double max_tolerance_mm, double mean_tolerance_mm) {
+  TrackerParams single;
+  single.hypotheses = 1;
+  const SequenceRun run = run_sequence(scene, kGoldenFrames, false, single);
+  TEST("the single-hypothesis run runs", run.loaded, true);
+  if (run.loaded) compare_with_golden(scene, 1, run, max_tolerance_mm, mean_tolerance_mm);
 }
 
 /// Tolerances against the double golden run, per type: the double builds (host and QEMU) must
@@ -98,7 +112,8 @@ static void test_tracking_cube() {
   TEST_NEAR("mean camera position error on the cube is below 1 mm", run.mean_position_error_mm, 0, 1.0);
   double max_mm = 0, mean_mm = 0;
   tolerances(max_mm, mean_mm);
-  compare_with_golden(Scene::kCube, run, max_mm, mean_mm);
+  compare_with_golden(Scene::kCube, TrackerParams{}.hypotheses, run, max_mm, mean_mm);
+  compare_single_hypothesis_with_golden(Scene::kCube, max_mm, mean_mm);
 }
 
 static void test_tracking_wood_toy() {
@@ -112,7 +127,8 @@ static void test_tracking_wood_toy() {
   TEST_NEAR("mean camera position error on the wood toy is below 2 mm", run.mean_position_error_mm, 0, 2.0);
   double max_mm = 0, mean_mm = 0;
   tolerances(max_mm, mean_mm);
-  compare_with_golden(Scene::kWoodToy, run, max_mm, mean_mm);
+  compare_with_golden(Scene::kWoodToy, TrackerParams{}.hypotheses, run, max_mm, mean_mm);
+  compare_single_hypothesis_with_golden(Scene::kWoodToy, max_mm, mean_mm);
 }
 
 TESTMAIN(test_tracking_cube)

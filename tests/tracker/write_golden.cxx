@@ -15,9 +15,13 @@ int main(int argc, char* argv[]) {
     return 2;
   }
   using edgetrack_test::Scene;
-  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {
-    const edgetrack_test::SequenceRun run = edgetrack_test::run_sequence(scene, edgetrack_test::kGoldenFrames, false);
-    const std::string path = std::string(argv[1]) + "/" + edgetrack_test::golden_name(scene);
+  for (Scene scene : {Scene::kCube, Scene::kWoodToy})
+    for (int hypotheses : {edgetrack::TrackerParams{}.hypotheses, 1}) {
+    edgetrack::TrackerParams params;
+    params.hypotheses = hypotheses;
+    const edgetrack_test::SequenceRun run =
+        edgetrack_test::run_sequence(scene, edgetrack_test::kGoldenFrames, false, params);
+    const std::string path = std::string(argv[1]) + "/" + edgetrack_test::golden_name(scene, hypotheses);
     if (!run.loaded || !edgetrack_test::write_golden(path, run)) {
       std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
       return 1;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <utility>
 
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_least_squares_function.h"
@@ -53,7 +52,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
       const Vec2& n = m.point.normal;
       unweighted_[i] = {n.x * camera.px, n.y * camera.py,
-                        n.x * (camera.u0 - m.found.x) + n.y * (camera.v0 - m.found.y)};
+                        n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
       coefficients_[i] = weights.empty() ? unweighted_[i] : weights[i] * unweighted_[i];
     }
   }
@@ -184,23 +183,25 @@ real median_of(std::vector<real> values) {
   return values[mid];
 }
 
-/// Each match's hypothesis nearest to the pose where `distances` (signed, to `found`) were
-/// measured becomes its `found` (swapped with the alternative); `distances` become the chosen
-/// ones' |delta|. The line through hypothesis h is parallel to found's, so
-/// delta_h = delta + n . (found - h): no projection per hypothesis.
+/// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
+/// match's used() point) were measured; `distances` become the chosen ones' |delta|. The lines
+/// through the hypotheses are parallel (one normal), so delta_h = delta + n . (used - h): no
+/// projection per hypothesis.
 void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
   using std::fabs;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
-    real delta = distances[i];
-    for (int a = 0; a < m.alternative_count; ++a) {
-      const real d = delta + dot(m.point.normal, m.found - m.alternatives[a]);
-      if (fabs(d) < fabs(delta)) {
-        std::swap(m.found, m.alternatives[a]);
-        delta = d;
+    const Vec2 used = m.used();
+    const real delta = distances[i];
+    real nearest = delta;
+    for (int h = 0; h <= m.alternative_count; ++h) {
+      const real d = delta + dot(m.point.normal, used - (h == 0 ? m.found : m.alternatives[h - 1]));
+      if (fabs(d) < fabs(nearest)) {
+        nearest = d;
+        m.chosen = h;
       }
     }
-    distances[i] = fabs(delta);
+    distances[i] = fabs(nearest);
   }
 }
 
@@ -212,6 +213,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = start;
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   if (matches.size() < needed) return solution;
+  for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real> distances(matches.size()), weights;
   Se3 pose;

@@ -73,7 +73,7 @@ struct PoseSolution {
 /// projection at the previous solve's pose, and its weight follows that distance. Choosing per
 /// round, not per LM evaluation, keeps the residuals a smooth function within each solve, as
 /// MINPACK's trust region assumes; a robust round is one LM step, so the choice follows every
-/// step after the first solve. The chosen hypothesis is returned in `found`.
+/// step after the first solve. Each match's `chosen` says which hypothesis the last round used.
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params);
 

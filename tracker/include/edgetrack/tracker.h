@@ -36,7 +36,7 @@ struct TrackerParams {
   /// Edge hypotheses each control point keeps (1 to kMaxHypotheses): the strongest edge along
   /// its normal and the next local maxima of the likelihood; the pose step uses the one nearest
   /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match.
-  int hypotheses = 1;
+  int hypotheses = 3;
   GreyScaling grey = GreyScaling::kOnDemand;
 };
 
