@@ -125,7 +125,7 @@ int track_main(int argc, char** argv) {
       {"--video", true, "write the overlay as a video (host)"},
       {"--config", true, "ViSP XML whose <ecm> block sets the moving-edge threshold, mask size and number, range and "
                          "sample step (mu1/mu2 are read, not used: no contrast is kept between frames)"},
-      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
+      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 3): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
