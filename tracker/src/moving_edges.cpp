@@ -181,7 +181,8 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
     site.track(grey, &me, false);
     if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
     const int strongest_i = site.get_i(), strongest_j = site.get_j();
-    EdgeMatch match;
+    matches.emplace_back();
+    EdgeMatch& match = matches.back();
     match.point = point;
     match.found = refined_edge_point(site, grey, me, point);
     if (hypotheses > 1) {
@@ -189,7 +190,6 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
       site.j = strongest_j;
       add_alternatives(site, grey, me, hypotheses, match);
     }
-    matches.push_back(match);
   }
   return matches;
 }

@@ -191,6 +191,10 @@ void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real
   using std::fabs;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
+    if (m.alternative_count == 0) {
+      distances[i] = fabs(distances[i]);
+      continue;
+    }
     const Vec2 used = m.used();
     const real delta = distances[i];
     real nearest = delta;
