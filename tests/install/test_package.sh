@@ -103,6 +103,20 @@ awk -v frames=$((last + 1)) '
   END { if (n != frames) { print n " frames printed, expected " frames; bad++ } ; exit bad > 0 }
 ' FS=, "$work/track.csv" FS=' ' "$work/minimal/minimal.out" || fail "minimal disagrees with edgetrack track"
 
+# Host: the AR example (OpenCV) on the same frames, read by OpenCV from an image pattern, tracks
+# as minimal does and writes one overlay image per frame.
+if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
+  configure "$source/examples/ar_overlay" "$work/ar_overlay" >"$work/ar_overlay.configure.log" 2>&1 &&
+    cmake --build "$work/ar_overlay" >"$work/ar_overlay.build.log" 2>&1 ||
+    { cat "$work/ar_overlay.configure.log" "$work/ar_overlay.build.log"; fail "examples/ar_overlay does not build"; }
+  mkdir -p "$work/frames" "$work/overlay"
+  for ((i = 0; i <= last; i++)); do ln -s "$mbt/cube/$(printf 'image%04d.pgm' $i)" "$work/frames/"; done
+  "$work/ar_overlay/ar_overlay" "$mbt/cube.cao" "$mbt/cube.xml" "$mbt/cube.0.pos" "$work/frames/image%04d.pgm" \
+    "$work/overlay/overlay%04d.png" >"$work/ar_overlay.out" || fail "ar_overlay failed"
+  cmp -s "$work/minimal/minimal.out" "$work/ar_overlay.out" || { diff "$work/minimal/minimal.out" "$work/ar_overlay.out"; fail "ar_overlay tracks otherwise than minimal"; }
+  [ "$(ls "$work"/overlay/overlay*.png | wc -l)" -eq $((last + 1)) ] || fail "ar_overlay did not write $((last + 1)) overlay images"
+fi
+
 # A consumer may require the package's `real`; another one is refused with a clear message.
 configure "$source/tests/install/needs_real" "$work/needs_same" -DNEEDED_REAL="$real" >"$work/needs_same.log" 2>&1 ||
   { cat "$work/needs_same.log"; fail "find_package(edgetrack COMPONENTS $real) failed"; }
