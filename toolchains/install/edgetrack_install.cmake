@@ -5,12 +5,8 @@
 # Drop-in headers (vnl/, vcl/, visp3/, real/ ...) go under include/edgetrack/ports, which only
 # the edgetrack:: targets put on the include path, so a real VXL or ViSP on the same machine
 # keeps its own. Library files get an edgetrack_ prefix for the same reason.
-include(GNUInstallDirs)
+# The folders are set in edgetrack_install_dirs.cmake.
 include(CMakePackageConfigHelpers)
-
-set(EDGETRACK_INSTALL_PORTS_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/edgetrack/ports)
-set(EDGETRACK_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/edgetrack)
-set(EDGETRACK_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/edgetrack)
 
 # Exported name = build target; each ports/ library's headers are its include/ folder.
 set(edgetrack_port_targets edgetrack_real vcl testlib vnl vnl_algo netlib visp_me)
