@@ -4,7 +4,8 @@
 # prefix) or from the .deb files CPack makes, unpacked with dpkg-deb -x (mode deb). Then, in
 # fresh build trees: examples/minimal through find_package(edgetrack) and through pkg-config,
 # run on the first frames of ViSP's mbt/cube (under the emulator for ARM) and held to the
-# installed `edgetrack track` on the same frames; and find_package with a `real` component.
+# installed `edgetrack track` on the same frames; programs written for upstream VXL and ViSP
+# (tests/install/upstream_api); find_package with a `real` component.
 # usage: test_package.sh prefix|deb BUILD SOURCE WORK VERSION REAL VISP_IMAGES CXX_COMMAND DEB_ARCH
 #        [TOOLCHAIN EMULATOR]   (env EDGETRACK_CONSUMER_FLAGS: extra flags, e.g. sanitizers)
 set -euo pipefail
@@ -115,6 +116,15 @@ if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
     "$work/overlay/overlay%04d.png" >"$work/ar_overlay.out" || fail "ar_overlay failed"
   cmp -s "$work/minimal/minimal.out" "$work/ar_overlay.out" || { diff "$work/minimal/minimal.out" "$work/ar_overlay.out"; fail "ar_overlay tracks otherwise than minimal"; }
   [ "$(ls "$work"/overlay/overlay*.png | wc -l)" -eq $((last + 1)) ] || fail "ar_overlay did not write $((last + 1)) overlay images"
+fi
+
+# Programs written for upstream VXL and ViSP build unchanged on edgetrack::vnl_algo / visp_me.
+if [ "$mode" = prefix ]; then
+  configure "$source/tests/install/upstream_api" "$work/upstream_api" >"$work/upstream_api.log" 2>&1 &&
+    cmake --build "$work/upstream_api" >>"$work/upstream_api.log" 2>&1 ||
+    { cat "$work/upstream_api.log"; fail "the upstream-API programs do not build"; }
+  run "$work/upstream_api/visp_me_upstream" || fail "visp_me_upstream failed"
+  if [ "$real" = double ]; then run "$work/upstream_api/vnl_upstream" || fail "vnl_upstream failed"; fi
 fi
 
 # A consumer may require the package's `real`; another one is refused with a clear message.
