@@ -8,19 +8,21 @@
 # The folders are set in edgetrack_install_dirs.cmake.
 include(CMakePackageConfigHelpers)
 
-# Exported name = build target; each ports/ library's headers are its include/ folder.
+# Exported name = build target without its edgetrack_ prefix. A new ports/ library is added here.
 set(edgetrack_port_targets edgetrack_real vcl testlib vnl vnl_algo netlib visp_me)
-set(edgetrack_port_dirs real vcl testlib vnl vnl netlib visp)
 
 # One target for everything, as VXL's and ViSP's packages offer.
 add_library(edgetrack_all INTERFACE)
 target_link_libraries(edgetrack_all INTERFACE ${edgetrack_port_targets} tracker)
 
+# The same edgetrack:: names inside this tree, for a project that adds it as a subdirectory.
 foreach(target IN LISTS edgetrack_port_targets ITEMS tracker)
   string(REGEX REPLACE "^edgetrack_" "" name ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME edgetrack_${name})
+  add_library(edgetrack::${name} ALIAS ${target})
 endforeach()
 set_target_properties(edgetrack_all PROPERTIES EXPORT_NAME edgetrack)
+add_library(edgetrack::edgetrack ALIAS edgetrack_all)
 
 install(TARGETS ${edgetrack_port_targets} EXPORT edgetrack-targets COMPONENT dev
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -29,16 +31,15 @@ install(TARGETS tracker edgetrack_all EXPORT edgetrack-targets COMPONENT dev
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
-# Headers by folder, so headers added to ports/ later are installed without a list to update.
-list(REMOVE_DUPLICATES edgetrack_port_dirs)
-foreach(dir IN LISTS edgetrack_port_dirs)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/ports/${dir}/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}
-          COMPONENT dev FILES_MATCHING PATTERN "*.h" PATTERN "*.hxx")
+# Headers by folder (every ports/*/include), so headers added to ports/ are installed without
+# a list to update.
+file(GLOB edgetrack_port_include_dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/ports/*/include)
+foreach(dir IN LISTS edgetrack_port_include_dirs)
+  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR} COMPONENT dev)
 endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/ports/real/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}
         COMPONENT dev)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/tracker/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        COMPONENT dev FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/tracker/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
 
 install(EXPORT edgetrack-targets NAMESPACE edgetrack:: DESTINATION ${EDGETRACK_INSTALL_CMAKEDIR} COMPONENT dev)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/edgetrack-config.cmake.in
