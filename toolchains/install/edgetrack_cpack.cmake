@@ -18,17 +18,18 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME edgetrack)
 set(CPACK_PACKAGE_VENDOR edgetrack)
 set(CPACK_PACKAGE_CONTACT "edgetrack maintainers <edgetrack@localhost>")
-set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "edge-based 3D object tracker for processors without an FPU")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL tools dev)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${EDGETRACK_DEB_ARCHITECTURE})
 
+# Each description's first line is the package's synopsis (no CPACK_PACKAGE_DESCRIPTION_SUMMARY,
+# which CPack would put in front of it).
 set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME edgetrack)
 set(CPACK_DEBIAN_TOOLS_PACKAGE_SECTION science)
-set(CPACK_COMPONENT_TOOLS_DESCRIPTION
-    "edgetrack command line: synthetic sequences, tracking, evaluation\n The markerless edge-based tracker of Lima, Teichrieb and Kelner, built with real = ${EDGETRACK_REAL}, and its sample models.")
+set(CPACK_DEBIAN_TOOLS_DESCRIPTION
+    "edge-based 3D object tracker for processors without an FPU (command line)\n The markerless edge-based tracker of Lima, Teichrieb and Kelner, built with real = ${EDGETRACK_REAL}: synthetic sequences, tracking, evaluation; and its sample models.")
 # The host tools link OpenCV, OSMesa and X11: dpkg-shlibdeps (dpkg-dev) names their packages.
 # The ARM tools are static.
 if(NOT CMAKE_CROSSCOMPILING)
@@ -37,6 +38,6 @@ endif()
 
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME libedgetrack-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
-set(CPACK_COMPONENT_DEV_DESCRIPTION
-    "edgetrack tracker library and its VXL vnl and ViSP moving-edge ports (development files)\n Headers, static libraries built with real = ${EDGETRACK_REAL}, the CMake package (find_package(edgetrack)) and edgetrack.pc.")
+set(CPACK_DEBIAN_DEV_DESCRIPTION
+    "edge-based 3D object tracker, vnl and ViSP moving-edge ports (development files)\n Headers, static libraries built with real = ${EDGETRACK_REAL}, the CMake package (find_package(edgetrack)) and edgetrack.pc.")
 include(CPack)
