@@ -8,7 +8,7 @@
 # tests/run-all.sh builds (host-fuzz).
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-build=$1 seconds=$2
+build=$(cd "$1" && pwd) seconds=$2
 shift 2
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(cao obj pos points camera_xml netpbm raw_rgb565 pose_table)
@@ -22,9 +22,11 @@ for target in "${targets[@]}"; do
   cp -n "$here/corpus/$target"/* "$work/corpus/"
   (cd "$work" && ASAN_OPTIONS=detect_leaks=1 "$fuzzer" -max_total_time="$seconds" -timeout=1 -rss_limit_mb=2048 \
      -max_len=65536 -artifact_prefix="$work/findings/" -print_final_stats=1 corpus >"$work/log.txt" 2>&1)
+  status=$?
   stat() { sed -n "s/^stat::$1: *//p" "$work/log.txt" | tail -n 1; }
   findings=$(ls "$work/findings" | tr '\n' ' ')
-  [ -z "$findings" ] || found=1
+  [ "$status" -eq 0 ] && [ -z "$findings" ] && [ -n "$(stat number_of_executed_units)" ] ||
+    { found=1; findings="${findings:-the fuzzer exited with $status: $work/log.txt}"; }
   echo "| $target | $seconds | $(stat number_of_executed_units) | $(ls "$work/corpus" | wc -l) | $(stat peak_rss_mb) | $(stat slowest_unit_time_sec) | ${findings:-none} |"
 done
 exit $found
