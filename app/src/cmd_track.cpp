@@ -145,7 +145,7 @@ int track_main(int argc, char** argv) {
   }
   SourceOptions source_options;
   source_options.images = a.text("--images");
-  auto first = a.integer("--first", -1), last = a.integer("--last", -1), device = a.integer("--camera-device", -1);
+  auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);
   auto factor = a.integer("--downscale", 1);
   auto raw = a.size("--raw-size", source_options.raw_width, source_options.raw_height);
   for (const Error* bad : {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error()})

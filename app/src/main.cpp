@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "real/real_config.h"
+#include "guarded.h"
 
 int main(int argc, char** argv) {
   using edgetrack_app::Command;
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
   }
   if (argc >= 2) {
     for (const Command& c : commands)
-      if (std::strcmp(argv[1], c.name) == 0) return c.run(argc - 1, argv + 1);
+      if (std::strcmp(argv[1], c.name) == 0) return edgetrack_app::run_guarded(c.name, c.run, argc - 1, argv + 1);
   }
   const bool asked = argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "help") == 0);
   std::FILE* out = asked ? stdout : stderr;
