@@ -79,6 +79,25 @@ case $name in
     "$edgetrack" eval --poses "$work/short.csv" --truth "$work/truth.csv" --coverage >"$work/out.txt" || fail "--coverage refused"
     grep -q "coverage: 2 of 3 truth frames tracked (first missing: 2)" "$work/out.txt" || fail "no coverage line"
     echo "ok: every bad table refused, --coverage reports" ;;
+  pose_and_points_values_checked)
+    printf '0.01\n0\n0.6\nnan\n0\n0\n' >"$work/nan.pos"
+    expect_error "$work/nan.pos:4: tux (rad) is not a finite number" "$edgetrack" track --model "$mbt/cube.cao" \
+      --camera "$mbt/cube.xml" --init-pose "$work/nan.pos" --images "$mbt/cube/image%04d.pgm" --last 1
+    printf '0\n0\n1e308\n0\n0\n0\n' >"$work/far.pos"
+    expect_error "$work/far.pos:3: tz (m) is out of its range (-1000..1000)" "$edgetrack" track --model "$mbt/cube.cao" \
+      --camera "$mbt/cube.xml" --init-pose "$work/far.pos" --images "$mbt/cube/image%04d.pgm" --last 1
+    printf '4\n0 0 0\n0.1 0 0\n0 inf 0\n0 0 0.1\n' >"$work/inf.init"
+    printf '1 1\n2 2\n3 3\n4 4\n' >"$work/ok.txt"
+    expect_error "$work/inf.init:4: Y (m) is not a finite number" "$edgetrack" track --model "$mbt/cube.cao" \
+      --camera "$mbt/cube.xml" --init "$work/inf.init" --init-points "$work/ok.txt" --images "$mbt/cube/image%04d.pgm"
+    printf '4.5\n' >"$work/count.init"
+    expect_error "$work/count.init:1: the number of points is not a whole number" "$edgetrack" track \
+      --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init "$work/count.init" --init-points "$work/ok.txt" \
+      --images "$mbt/cube/image%04d.pgm"
+    printf '1 1\n2 nan\n' >"$work/nan.txt"
+    printf '4\n0 0 0\n0.1 0 0\n0 0.1 0\n0 0 0.1\n' >"$work/ok.init"
+    expect_error "$work/nan.txt:2: a pixel coordinate is not a finite number" "$edgetrack" track --model "$mbt/cube.cao" \
+      --camera "$mbt/cube.xml" --init "$work/ok.init" --init-points "$work/nan.txt" --images "$mbt/cube/image%04d.pgm" ;;
   number_options_finite)
     for bad in nan inf -inf; do
       expect_error "option --blur needs a finite number, not '$bad'" "$edgetrack" synth --out "$work/s" --blur "$bad"
