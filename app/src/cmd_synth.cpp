@@ -4,6 +4,8 @@
 /// occluder; writes the frames, truth.csv, the first pose (.pos) and the camera XML.
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -11,6 +13,7 @@
 #include "commands.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
+#include "edgetrack/scene_extras.h"
 #include "frame_source.h"
 #include "gl_renderer.h"
 #include "host_io.h"
@@ -50,6 +53,16 @@ RgbImage clutter_texture(int size, uint64_t seed) {
   return image;
 }
 
+/// The occluder's covered share of the object's image over the frames.
+struct CoverStats {
+  double sum = 0, low = 1, high = 0;
+  void add(double share) {
+    sum += share;
+    low = std::min(low, share);
+    high = std::max(high, share);
+  }
+};
+
 /// Adds Gaussian noise (sigma grey levels) and a Gaussian blur (sigma pixels), in place.
 void degrade(RgbImage& image, double noise, double blur, uint64_t seed) {
   cv::Mat mat(image.height, image.width, CV_8UC3, image.rgb.data());
@@ -68,7 +81,7 @@ void degrade(RgbImage& image, double noise, double blur, uint64_t seed) {
 int synth_main(int argc, char** argv) {
   const std::string synopsis =
       "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--noise S] [--blur S] [--occluder] [--rgb565]";
+      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--clutter MM] [--rgb565]";
   const std::vector<OptionSpec> specs = {
       {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
       {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
@@ -76,9 +89,12 @@ int synth_main(int argc, char** argv) {
       {"--size", true, "image size for --camera, WIDTHxHEIGHT (default 320x240)"},
       {"--trajectory", true, "paper (default) or a CSV with the header of truth.csv"},
       {"--frames", true, "number of frames (default 60)"},
+      {"--speed", true, "the same path K times faster: frame k shows trajectory pose K k, interpolated (default 1)"},
       {"--noise", true, "Gaussian noise, grey levels sigma (default 2)"},
       {"--blur", true, "Gaussian blur, pixels sigma (default 0.6)"},
       {"--occluder", false, "a dark bar crossing the view in front of the model"},
+      {"--cover", true, "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping across it"},
+      {"--clutter", true, "dark lines parallel to every model edge, this many mm beside it, away from the model's centre"},
       {"--rgb565", false, "write raw RGB565 frames (.rgb565) instead of PPM"},
       {"--supersample", true, "samples per pixel along each axis (default 4)"},
       {"--seed", true, "seed of the backdrop and the noise (default 1)"},
@@ -100,9 +116,17 @@ int synth_main(int argc, char** argv) {
   auto blur = a.number("--blur", 0.6);
   auto supersample = a.integer("--supersample", 4);
   auto seed = a.integer("--seed", 1);
-  for (const auto* bad : {&frames.error(), &noise.error(), &blur.error(), &supersample.error(), &seed.error()})
+  auto speed = a.number("--speed", 1.0);
+  auto cover = a.number("--cover", 0.0);
+  auto clutter_mm = a.number("--clutter", 0.0);
+  for (const auto* bad : {&frames.error(), &noise.error(), &blur.error(), &supersample.error(), &seed.error(),
+                          &speed.error(), &cover.error(), &clutter_mm.error()})
     if (!bad->message.empty()) return report("synth", *bad) + 1;
   if (frames.value() <= 0) return report("synth", {"", 0, "--frames must be positive"}) + 1;
+  if (speed.value() < 1 || speed.value() > 16) return report("synth", {"", 0, "--speed must be 1..16"}) + 1;
+  const int slow_frames = static_cast<int>(std::ceil(speed.value() * (frames.value() - 1))) + 1;
+  if (cover.value() < 0 || cover.value() >= 1) return report("synth", {"", 0, "--cover must be a share in [0, 1)"}) + 1;
+  if (clutter_mm.value() < 0 || clutter_mm.value() > 50) return report("synth", {"", 0, "--clutter must be 0..50 mm"}) + 1;
   if (supersample.value() < 1 || supersample.value() > 8) return report("synth", {"", 0, "--supersample must be 1..8"}) + 1;
 
   const std::string model_path = a.text("--model", data_dir() + "/models/cube60.cao");
@@ -118,8 +142,11 @@ int synth_main(int argc, char** argv) {
     if (!read.ok()) return report("synth", read.error());
     camera = read.value();
   }
-  auto poses = make_trajectory(a.text("--trajectory", "paper"), frames.value());
-  if (!poses.ok()) return report("synth", poses.error());
+  auto slow = make_trajectory(a.text("--trajectory", "paper"), slow_frames);
+  if (!slow.ok()) return report("synth", slow.error());
+  Result<std::vector<Se3>> poses = edgetrack::faster_poses(slow.value(), real(speed.value()), frames.value());
+  if (static_cast<int>(poses.value().size()) < frames.value())
+    return report("synth", {a.text("--trajectory", "paper"), 0, "fewer than --frames times --speed poses"});
   for (size_t k = 0; k < poses.value().size(); ++k) {
     auto in_front = check_in_front(model.value(), poses.value()[k], a.text("--trajectory", "paper") + " frame " + std::to_string(k));
     if (!in_front.ok()) return report("synth", in_front.error());
@@ -145,6 +172,11 @@ int synth_main(int argc, char** argv) {
   extras.backdrop_centre = centre - real(0.08) * towards_camera;
   extras.backdrop_size = 0.6;
   extras.occluder = a.has("--occluder");
+  const std::vector<edgetrack::Segment3> clutter = edgetrack::parallel_clutter(m, real(clutter_mm.value() / 1000));
+  if (clutter_mm.value() > 0) extras.clutter = &clutter;
+  CoverStats covered;
+  std::vector<uint8_t> mask;
+  std::vector<int> columns;
 
   auto truth = PoseTableWriter::open(out + "/truth.csv", false);
   if (!truth.ok()) return report("synth", truth.error());
@@ -155,6 +187,12 @@ int synth_main(int argc, char** argv) {
     const Se3& pose = poses.value()[k];
     // The occluder sweeps from left to right across the middle third of the sequence.
     extras.occluder_x = -0.03 + 0.06 * (k - frames.value() / 3.0) / (frames.value() / 3.0);
+    if (cover.value() > 0) {
+      edgetrack::silhouette_columns(m, camera, pose, mask, columns);
+      extras.band = edgetrack::occluder_band(columns, edgetrack::sweeping_centre(columns, k, frames.value()),
+                                             real(cover.value()));
+      covered.add(static_cast<double>(extras.band.covered_share));
+    }
     RgbImage image = renderer.value()->render_scene(m, pose, extras);
     degrade(image, noise.value(), blur.value(), static_cast<uint64_t>(seed.value()) * 7919u + static_cast<uint64_t>(k));
     const std::string path = expand_pattern(pattern, k);
@@ -176,6 +214,13 @@ int synth_main(int argc, char** argv) {
   if (!xml.ok()) return report("synth", xml.error());
   std::printf("synth: %d frames of %dx%d in %s, largest image motion %.2f px/frame\n", frames.value(), camera.width,
               camera.height, pattern.c_str(), largest_vertex_motion(m, camera, poses.value()));
+  if (cover.value() > 0)
+    std::printf("synth: occluder covers %.1f %% of the object's image on average (%.1f to %.1f %%)\n",
+                100 * covered.sum / frames.value(), 100 * covered.low, 100 * covered.high);
+  if (clutter_mm.value() > 0)
+    std::printf("synth: %zu clutter lines %.1f mm beside the edges, %.1f px off them on average in the first frame\n",
+                clutter.size(), clutter_mm.value(),
+                static_cast<double>(edgetrack::clutter_image_offset(m, clutter, camera, poses.value()[0])));
   std::printf("synth: truth %s/truth.csv, first pose %s/first.pos, camera %s/camera.xml\n", out.c_str(), out.c_str(),
               out.c_str());
   return 0;
