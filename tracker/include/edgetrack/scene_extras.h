@@ -48,6 +48,15 @@ struct Segment3 {
 /// beside the edge in every view and runs parallel to it.
 std::vector<Segment3> parallel_clutter(const EdgeModel& model, const real& offset);
 
+/// What a render adds to the model's scene: the occluder (none when the band is empty) and the
+/// clutter lines (none when null), each drawn flat in its own grey.
+struct SceneAdditions {
+  OccluderBand band;
+  const std::vector<Segment3>* clutter = nullptr;
+  int occluder_grey = 45;
+  int clutter_grey = 25;
+};
+
 /// The mean image distance (pixels) between each clutter line's middle and its edge's image line,
 /// at one pose: how far off the edges the distractors look.
 real clutter_image_offset(const EdgeModel& model, const std::vector<Segment3>& clutter, const PinholeCamera& camera,
