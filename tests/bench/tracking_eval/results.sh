@@ -43,11 +43,12 @@ generated_row() {
   local motion share
   motion=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$seq.txt")
   share=$(sed -n 's/.*covers \([0-9.]*\) % .*/\1 %/p' "$seq.txt")
-  printf '| %s | %s | %s | %d | %.3f | %.3f | %.3f | %d | %.3f | %.3f | %.3f |\n' "$label" "$motion" "${share:--}" \
+  printf '| %s | %s | %s | %d | %.3f | %.3f | %.3f | %d | %.3f | %.3f | %.3f | %.3f / %.3f |\n' "$label" "$motion" "${share:--}" \
     "$(value lost "$work/eval.txt")" "$(value distance_mm "$work/eval.txt")" "$(value max_distance_mm "$work/eval.txt")" \
     "$(value rotation_deg "$work/eval.txt")" "$(value visp_lost "$work/compare.txt")" \
     "$(value visp_distance_mm "$work/compare.txt")" "$(value visp_max_distance_mm "$work/compare.txt")" \
-    "$(value visp_rotation_deg "$work/compare.txt")"
+    "$(value visp_rotation_deg "$work/compare.txt")" "$(value ours_median_ms "$work/compare.txt")" \
+    "$(value visp_median_ms "$work/compare.txt")"
 }
 
 # mbt_row MODEL DOWNSCALE: `track` with cube.xml alone, then `compare`; "refused" with the reason.
@@ -89,10 +90,11 @@ echo "$clutter_mm mm beside it (\`--clutter $clutter_mm\`, $(sed -n 's/.* \([0-9
 echo "Both trackers start from the true first pose with their defaults and the camera-only XML that"
 echo "synth writes. Ours: \`edgetrack track\` (its lost rule) and \`edgetrack eval\`; ViSP 3.5's"
 echo "vpMbGenericTracker (edge): \`edgetrack compare --truth\`, lost when track() throws. Errors: the"
-echo "camera position in the object frame (mean and largest distance, mm) and the rotation (degrees)."
+echo "camera position in the object frame (mean and largest distance, mm) and the rotation (degrees);"
+echo "median ms of each tracking call in \`compare\`."
 echo
-echo "| sequence | motion px/frame | covered | lost | mean mm | largest mm | rotation deg | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| sequence | motion px/frame | covered | lost | mean mm | largest mm | rotation deg | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg | median ms ours / ViSP |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
   [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
   generated_row "$name, slow" "${model}_slow" "$models/$model.cao"
