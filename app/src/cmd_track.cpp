@@ -12,6 +12,7 @@
 #include "args.h"
 #include "click_init.h"
 #include "commands.h"
+#include "downscaled_tracking.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
@@ -79,14 +80,6 @@ bool frame_trusted(const edgetrack::FrameResult& result, const std::vector<edget
   std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(mid), distances.end());
   const double chance_share = 0.4, floor_px = 1.0;
   return distances[mid] <= std::max(chance_share * params.me.getRange(), floor_px);
-}
-
-/// The camera for a frame `factor` times smaller: the same rays land at (u + 0.5) / factor - 0.5.
-PinholeCamera downscaled(const PinholeCamera& camera, int factor) {
-  if (factor <= 1) return camera;
-  const real f(factor), half(0.5);
-  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
-          camera.width / factor, camera.height / factor};
 }
 
 /// The initial pose from a .init file and the image positions of its points (full-size pixels).
@@ -168,13 +161,7 @@ int track_main(int argc, char** argv) {
       std::fprintf(stderr, "note: %s: <mu1>/<mu2> are not used: sites are re-sampled every frame, so there is no "
                    "previous contrast to compare with\n", a.text("--config").c_str());
   }
-  // The sample step and the range (defaults or <ecm>) are pixels of the input frames, like the
-  // camera: scaled with it, the smaller frames get the same control points on the object and a
-  // search that reaches no farther into the scene (rounded down, at least 1 pixel).
-  if (factor.value() > 1) {
-    params.sampling.step = params.sampling.step / real(factor.value());
-    params.me.setRange(std::max(1u, params.me.getRange() / static_cast<unsigned>(factor.value())));
-  }
+  downscale_settings(params, factor.value());  // the defaults or <ecm>, in pixels of the input frames
   auto source = open_frame_source(source_options);
   if (!source.ok()) return report("track", source.error());
   Frame frame;

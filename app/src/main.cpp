@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   commands.push_back(
       {"eval", "compare tracked poses with ground truth; plots like the paper's Fig. 4 and 5", edgetrack_app::eval_main});
   for (const Command& c : edgetrack_app::host_commands()) commands.push_back(c);
+  for (const Command& c : edgetrack_app::comparison_commands()) commands.push_back(c);
   if (argc >= 2 && std::strcmp(argv[1], "--version") == 0) {
     std::printf("edgetrack %s (real = %s)\n", EDGETRACK_VERSION, EDGETRACK_REAL_NAME);
     return 0;

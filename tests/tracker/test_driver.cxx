@@ -9,6 +9,7 @@ DECLARE(test_edge_id);
 DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
+DECLARE(test_scene_extras);
 DECLARE(test_pose_solver);
 
 void register_tests() {
@@ -19,6 +20,7 @@ void register_tests() {
   REGISTER(test_edge_id_buffer);
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
+  REGISTER(test_scene_extras);
   REGISTER(test_pose_solver);
 }
 

@@ -3,6 +3,7 @@
 #include "edgetrack/scene_renderer.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 
 #include "edgetrack/raster.h"
@@ -17,6 +18,9 @@ uint32_t next_random(uint32_t& state) {
   state ^= state << 5;
   return state;
 }
+
+/// The face index of clutter lines in the supersampled buffer (-1 is the background).
+constexpr int16_t kClutterFace = -2;
 
 uint16_t grey_to_rgb565(int grey) {
   if (grey < 0) grey = 0;
@@ -53,6 +57,36 @@ SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& styl
 
 void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
                            Rgb565Frame& frame) {
+  render(model, camera_from_model, noise_seed, SceneAdditions{}, frame);
+}
+
+void SceneRenderer::draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model) {
+  const int fw = fine_camera_.width, fh = fine_camera_.height, one = 1 << kSubpixelBits;
+  const int half_width = (3 * style_.supersample * one) / 4;  // 1.5 image pixels wide, in Q4 fine pixels
+  for (const Segment3& line : clutter) {
+    ScreenVertex a, b;
+    if (!clip_and_project_segment(fine_camera_, camera_from_model * line.a, camera_from_model * line.b, a, b)) continue;
+    const int64_t dx = b.x - a.x, dy = b.y - a.y;
+    const int steps = static_cast<int>(std::max(std::abs(dx), std::abs(dy)) / one) + 1;
+    for (int i = 0; i <= steps; ++i) {
+      // Inverse depth is linear in screen space, so it interpolates like x and y.
+      const int32_t x = static_cast<int32_t>(a.x + dx * i / steps), y = static_cast<int32_t>(a.y + dy * i / steps);
+      const int32_t w = static_cast<int32_t>(a.w + (static_cast<int64_t>(b.w) - a.w) * i / steps);
+      for (int py = (y - half_width) >> kSubpixelBits; py <= (y + half_width) >> kSubpixelBits; ++py)
+        for (int px = (x - half_width) >> kSubpixelBits; px <= (x + half_width) >> kSubpixelBits; ++px) {
+          if (px < 0 || py < 0 || px >= fw || py >= fh) continue;
+          const size_t k = static_cast<size_t>(py) * fw + px;
+          if (w > depth_[k]) {
+            depth_[k] = w;
+            face_[k] = kClutterFace;
+          }
+        }
+    }
+  }
+}
+
+void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
+                           const SceneAdditions& additions, Rgb565Frame& frame) {
   using std::fabs;
   std::fill(depth_.begin(), depth_.end(), 0);
   std::fill(face_.begin(), face_.end(), int16_t(-1));
@@ -83,6 +117,8 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
       });
   }
 
+  if (additions.clutter) draw_clutter(*additions.clutter, camera_from_model);
+
   frame.width = camera_.width;
   frame.height = camera_.height;
   frame.pixels.resize(static_cast<size_t>(frame.width) * frame.height);
@@ -96,8 +132,9 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
       for (int sy = 0; sy < s; ++sy)
         for (int sx = 0; sx < s; ++sx) {
           const int id = face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)];
-          sum += id >= 0 ? shade[id] : bg;
+          sum += id >= 0 ? shade[id] : id == kClutterFace ? additions.clutter_grey : bg;
         }
+      if (x >= additions.band.x_begin && x < additions.band.x_end) sum = additions.occluder_grey * samples;
       const int noise = static_cast<int>(next_random(state) % static_cast<uint32_t>(noise_range)) - style_.noise;
       frame.pixels[static_cast<size_t>(y) * camera_.width + x] = grey_to_rgb565((sum + samples / 2) / samples + noise);
     }

@@ -9,6 +9,7 @@
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
@@ -37,8 +38,14 @@ class SceneRenderer {
 
   /// Draws the model at camera_from_model; `noise_seed` picks the frame's noise.
   void render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed, Rgb565Frame& frame);
+  /// The same with `additions` (scene_extras.h): clutter lines hidden where the model is in front
+  /// of them, 1.5 pixels wide, and the occluder's columns over everything.
+  void render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed, const SceneAdditions& additions,
+              Rgb565Frame& frame);
 
  private:
+  /// Draws the lines into the supersampled depth and face buffers as face kClutterFace.
+  void draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model);
   PinholeCamera camera_;
   PinholeCamera fine_camera_;  ///< the camera at the supersampled size
   SceneStyle style_;
