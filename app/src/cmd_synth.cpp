@@ -105,7 +105,11 @@ Result<SynthOptions> read_options(const Args& a) {
   o.frames = frames.value(), o.supersample = supersample.value(), o.seed = seed.value();
   o.speed = speed.value(), o.noise = noise.value(), o.blur = blur.value();
   o.cover = cover.value(), o.clutter_mm = clutter_mm.value();
-  if (o.frames <= 0) return Error{"", 0, "--frames must be positive"};
+  if (o.frames <= 0 || o.frames > 100000) return Error{"", 0, "--frames must be 1..100000"};
+  // Past 255 grey levels noise is only saturation; past 50 px a blur leaves no edge to track,
+  // and its cost grows with its width.
+  if (o.noise < 0 || o.noise > 255) return Error{"", 0, "--noise must be 0..255 grey levels"};
+  if (o.blur < 0 || o.blur > 50) return Error{"", 0, "--blur must be 0..50 pixels"};
   if (o.speed < 1 || o.speed > 16) return Error{"", 0, "--speed must be 1..16"};
   if (o.cover < 0 || o.cover >= 1) return Error{"", 0, "--cover must be a share in [0, 1)"};
   if (o.clutter_mm < 0 || o.clutter_mm > 50) return Error{"", 0, "--clutter must be 0..50 mm"};
@@ -120,6 +124,13 @@ Result<SynthOptions> read_options(const Args& a) {
     if (!read.ok()) return read.error();
     o.camera = read.value();
   }
+  if (!usable_image_size(static_cast<long long>(o.camera.width) * o.supersample,
+                         static_cast<long long>(o.camera.height) * o.supersample))
+    return Error{"", 0, "the image rendered at --supersample " + std::to_string(o.supersample) + " would be " +
+                            std::to_string(static_cast<long long>(o.camera.width) * o.supersample) + "x" +
+                            std::to_string(static_cast<long long>(o.camera.height) * o.supersample) +
+                            ": at most " + std::to_string(kMaxImageSide) + " pixels a side and " +
+                            std::to_string(kMaxImagePixels >> 20) + " M pixels"};
   return o;
 }
 

@@ -101,6 +101,11 @@ case $name in
   number_options_finite)
     for bad in nan inf -inf; do
       expect_error "option --blur needs a finite number, not '$bad'" "$edgetrack" synth --out "$work/s" --blur "$bad"
-    done ;;
+    done
+    expect_error "--blur must be 0..50 pixels" timeout 10 "$edgetrack" synth --out "$work/s" --blur 1e6
+    printf '<camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0></camera>\n' >"$work/c.xml"
+    expect_error "option --size asks for 40000x40000" "$edgetrack" synth --out "$work/s" --camera "$work/c.xml" --size 40000x40000
+    expect_error "would be 32768x16384" "$edgetrack" synth --out "$work/s" --camera "$work/c.xml" --size 8192x4096 \
+      --supersample 4 ;;
   *) fail "unknown case" ;;
 esac
