@@ -283,6 +283,10 @@ int track_main(int argc, char** argv) {
     auto closed = poses->close();
     if (!closed.ok()) return report("track", closed.error());
   }
+  if (video) {
+    auto closed = video->close();
+    if (!closed.ok()) return report("track", closed.error());
+  }
   print_table1(totals);
   return 0;
 }

@@ -60,7 +60,19 @@ case $name in
       --poses "$work/poses.csv"
     [ ! -e "$work/poses.csv" ] || fail "a failed run left poses.csv"
     [ -s "$work/poses.csv.partial" ] || fail "the rows written before the failure are not kept in poses.csv.partial"
-    echo "ok: only poses.csv.partial" ;;
+    echo "ok: only poses.csv.partial"
+    expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
+      --video "$work/overlay.mp4"
+    [ ! -e "$work/overlay.mp4" ] || fail "a failed run left overlay.mp4"
+    [ -s "$work/overlay.partial.mp4" ] || fail "no overlay.partial.mp4"
+    track --images "$work/seq/image%04d.pgm" --last 2 --video "$work/done.mp4" || fail "track --video failed"
+    [ -s "$work/done.mp4" ] && [ ! -e "$work/done.partial.mp4" ] || fail "a complete run did not name its video"
+    echo "ok: a video is named only when complete" ;;
+  video_refusal_is_one_line)
+    expect_error "a video is written as .mp4, .avi, .mkv or .mov, not '.xyz'" track --images "$mbt/cube/image%04d.pgm" \
+      --last 2 --video "$work/x.xyz"
+    expect_error "cannot open the video for writing" track --images "$mbt/cube/image%04d.pgm" --last 2 \
+      --video "$work/no/such/dir/x.mp4" ;;
   eval_refuses_bad_tables)
     printf '%s\n0,0,0,0.15,0,0,0\n1,0,0,0.15,0,0,0\n2,0,0,0.15,0,0,0\n' "$truth_header" >"$work/truth.csv"
     row() { echo "$1,0,0,0.15,$2,0,0,50,1.0,ok"; }
