@@ -18,8 +18,8 @@ namespace {
 /// What keeps it there: the moving edges' sub-pixel match moves continuously with the control
 /// point (a site's whole pixel jumps when rounding moves its truncated path) and three robust
 /// rounds in the pose step (one left the pose leaning on gross mismatches). Measured (one-step
-/// robust rounds, LM in millimetres, constant-velocity prediction): largest 0.030 mm (cube) and
-/// 0.043 mm (toy), mean 0.0019 and 0.0031 mm.
+/// robust rounds, LM in millimetres): largest 0.021 mm (cube) and 0.026 mm (toy), mean 0.0014
+/// mm; on the five times faster sequences 0.011 and 0.015 mm, mean 0.0012 and 0.0014 mm.
 /// Rare single-point events remain (two competing edges within the search range, a point on an
 /// occluding contour, a pixel the renderer rounds differently): over 64 runs with other noise
 /// seeds and trajectory phases, with robust rounds run to convergence, one of them moved a

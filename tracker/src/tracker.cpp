@@ -95,7 +95,6 @@ bool Tracker::reset(const Se3& camera_from_model) {
   if (camera_from_model.translation().z <= real(0)) return false;
   camera_from_model_ = camera_from_model;
   motion_.reset(camera_from_model);
-  predicted_shift_ = real(0);
   return true;
 }
 
@@ -103,7 +102,7 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   FrameResult result;
   const std::uint64_t saturations = fixedpoint::saturation_count();
   const Se3 predicted = camera_from_model_;
-  me_.setRange(motion_.search_range(params_.me.getRange(), predicted_shift_));
+  me_.setRange(motion_.search_range(params_.me.getRange()));
   StepClock clock;
   begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
@@ -145,18 +144,18 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
   m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
   m.range = me_.getRange();
   m.saturations = fixedpoint::saturation_count() - saturations;
+  m.after_loss = motion_.lost_last_frame();
   const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);
   result.status = judged.status;
   result.reason = judged.reason;
   if (result.status == TrackingStatus::kLost) {
     result.camera_from_model = predicted;
-    motion_.lose();
+    motion_.lose(model_, camera_);
   } else {
     result.camera_from_model = solved;
-    motion_.trust(solved);
+    motion_.trust(solved, model_, camera_, params_.me.getRange());
   }
   camera_from_model_ = motion_.prediction();
-  predicted_shift_ = largest_image_shift(model_, camera_, result.camera_from_model, camera_from_model_);
 }
 
 }  // namespace edgetrack

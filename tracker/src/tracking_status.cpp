@@ -22,6 +22,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kFewMatched: return "under half the visible points matched";
     case StatusReason::kManyOutliers: return "half or more of the matches outliers";
     case StatusReason::kLooseFit: return "residual scale above a tracked frame's";
+    case StatusReason::kNotReacquired: return "not found again after a loss";
     case StatusReason::kLargeCorrection: return "pose moved farther than the search range";
     case StatusReason::kSaturated: return "fixed-point saturation";
   }
@@ -30,7 +31,10 @@ const char* reason_name(StatusReason reason) {
 
 FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points) {
   const auto lost = [](StatusReason reason) { return FrameStatus{TrackingStatus::kLost, reason}; };
-  const auto uncertain = [](StatusReason reason) { return FrameStatus{TrackingStatus::kUncertain, reason}; };
+  const auto uncertain = [&m](StatusReason reason) {
+    return m.after_loss ? FrameStatus{TrackingStatus::kLost, StatusReason::kNotReacquired}
+                        : FrameStatus{TrackingStatus::kUncertain, reason};
+  };
   if (m.visible < min_points) return lost(StatusReason::kTooFewVisible);
   if (!m.solved || m.kept < min_points) return lost(StatusReason::kPoseFailed);
   real lost_scale = params.lost_range_share * real(static_cast<int>(m.range));

@@ -10,9 +10,10 @@
 namespace edgetrack {
 
 struct MotionParams {
-  /// The share of the measured motion per frame predicted into the next frame (0: the paper's
-  /// tracker, which starts every frame from the last pose; 1: constant velocity). On the
-  /// generated sequences constant velocity predicted best (docs/ARCHITECTURE.md).
+  /// The share of the measured motion per frame predicted into the next frame, once the motion
+  /// exceeds twice the range (MotionModel::trust; 0: the paper's tracker, which starts every
+  /// frame from the last pose; 1: constant velocity, which predicted best on the generated
+  /// sequences, docs/ARCHITECTURE.md).
   real velocity_share = real(1);
   /// Per lost frame, the prediction moves on by this much less of the velocity: the longer
   /// nothing is measured, the less the last velocity says (0.8: a fifth less per frame, five
@@ -43,16 +44,24 @@ class MotionModel {
   /// The pose to start the next frame from: the last trusted pose moved on by the velocity
   /// once per frame since it (the velocity's share shrinks by `lost_damping` per lost frame).
   const Se3& prediction() const { return prediction_; }
-  /// A trusted frame's pose: updates the velocity from the last trusted pose and predicts on.
-  void trust(const Se3& camera_from_model);
+  /// A trusted frame's pose: measures the velocity from the last trusted pose and predicts the
+  /// next frame. The velocity is not applied while its image motion per frame is within the
+  /// configured `range`, in full from twice the range on, and in proportion in between: the
+  /// search alone finds a motion within its range, and a velocity measured from two poses
+  /// carries their noise, which on a small range (QVGA, 2 px) cost more than the motion it
+  /// predicted (docs/ARCHITECTURE.md).
+  void trust(const Se3& camera_from_model, const EdgeModel& model, const PinholeCamera& camera, unsigned range);
   /// A lost frame: the prediction moves on by the velocity, damped once more per lost frame;
   /// the next recovery_frames frames search wider.
-  void lose();
+  void lose(const EdgeModel& model, const PinholeCamera& camera);
+  /// True when the last frame was lost (lose() after the last trust() or reset()).
+  bool lost_last_frame() const { return frames_since_trusted_ > 1; }
   /// Starts again from `camera_from_model`, at rest, as a new model would.
   void reset(const Se3& camera_from_model);
   /// The moving-edge range for the next frame: `range` (twice it while recovering), grown by
-  /// range_per_motion of the predicted image motion beyond it, at most max_range_factor * range.
-  unsigned search_range(unsigned range, real predicted_shift_px) const;
+  /// range_per_motion of the image motion of the velocity beyond it, at most
+  /// max_range_factor * range.
+  unsigned search_range(unsigned range) const;
 
  private:
   MotionParams params_;
@@ -60,6 +69,7 @@ class MotionModel {
   Se3 prediction_;
   Twist velocity_{};
   real next_share_{0};  ///< the share of velocity_ the next lost frame moves the prediction by
+  real motion_px_{0};   ///< the image motion of one frame at velocity_ (largest_image_shift)
   bool moving_ = false;  ///< a trusted frame has been seen since the start: velocity_ is measured from it
   int frames_since_trusted_ = 1;
   int wide_left_;       ///< frames still searched with twice the range

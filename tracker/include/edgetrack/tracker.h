@@ -127,7 +127,6 @@ class Tracker {
   vpMe me_;
   Se3 camera_from_model_;
   MotionModel motion_;
-  real predicted_shift_{0};  ///< px, image motion from the last frame's pose to camera_from_model_
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
   StepObserver* step_observer_ = nullptr;

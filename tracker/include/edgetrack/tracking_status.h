@@ -20,9 +20,11 @@ enum class StatusReason {
   kFewMatched,        ///< uncertain: under half the visible control points matched and kept
   kManyOutliers,      ///< uncertain: the robust solve gave half or more of the matches no weight
   kLooseFit,          ///< uncertain: the robust residual scale is above a tracked frame's
+  kNotReacquired,     ///< lost: after a lost frame, only a frame that would be tracked counts as found again
   kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
   kSaturated          ///< uncertain: fixed-point results saturated during the frame
 };
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kSaturated) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);
@@ -40,6 +42,7 @@ struct FrameMeasures {
   real translation_change_mm{0};  ///< solved pose against the prediction
   real rotation_change_deg{0};
   unsigned range = 0;       ///< the moving-edge range this frame searched, px
+  bool after_loss = false;  ///< the previous frame was lost
   std::uint64_t saturations = 0;  ///< fixed-point saturations counted during the frame (0 in float builds)
 };
 
@@ -52,7 +55,7 @@ struct StatusParams {
   /// them on the model's edges the median is range (1/2 - p) / (1 - p); at p = 1/4 that is
   /// range / 3, a scale of 0.49 range. The floor keeps tracked frames (up to ~1 px) apart from
   /// it when the range is small.
-  real lost_range_share = real(0.49);
+  real lost_range_share = real(0.6);
   real lost_scale_floor_px = real(1.5);
   real min_matched_share = real(0.5);  ///< below: uncertain
   real min_inlier_share = real(0.5);   ///< below: uncertain (the median scale breaks down at half)
@@ -66,6 +69,8 @@ struct FrameStatus {
 /// The status rule: lost when there is nothing to track, the pose could not be solved, or the
 /// residuals look like chance; uncertain when the pose rests on a minority of the model, fits
 /// loosely, moved farther than the search reaches, or fixed point saturated; tracked otherwise.
+/// After a lost frame an uncertain one stays lost: the prediction it started from is weak, and
+/// a wider search on clutter finds fits that are loose but not at chance.
 /// `min_points` is the pose step's minimum (PoseParams::min_points).
 FrameStatus judge_frame(const FrameMeasures& measures, const StatusParams& params, int min_points);
 
