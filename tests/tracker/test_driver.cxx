@@ -10,6 +10,8 @@ DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
 DECLARE(test_pose_solver);
+DECLARE(test_status_rule);
+DECLARE(test_motion_model);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -20,6 +22,8 @@ void register_tests() {
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
   REGISTER(test_pose_solver);
+  REGISTER(test_status_rule);
+  REGISTER(test_motion_model);
 }
 
 DEFINE_MAIN

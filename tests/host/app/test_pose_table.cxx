@@ -23,6 +23,10 @@ static void test_pose_table() {
     row.frame = 4;
     row.lost = true;
     writer.value().write(row);
+    row.frame = 5;
+    row.lost = false;
+    row.uncertain = true;
+    writer.value().write(row);
     TEST("the poses file closes", writer.value().close().ok(), true);
   }
   std::ifstream in(path);
@@ -32,13 +36,14 @@ static void test_pose_table() {
   auto rows = read_pose_table(path, kPosesHeader);
   TEST("the poses file reads back", rows.ok(), true);
   if (rows.ok()) {
-    TEST_EQUAL("two rows", rows.value().size(), size_t(2));
+    TEST_EQUAL("three rows", rows.value().size(), size_t(3));
     TEST_EQUAL("frame number", rows.value()[0].frame, 3);
     TEST_NEAR("tz in metres (to the resolution of real)", rows.value()[0].t[2], 0.15, 1e-6);
     TEST_NEAR("thetaU x in radians", rows.value()[0].tu[0], 0.5, 1e-6);
     TEST_EQUAL("points", rows.value()[0].points, 61);
     TEST("status ok", rows.value()[0].lost, false);
     TEST("status lost", rows.value()[1].lost, true);
+    TEST("status uncertain", rows.value()[2].uncertain && !rows.value()[2].lost, true);
   }
   auto as_truth = read_pose_table(path, kTruthHeader);
   TEST("a poses file is not a truth file", as_truth.ok(), false);
