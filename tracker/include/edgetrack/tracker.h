@@ -32,6 +32,7 @@ struct TrackerParams {
   SamplingParams sampling;
   PoseParams pose;
   /// Moving-edge settings with upstream's meanings (range, threshold, mask size and number).
+  /// The range is the configured one: each frame searches it or wider (MotionModel::search_range).
   /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
   /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
   vpMe me;
