@@ -85,9 +85,10 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
       if (!parse_frame(cells[7], row.points))
         return Error{path, number, "points is not a whole number: '" + cells[7] + "'"};
       row.ms = values[7];
-      if (cells[9] != "ok" && cells[9] != "lost")
-        return Error{path, number, "status is '" + cells[9] + "', expected ok or lost"};
+      if (cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
+        return Error{path, number, "status is '" + cells[9] + "', expected ok, uncertain or lost"};
       row.lost = cells[9] == "lost";
+      row.uncertain = cells[9] == "uncertain";
     }
     rows.push_back(row);
   }
@@ -116,7 +117,8 @@ void PoseTableWriter::write(const PoseRow& row) {
   if (!file_) return;
   int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
                        row.tu[1], row.tu[2]);
-  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms, row.lost ? "lost" : "ok");
+  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms,
+                                           row.lost ? "lost" : row.uncertain ? "uncertain" : "ok");
   if (n >= 0) n = std::fprintf(file_, "\n");
   if (n < 0) failed_ = true;
 }

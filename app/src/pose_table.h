@@ -22,7 +22,8 @@ struct PoseRow {
   double tu[3] = {0, 0, 0};  ///< radians
   int points = 0;            ///< poses file only
   double ms = 0;
-  bool lost = false;
+  bool lost = false;       ///< status `lost`
+  bool uncertain = false;  ///< status `uncertain`; neither: `ok` (the tracker's status tracked)
 };
 
 /// Reads a poses or truth file; `header` is the header it must start with (extra columns after

@@ -10,6 +10,23 @@
 
 namespace edgetrack_test {
 
+/// What a frame of a sequence shows instead of the scene, for the status tests.
+enum class FrameContent {
+  kScene,     ///< the model over the textured background
+  kNoise,     ///< uniform noise over the whole frame
+  kFlat,      ///< one flat grey
+  kNoObject   ///< the background alone, as if the object were fully covered by the same texture
+};
+
+/// A sequence: the scene's trajectory sped up `subsample` times (true_poses), and per frame
+/// what it shows (empty: the scene in every frame). `poses`, when not empty, replaces the
+/// trajectory (one pose per frame).
+struct SequenceSpec {
+  int subsample = 1;
+  std::vector<FrameContent> content;
+  std::vector<edgetrack::Se3> poses;
+};
+
 struct SequenceRun {
   bool loaded = false;
   std::vector<edgetrack::Se3> truth;
@@ -27,6 +44,10 @@ struct SequenceRun {
 
 /// Tracks `frames` frames of the scene; `visibility_check` adds the ray-casting checks.
 SequenceRun run_sequence(Scene scene, int frames, bool visibility_check,
-                         const edgetrack::TrackerParams& params = edgetrack::TrackerParams{});
+                         const edgetrack::TrackerParams& params = edgetrack::TrackerParams{},
+                         const SequenceSpec& spec = SequenceSpec{});
+
+/// Frames of the run with the given status.
+int count_status(const SequenceRun& run, edgetrack::TrackingStatus status);
 
 }  // namespace edgetrack_test

@@ -16,8 +16,12 @@ std::string model_path(Scene scene) {
   return std::string(EDGETRACK_DATA_DIR) + (scene == Scene::kCube ? "/models/cube60.cao" : "/models/wood_toy.cao");
 }
 
-std::vector<Se3> true_poses(Scene scene, int frames) {
-  return scene == Scene::kCube ? cube_trajectory(frames) : wood_toy_trajectory(frames);
+std::vector<Se3> true_poses(Scene scene, int frames, int subsample) {
+  const std::vector<Se3> path =
+      scene == Scene::kCube ? cube_trajectory(frames * subsample) : wood_toy_trajectory(frames * subsample);
+  std::vector<Se3> poses;
+  for (int k = 0; k < frames; ++k) poses.push_back(path[static_cast<size_t>(k * subsample)]);
+  return poses;
 }
 
 bool bit_identical(const Se3& a, const Se3& b) {

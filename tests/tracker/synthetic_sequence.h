@@ -20,8 +20,9 @@ edgetrack::PinholeCamera qvga_camera();
 
 enum class Scene { kCube, kWoodToy };
 
-/// The true camera_from_model of each frame.
-std::vector<edgetrack::Se3> true_poses(Scene scene, int frames);
+/// The true camera_from_model of each frame; with `subsample` k, every k-th pose of the
+/// k * frames long trajectory: the same path k times faster.
+std::vector<edgetrack::Se3> true_poses(Scene scene, int frames, int subsample = 1);
 
 /// The model file of the scene, under data/models.
 std::string model_path(Scene scene);

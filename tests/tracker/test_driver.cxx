@@ -11,6 +11,8 @@ DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
 DECLARE(test_scene_extras);
 DECLARE(test_pose_solver);
+DECLARE(test_status_rule);
+DECLARE(test_motion_model);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -22,6 +24,8 @@ void register_tests() {
   REGISTER(test_scene_renderer);
   REGISTER(test_scene_extras);
   REGISTER(test_pose_solver);
+  REGISTER(test_status_rule);
+  REGISTER(test_motion_model);
 }
 
 DEFINE_MAIN

@@ -132,6 +132,15 @@ case $name in
     read -r worst at <<<"$(vertex_offset "$work/full.csv" "$work/qvga.csv")"
     echo "largest mean corner offset QVGA vs 640x480: $worst px at frame $at"
     less "$worst" 8.0 || fail "the QVGA pose leaves the 640x480 one by 8 px or more (frame $at)" ;;
+  mbt_cube_config_never_lost)
+    # With cube.xml's <ecm> (range 7, step 4), all 218 frames at 640x480 and at QVGA: the
+    # overlay sits on the cube throughout, and the tracker reports no frame lost.
+    track_cube --init-pose "$mbt/cube.0.pos" --last 217 --config "$mbt/cube.xml" --poses "$work/full.csv" ||
+      fail "track failed"
+    track_cube --init-pose "$mbt/cube.0.pos" --last 217 --config "$mbt/cube.xml" --downscale 2 \
+      --poses "$work/qvga.csv" || fail "track --downscale 2 failed"
+    check_poses "$work/full.csv" 218 100
+    check_poses "$work/qvga.csv" 218 50 ;;
   mbt_cube_config_applied)
     # cube.xml's <ecm>: step 4 samples about 2.5 times the points of the default 10 px, and the
     # run stays with the default one; an edge threshold no edge reaches loses every frame.

@@ -29,6 +29,10 @@ static void test_pose_table() {
     row.frame = 4;
     row.lost = true;
     writer.value().write(row);
+    row.frame = 5;
+    row.lost = false;
+    row.uncertain = true;
+    writer.value().write(row);
     TEST("the poses file closes", writer.value().close().ok(), true);
   }
   std::ifstream in(path);
@@ -38,7 +42,7 @@ static void test_pose_table() {
   auto rows = read_pose_table(path, kPosesHeader);
   TEST("the poses file reads back", rows.ok(), true);
   if (rows.ok()) {
-    TEST_EQUAL("two rows", rows.value().size(), size_t(2));
+    TEST_EQUAL("three rows", rows.value().size(), size_t(3));
     TEST_EQUAL("frame number", rows.value()[0].frame, 3);
     // Written from real: exact to 1e-6 in the floating types, to an ulp or two in fixed point.
     const double write_tolerance = std::max(1e-6, 2 * real_ulp());
@@ -47,6 +51,7 @@ static void test_pose_table() {
     TEST_EQUAL("points", rows.value()[0].points, 61);
     TEST("status ok", rows.value()[0].lost, false);
     TEST("status lost", rows.value()[1].lost, true);
+    TEST("status uncertain", rows.value()[2].uncertain && !rows.value()[2].lost, true);
   }
   auto as_truth = read_pose_table(path, kTruthHeader);
   TEST("a poses file is not a truth file", as_truth.ok(), false);
