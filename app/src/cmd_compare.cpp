@@ -60,8 +60,8 @@ Result<bool> ours_from_visp_xml(const std::string& xml, int width, int height, P
   return apply_ecm_config(ecm.value(), xml, params);
 }
 
-/// Whether our tracker lost the frame: the pose step found no pose.
-bool ours_lost(const edgetrack::FrameResult& result) { return !result.pose.solved; }
+/// Whether our tracker lost the frame, as its status says.
+bool ours_lost(const edgetrack::FrameResult& result) { return result.status == edgetrack::TrackingStatus::kLost; }
 
 PoseRow row_of(int frame, const Se3& pose, int points, double ms, bool lost) {
   PoseRow row = pose_row(frame, pose);
