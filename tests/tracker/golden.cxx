@@ -10,7 +10,9 @@ using namespace edgetrack;
 namespace edgetrack_test {
 
 std::string golden_name(Scene scene) {
-  return scene == Scene::kCube ? "cube60_double_positions.txt" : "wood_toy_double_positions.txt";
+  return scene == Scene::kCube      ? "cube60_double_positions.txt"
+         : scene == Scene::kWoodToy ? "wood_toy_double_positions.txt"
+                                    : "cube60_cylinder_double_positions.txt";
 }
 
 bool write_golden(const std::string& path, const SequenceRun& run) {

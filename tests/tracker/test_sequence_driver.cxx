@@ -4,12 +4,14 @@
 
 DECLARE(test_tracking_cube);
 DECLARE(test_tracking_wood_toy);
+DECLARE(test_tracking_cube_cylinder);
 DECLARE(test_tracker_grey);
 DECLARE(test_tracker_reset);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
   REGISTER(test_tracking_wood_toy);
+  REGISTER(test_tracking_cube_cylinder);
   REGISTER(test_tracker_grey);
   REGISTER(test_tracker_reset);
 }

@@ -15,7 +15,7 @@ int main(int argc, char* argv[]) {
     return 2;
   }
   using edgetrack_test::Scene;
-  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {
+  for (Scene scene : {Scene::kCube, Scene::kWoodToy, Scene::kCubeCylinder}) {
     const edgetrack_test::SequenceRun run = edgetrack_test::run_sequence(scene, edgetrack_test::kGoldenFrames, false);
     const std::string path = std::string(argv[1]) + "/" + edgetrack_test::golden_name(scene);
     if (!run.loaded || !edgetrack_test::write_golden(path, run)) {

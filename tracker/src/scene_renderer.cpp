@@ -24,6 +24,27 @@ uint16_t grey_to_rgb565(int grey) {
   return static_cast<uint16_t>(((grey >> 3) << 11) | ((grey >> 2) << 5) | (grey >> 3));
 }
 
+/// True when the ray s q from the origin meets the side of the cylinder a-b of radius r for some
+/// s in (0, limit): a root of |m + s q|^2 - r^2 = 0 across the axis, within the axis' length.
+bool ray_meets_cylinder(const Vec3& a, const Vec3& b, const real& r, const Vec3& q, const real& limit) {
+  using std::sqrt;
+  const Vec3 axis = b - a;
+  const real length = norm(axis);
+  const Vec3 d = (real(1) / length) * axis;
+  const Vec3 m = -a;
+  const Vec3 m_across = m - dot(m, d) * d, q_across = q - dot(q, d) * d;
+  const real qa = dot(q_across, q_across), qb = real(2) * dot(m_across, q_across);
+  const real qc = dot(m_across, m_across) - r * r;
+  const real discriminant = qb * qb - real(4) * qa * qc;
+  if (qa == real(0) || discriminant < real(0)) return false;
+  const real root = sqrt(discriminant);
+  for (const real s : {(-qb - root) / (real(2) * qa), (-qb + root) / (real(2) * qa)}) {
+    const real along = dot(m + s * q, d);
+    if (s > real(0) && s < limit && along >= real(0) && along <= length) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& style)
@@ -152,6 +173,10 @@ bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const V
     const real s = dot(e2, q) / det;
     if (s > real(0) && s < limit) return false;
   }
+  for (const Cylinder& cylinder : model.cylinders)
+    if (ray_meets_cylinder(scale * (cylinder.axis_a - c), scale * (cylinder.axis_b - c), scale * cylinder.radius, p,
+                           limit))
+      return false;
   return true;
 }
 

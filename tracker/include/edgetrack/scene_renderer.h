@@ -48,7 +48,7 @@ class SceneRenderer {
   std::vector<int16_t> face_;        ///< supersampled shade index (faces, then facets and discs), -1 for background
 };
 
-/// Ground truth: true when no face of the model lies on the segment from the camera centre to
+/// Ground truth: true when no face or cylinder side of the model lies on the segment from the camera centre to
 /// the point, except within `margin` (a fraction of the point's distance) in front of it, so a
 /// point on its own faces counts as visible. Exact ray casting, independent of the rasteriser.
 bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,
