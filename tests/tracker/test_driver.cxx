@@ -10,6 +10,8 @@ DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
 DECLARE(test_pose_solver);
+DECLARE(test_cao_format);
+DECLARE(test_contours);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -20,6 +22,8 @@ void register_tests() {
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
   REGISTER(test_pose_solver);
+  REGISTER(test_cao_format);
+  REGISTER(test_contours);
 }
 
 DEFINE_MAIN

@@ -275,7 +275,12 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
     const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
                                   line.first < line.second ? line.second : line.first);
-    if (uses.count(key)) continue;  // already a face boundary, handled above
+    if (uses.count(key)) {  // already a face boundary: the line's own parameters go to that edge
+      for (Edge& edge : model.edges)
+        if (edge.a == key.first && edge.b == key.second && l < polygons.line_attributes.size())
+          edge.attributes = polygons.line_attributes[l];
+      continue;
+    }
     uses[key].count = 0;
     Edge edge;
     edge.a = key.first;
