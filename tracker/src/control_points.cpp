@@ -90,7 +90,8 @@ void sample_circle(const Circle& circle, int primitive, const PinholeCamera& cam
     }
     const real f = side_length > real(0) ? (target - walked) / side_length : real(0);
     const Vec3 chord = circle.rim[side] + f * (circle.rim[side + 1] - circle.rim[side]);
-    const Vec3 point = circle.centre + circle.radius * normalized(chord - circle.centre);
+    // Divided by the radius first, so that the unit vector keeps every `real`'s resolution.
+    const Vec3 point = circle.centre + circle.radius * normalized((real(1) / circle.radius) * (chord - circle.centre));
     const Vec3 p = camera_from_model * point;
     const Vec2 pixel = camera.project(p);
     if (!window.contains(pixel)) continue;
