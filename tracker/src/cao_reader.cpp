@@ -230,6 +230,17 @@ class CaoFileReader {
       return fail(*line, "expected the number of " + section + ", found '" + line->tokens[0] + "'");
     return true;
   }
+  /// A count line, then that many records, each read by read_record(line).
+  template <class ReadRecord>
+  bool read_section(const std::string& section, const std::string& record, ReadRecord read_record) {
+    long count = 0;
+    if (!read_count(section, count)) return false;
+    for (long k = 0; k < count; ++k) {
+      const TextLine* line = next(record);
+      if (!line || !read_record(*line)) return false;
+    }
+    return true;
+  }
   /// "n i_1 ... i_n [parameters]", each index in [0, limit).
   bool read_indexed(const TextLine& line, long limit, const std::string& what, std::vector<long>& indices,
                     PrimitiveAttributes& attributes) {
@@ -357,101 +368,77 @@ bool CaoFileReader::read_points(int version, Polygons& out) {
 }
 
 bool CaoFileReader::read_lines(std::vector<std::pair<int, int>>& lines, std::vector<PrimitiveAttributes>& attributes) {
-  long count = 0;
-  if (!read_count("3D lines", count)) return false;
-  for (long k = 0; k < count; ++k) {
-    const TextLine* line = next("a 3D line");
-    if (!line) return false;
+  return read_section("3D lines", "a 3D line", [&](const TextLine& line) {
     long a = 0, b = 0;
-    if (line->tokens.size() < 2 || !parse_int(line->tokens[0], a) || !parse_int(line->tokens[1], b))
-      return fail(*line, "expected a 3D line: two point indices");
-    if (!point_index(*line, 0, a) || !point_index(*line, 1, b))
-      return fail(*line, "line uses a point index outside 0.." + std::to_string(points_ - 1));
+    if (!point_index(line, 0, a) || !point_index(line, 1, b))
+      return fail(line, "expected a 3D line: two point indices in 0.." + std::to_string(points_ - 1));
     PrimitiveAttributes attribute;
-    if (!attributes_of(*line, 2, attribute)) return false;
+    if (!attributes_of(line, 2, attribute)) return false;
     lines.emplace_back(static_cast<int>(a), static_cast<int>(b));
     attributes.push_back(attribute);
-  }
-  return true;
+    return true;
+  });
 }
 
 bool CaoFileReader::read_faces_from_lines(const std::vector<std::pair<int, int>>& lines, std::vector<bool>& used,
                                           Polygons& out) {
-  long count = 0;
-  if (!read_count("faces from lines", count)) return false;
-  for (long k = 0; k < count; ++k) {
-    const TextLine* line = next("a face from lines");
-    if (!line) return false;
+  return read_section("faces from lines", "a face from lines", [&](const TextLine& line) {
     std::vector<long> indices;
     PrimitiveAttributes attributes;
-    if (!read_indexed(*line, static_cast<long>(lines.size()), "line", indices, attributes)) return false;
+    if (!read_indexed(line, static_cast<long>(lines.size()), "line", indices, attributes)) return false;
     std::vector<std::pair<int, int>> segments;
     for (long index : indices) {
       segments.push_back(lines[index]);
       used[index] = true;
     }
     std::vector<int> loop;
-    if (!chain_loop(segments, loop)) return fail(*line, "the face's lines do not form one closed loop");
+    if (!chain_loop(segments, loop)) return fail(line, "the face's lines do not form one closed loop");
     out.faces.push_back(loop);
     out.face_attributes.push_back(attributes);
-  }
-  return true;
+    return true;
+  });
 }
 
 bool CaoFileReader::read_faces_from_points(Polygons& out) {
-  long count = 0;
-  if (!read_count("faces from points", count)) return false;
-  for (long k = 0; k < count; ++k) {
-    const TextLine* line = next("a face from points");
-    if (!line) return false;
+  return read_section("faces from points", "a face from points", [&](const TextLine& line) {
     std::vector<long> indices;
     PrimitiveAttributes attributes;
-    if (!read_indexed(*line, points_, "point", indices, attributes)) return false;
+    if (!read_indexed(line, points_, "point", indices, attributes)) return false;
     out.faces.emplace_back(indices.begin(), indices.end());
     out.face_attributes.push_back(attributes);
-  }
-  return true;
+    return true;
+  });
 }
 
 bool CaoFileReader::read_cylinders(Polygons& out) {
-  long count = 0;
-  if (!read_count("3D cylinders", count)) return false;
-  for (long k = 0; k < count; ++k) {
-    const TextLine* line = next("a 3D cylinder");
-    if (!line) return false;
+  return read_section("3D cylinders", "a 3D cylinder", [&](const TextLine& line) {
     long a = 0, b = 0;
     CylinderRecord record;
-    if (!point_index(*line, 0, a) || !point_index(*line, 1, b) || line->tokens.size() < 3 ||
-        !parse_real(line->tokens[2], record.radius) || !(record.radius > real(0)))
-      return fail(*line, "expected a cylinder: two axis point indices in 0.." + std::to_string(points_ - 1) +
-                             " and a positive radius");
-    if (!attributes_of(*line, 3, record.attributes)) return false;
+    if (!point_index(line, 0, a) || !point_index(line, 1, b) || line.tokens.size() < 3 ||
+        !parse_real(line.tokens[2], record.radius) || !(record.radius > real(0)))
+      return fail(line, "expected a cylinder: two axis point indices in 0.." + std::to_string(points_ - 1) +
+                            " and a positive radius");
     record.axis_a = static_cast<int>(a);
     record.axis_b = static_cast<int>(b);
     out.cylinders.push_back(record);
-  }
-  return true;
+    return attributes_of(line, 3, out.cylinders.back().attributes);
+  });
 }
 
 bool CaoFileReader::read_circles(Polygons& out) {
-  long count = 0;
-  if (!read_count("3D circles", count)) return false;
-  for (long k = 0; k < count; ++k) {
-    const TextLine* line = next("a 3D circle");
-    if (!line) return false;
+  return read_section("3D circles", "a 3D circle", [&](const TextLine& line) {
     long c = 0, a = 0, b = 0;
     CircleRecord record;
-    if (line->tokens.empty() || !parse_real(line->tokens[0], record.radius) || !(record.radius > real(0)) ||
-        !point_index(*line, 1, c) || !point_index(*line, 2, a) || !point_index(*line, 3, b))
-      return fail(*line, "expected a circle: a positive radius, then the centre and two more points of its plane, "
-                         "as indices in 0.." + std::to_string(points_ - 1));
-    if (!attributes_of(*line, 4, record.attributes)) return false;
+    if (!parse_real(line.tokens[0], record.radius) || !(record.radius > real(0)) || !point_index(line, 1, c) ||
+        !point_index(line, 2, a) || !point_index(line, 3, b))
+      return fail(line, "expected a circle: a positive radius, then the centre and two more points of its plane, "
+                        "as indices in 0.." + std::to_string(points_ - 1));
     record.centre = static_cast<int>(c);
     record.plane_a = static_cast<int>(a);
     record.plane_b = static_cast<int>(b);
     out.circles.push_back(record);
-  }
-  return true;
+    return attributes_of(line, 4, out.circles.back().attributes);
+  });
 }
 
 }  // namespace
