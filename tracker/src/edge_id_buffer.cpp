@@ -22,8 +22,10 @@ void EdgeIdBuffer::clear_dirty() {
     const size_t row = static_cast<size_t>(y) * camera_.width;
     std::fill(colours_.begin() + row + dirty_x0_, colours_.begin() + row + dirty_x1_ + 1, uint16_t(0));
     std::fill(inverse_depth_.begin() + row + dirty_x0_, inverse_depth_.begin() + row + dirty_x1_ + 1, 0);
-    std::fill(surface_owner_.begin() + row + dirty_x0_, surface_owner_.begin() + row + dirty_x1_ + 1, int16_t(0));
+    if (owners_written_)
+      std::fill(surface_owner_.begin() + row + dirty_x0_, surface_owner_.begin() + row + dirty_x1_ + 1, int16_t(0));
   }
+  owners_written_ = false;
   dirty_x0_ = camera_.width;
   dirty_y0_ = camera_.height;
   dirty_x1_ = -1;
@@ -34,6 +36,7 @@ void EdgeIdBuffer::assign(const uint16_t* rgb565) {
   std::copy(rgb565, rgb565 + colours_.size(), colours_.begin());
   std::fill(inverse_depth_.begin(), inverse_depth_.end(), 0);
   std::fill(surface_owner_.begin(), surface_owner_.end(), int16_t(0));
+  owners_written_ = false;
   // Everything may be drawn now: the next render() clears the whole image.
   dirty_x0_ = 0;
   dirty_y0_ = 0;
@@ -94,6 +97,7 @@ void EdgeIdBuffer::draw_surfaces(const EdgeModel& model, const Se3& camera_from_
     }
   };
   const bool owners = !model.cylinders.empty();
+  owners_written_ = owners;
   for (const Triangle& t : model.triangles) {
     if (!front_[t.face]) continue;
     const Vec3 corners[3] = {points_in_camera_[t.a], points_in_camera_[t.b], points_in_camera_[t.c]};

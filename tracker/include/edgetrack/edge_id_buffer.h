@@ -56,6 +56,7 @@ class EdgeIdBuffer {
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background
   std::vector<int32_t> inverse_depth_;  ///< Q20 1/Z of the nearest face, 0 = none
   std::vector<int16_t> surface_owner_;  ///< the cylinder number + 1 whose side is nearest, 0 = a face or none
+  bool owners_written_ = false;         ///< surface_owner_ has non-zero pixels in the dirty area (cylinders drawn)
   std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
   std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each primitive
   std::vector<ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides
