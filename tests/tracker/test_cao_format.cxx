@@ -122,6 +122,22 @@ void test_line_ends_and_visp_files() {
   }
 }
 
+void test_v2_and_trailing_text() {
+  // V2 points carry two image coordinates; text after a record's numbers (ViSP's "// comment")
+  // is ignored, and parameters stop at the first word that is not one.
+  const Result<EdgeModel> v2 = load_model(write_file(
+      "v2.cao", "V2\n3\n0 0 0 10 20\n1 0 0 11 21 // a note\n0 1 0 12 22\n0\n0\n1\n3 0 1 2 // face name=ignored\n"));
+  TEST("a V2 file with trailing text loads", v2.ok(), true);
+  if (v2.ok()) {
+    TEST_NEAR("V2 points keep X Y Z", v2.value().vertices[1].x, 1, 1e-9);
+    TEST_EQUAL("a name= after other text is not a parameter (as ViSP)", v2.value().faces[0].attributes.name,
+               std::string());
+  }
+  const Result<EdgeModel> short_v2 = load_model(write_file("short_v2.cao", "V2\n1\n0 0 0\n0\n0\n0\n"));
+  TEST("a V2 point without its image coordinates is reported at its line",
+       !short_v2.ok() && short_v2.error().line == 3, true);
+}
+
 void test_includes() {
   // main.cao includes parts/wheel.cao twice over (once through parts/axle.cao, so the second
   // load is skipped as ViSP skips a file already in the model) and places it with t and tu.
@@ -226,6 +242,7 @@ void test_primitive_limit() {
 static void test_cao_format() {
   test_every_primitive();
   test_line_ends_and_visp_files();
+  test_v2_and_trailing_text();
   test_includes();
   test_bad_records();
   test_primitive_limit();
