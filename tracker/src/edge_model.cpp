@@ -190,6 +190,35 @@ struct EdgeUse {
   int first_a = 0;
 };
 
+/// Adds the free-standing lines as tracked edges; a line that is already a face boundary gives
+/// that edge its parameters instead. `uses` holds the face boundaries by sorted end points.
+Result<bool> add_free_lines(const Polygons& polygons, const std::string& source,
+                            std::map<std::pair<int, int>, EdgeUse>& uses, EdgeModel& model) {
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+  for (size_t l = 0; l < polygons.lines.size(); ++l) {
+    const std::pair<int, int>& line = polygons.lines[l];
+    if (line.first < 0 || line.first >= vertex_count || line.second < 0 || line.second >= vertex_count)
+      return fail("a line uses a vertex out of range");
+    if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
+    const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
+                                  line.first < line.second ? line.second : line.first);
+    if (uses.count(key)) {  // already a face boundary: the line's own parameters go to that edge
+      for (Edge& edge : model.edges)
+        if (edge.a == key.first && edge.b == key.second && l < polygons.line_attributes.size())
+          edge.attributes = polygons.line_attributes[l];
+      continue;
+    }
+    uses[key].count = 0;
+    Edge edge;
+    edge.a = key.first;
+    edge.b = key.second;
+    if (l < polygons.line_attributes.size()) edge.attributes = polygons.line_attributes[l];
+    model.edges.push_back(edge);
+  }
+  return true;
+}
+
 }  // namespace
 
 Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
@@ -268,26 +297,8 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     edge.faces[1] = use.count >= 2 ? use.faces[1] : -1;
     model.edges.push_back(edge);
   }
-  for (size_t l = 0; l < polygons.lines.size(); ++l) {
-    const std::pair<int, int>& line = polygons.lines[l];
-    if (line.first < 0 || line.first >= vertex_count || line.second < 0 || line.second >= vertex_count)
-      return fail("a line uses a vertex out of range");
-    if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
-    const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
-                                  line.first < line.second ? line.second : line.first);
-    if (uses.count(key)) {  // already a face boundary: the line's own parameters go to that edge
-      for (Edge& edge : model.edges)
-        if (edge.a == key.first && edge.b == key.second && l < polygons.line_attributes.size())
-          edge.attributes = polygons.line_attributes[l];
-      continue;
-    }
-    uses[key].count = 0;
-    Edge edge;
-    edge.a = key.first;
-    edge.b = key.second;
-    if (l < polygons.line_attributes.size()) edge.attributes = polygons.line_attributes[l];
-    model.edges.push_back(edge);
-  }
+  const Result<bool> lines = add_free_lines(polygons, source, uses, model);
+  if (!lines.ok()) return lines.error();
   const Result<bool> cylinders = add_cylinders(polygons, source, model);
   if (!cylinders.ok()) return cylinders.error();
   const Result<bool> circles = add_circles(polygons, source, model);
