@@ -181,6 +181,56 @@ void test_circles() {
   TEST_EQUAL("and hidden by the cube's faces", back_shown, 0);
 }
 
+void test_cap_circles() {
+  // A cylinder standing along y, 60 mm long, r = 20 mm, 150 mm in front of the camera, with a
+  // circle closing each end. The camera is level with its middle, so both caps face away: the
+  // near half of each rim (z < 0.15) is in view, the far half lies behind the side.
+  Polygons p;
+  p.vertices = {{real(0), real(-0.03), real(0.15)}, {real(0), real(0.03), real(0.15)},
+                {real(0.02), real(-0.03), real(0.15)}, {real(0), real(-0.03), real(0.17)},
+                {real(0.02), real(0.03), real(0.15)}, {real(0), real(0.03), real(0.17)}};
+  CylinderRecord c;
+  c.axis_a = 0;
+  c.axis_b = 1;
+  c.radius = real(0.02);
+  p.cylinders.push_back(c);
+  for (int k = 0; k < 2; ++k) {
+    CircleRecord circle;
+    circle.centre = k;
+    circle.plane_a = 2 + 2 * k;
+    circle.plane_b = 3 + 2 * k;
+    circle.radius = real(0.02);
+    p.circles.push_back(circle);
+  }
+  const Result<EdgeModel> model = build_edge_model(p, EdgeRules{}, "caps");
+  TEST("the capped cylinder builds", model.ok(), true);
+  if (!model.ok()) return;
+  TEST("both circles are found to close the cylinder", model.value().circles[0].cap_of == 0 &&
+                                                             model.value().circles[1].cap_of == 0,
+       true);
+  EdgeIdBuffer ids(kCamera);
+  ids.render(model.value(), Se3());
+  int near = 0, near_shown = 0, far = 0, far_shown = 0;
+  for (const ControlPoint& point : sample_control_points(model.value(), kCamera, Se3(), SamplingParams{})) {
+    if (point.edge < circle_primitive(model.value(), 0)) continue;
+    const bool shown = ids.shows(point.edge, point.pixel, point.direction);
+    const double z = double(point.point_in_model.z);
+    if (z < 0.15 - 0.005) {
+      ++near;
+      near_shown += shown;
+    } else if (z > 0.15 + 0.005) {
+      ++far;
+      far_shown += shown;
+    }
+  }
+  std::printf("cap rims: near halves %d points (%d shown), far halves %d (%d shown)\n", near, near_shown, far,
+              far_shown);
+  TEST("the near halves are sampled", near >= 6, true);
+  TEST_EQUAL("and shown: the cylinder's own side does not hide them", near_shown, near);
+  TEST("the far halves are sampled", far >= 4, true);
+  TEST_EQUAL("and hidden by the side in front of them", far_shown, 0);
+}
+
 }  // namespace
 
 static void test_contours() {
@@ -188,6 +238,7 @@ static void test_contours() {
   test_silhouettes_sampled_where_limbs_project();
   test_cylinder_hides_cube();
   test_circles();
+  test_cap_circles();
 }
 
 TESTMAIN(test_contours)

@@ -32,6 +32,16 @@ bool cylinder_generators(const Cylinder& cylinder, const Vec3& camera_centre, Ve
   return true;
 }
 
+bool cap_rim_clear_of_side(const Cylinder& cylinder, const Vec3& cap_centre, const Vec3& rim_point,
+                           const Vec3& camera_centre) {
+  const Vec3 to_camera = camera_centre - cap_centre;
+  const Vec3 other_end = norm(cap_centre - cylinder.axis_a) < norm(cap_centre - cylinder.axis_b) ? cylinder.axis_b
+                                                                                                  : cylinder.axis_a;
+  if (dot(cap_centre - other_end, to_camera) > real(0)) return true;  // the cap faces the camera
+  const Vec3 outward = (real(1) / cylinder.radius) * (rim_point - cap_centre);
+  return dot(outward, to_camera) > cylinder.radius;
+}
+
 void curved_contours(const EdgeModel& model, const Se3& camera_from_model, std::vector<ContourSegment>& out) {
   out.clear();
   const Vec3 centre = camera_centre_in_model(camera_from_model);

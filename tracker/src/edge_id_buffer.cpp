@@ -65,14 +65,21 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
     draw_edge(points_in_camera_[model.edges[e].a], points_in_camera_[model.edges[e].b], edge_colours_[e], -1);
   curved_contours(model, camera_from_model, curved_);
   const int first_circle = circle_primitive(model, 0);
+  const Vec3 camera_centre = camera_centre_in_model(camera_from_model);
   for (const ContourSegment& segment : curved_) {
-    // A cylinder's own side never hides its silhouette, nor the circle that closes it: at the
-    // limb that side is seen edge-on, where its depth runs away from the line's.
-    const int owner = segment.primitive < first_circle
-                          ? (segment.primitive - cylinder_primitive(model, 0, 0)) / 2 + 1
-                          : model.circles[segment.primitive - first_circle].cap_of + 1;
-    draw_edge(camera_from_model * segment.a, camera_from_model * segment.b, edge_colours_[segment.primitive],
-              owner > 0 ? owner : -1);
+    // A cylinder's own side never hides its silhouette, nor the parts of a circle closing it
+    // that the side cannot hide: near the limb the side is seen edge-on, where its depth runs
+    // away from the line's.
+    int owner = -1;
+    if (segment.primitive < first_circle) {
+      owner = (segment.primitive - cylinder_primitive(model, 0, 0)) / 2 + 1;
+    } else {
+      const Circle& circle = model.circles[segment.primitive - first_circle];
+      if (circle.cap_of >= 0 && cap_rim_clear_of_side(model.cylinders[circle.cap_of], circle.centre,
+                                                      real(0.5) * (segment.a + segment.b), camera_centre))
+        owner = circle.cap_of + 1;
+    }
+    draw_edge(camera_from_model * segment.a, camera_from_model * segment.b, edge_colours_[segment.primitive], owner);
   }
 }
 

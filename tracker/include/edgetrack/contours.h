@@ -25,6 +25,12 @@ struct ContourSegment {
 /// camera is inside or on the cylinder's surface (D <= r): then no silhouette exists.
 bool cylinder_generators(const Cylinder& cylinder, const Vec3& camera_centre, Vec3 (&lines)[2][2]);
 
+/// True when the side of `cylinder` cannot hide `rim_point`, a point of the circle closing its
+/// end at `cap_centre`: the cap faces the camera, or the side next to the point does (the
+/// outward radius u there has u . (camera_centre - cap_centre) > r).
+bool cap_rim_clear_of_side(const Cylinder& cylinder, const Vec3& cap_centre, const Vec3& rim_point,
+                           const Vec3& camera_centre);
+
 /// The camera centre in the model frame, -R^T t.
 Vec3 camera_centre_in_model(const Se3& camera_from_model);
 
