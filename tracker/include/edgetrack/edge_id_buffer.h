@@ -24,8 +24,8 @@ class EdgeIdBuffer {
   /// Redraws the buffers for the model seen from camera_from_model. On a closed model
   /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when
   /// its inverse depth is within 1/128 (0.8 %) of the nearest surface there, so edges lying on
-  /// their own faces pass and edges behind other faces do not; a cylinder's silhouette (and a
-  /// circle closing it) also passes over that cylinder's own side.
+  /// their own faces pass and edges behind other faces do not; a cylinder's silhouette (and the
+  /// part of a circle closing it that the side cannot hide) also passes over that cylinder's side.
   void render(const EdgeModel& model, const Se3& camera_from_model);
 
   /// Takes an Edge-ID image drawn elsewhere (GL): width * height RGB565 pixels, row 0 at the
