@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgetrack/contours.h"
+
 using edgetrack::EdgeModel;
 using edgetrack::Error;
 using edgetrack::PinholeCamera;
@@ -68,6 +70,10 @@ void draw_model_faces(const EdgeModel& model) {
     vertex(model.vertices[tri.a]);
     vertex(model.vertices[tri.b]);
     vertex(model.vertices[tri.c]);
+  }
+  for (const edgetrack::SurfaceTriangle& tri : model.cylinder_surface) {
+    normal(tri.normal);
+    for (const Vec3& corner : tri.corners) vertex(corner);
   }
   glEnd();
 }
@@ -250,6 +256,12 @@ RgbImage GlRenderer::render_overlay(const RgbImage& frame, const EdgeModel& mode
   for (const edgetrack::Edge& edge : model.edges) {
     vertex(model.vertices[edge.a]);
     vertex(model.vertices[edge.b]);
+  }
+  std::vector<edgetrack::ContourSegment> curved;
+  edgetrack::curved_contours(model, camera_from_model, curved);
+  for (const edgetrack::ContourSegment& segment : curved) {
+    vertex(segment.a);
+    vertex(segment.b);
   }
   glEnd();
   const std::vector<uint8_t> rgba = read_rgba();

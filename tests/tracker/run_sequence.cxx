@@ -79,6 +79,9 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
     error_sum += error_mm;
     points_sum += result.points_sampled;
     run.outliers += result.pose.outliers;
+    std::vector<int> matched(static_cast<size_t>(primitive_count(model.value())), 0);
+    for (const EdgeMatch& m : tracker.value().matches()) matched[static_cast<size_t>(m.point.edge)] += !m.outlier;
+    run.matched_per_primitive.push_back(matched);
     if (visibility_check) {
       for (const ControlPoint& p : tracker.value().control_points())
         run.hidden_points_sampled +=

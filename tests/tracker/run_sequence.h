@@ -40,6 +40,8 @@ struct SequenceRun {
   int hidden_points_sampled = 0;
   int hidden_points_dropped = 0;  ///< candidates hidden in the same sense (every 4th frame), all dropped
   int outliers = 0;               ///< matches the pose step left out
+  /// Per frame, per primitive (EdgeModel numbering): the matches the pose step kept.
+  std::vector<std::vector<int>> matched_per_primitive;
 };
 
 /// Tracks `frames` frames of the scene; `visibility_check` adds the ray-casting checks.

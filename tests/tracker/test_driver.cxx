@@ -13,6 +13,8 @@ DECLARE(test_scene_extras);
 DECLARE(test_pose_solver);
 DECLARE(test_status_rule);
 DECLARE(test_motion_model);
+DECLARE(test_cao_format);
+DECLARE(test_contours);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -26,6 +28,8 @@ void register_tests() {
   REGISTER(test_pose_solver);
   REGISTER(test_status_rule);
   REGISTER(test_motion_model);
+  REGISTER(test_cao_format);
+  REGISTER(test_contours);
 }
 
 DEFINE_MAIN

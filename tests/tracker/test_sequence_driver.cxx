@@ -4,6 +4,7 @@
 
 DECLARE(test_tracking_cube);
 DECLARE(test_tracking_wood_toy);
+DECLARE(test_tracking_cube_cylinder);
 DECLARE(test_tracker_grey);
 DECLARE(test_tracker_reset);
 DECLARE(test_fast_motion_cube);
@@ -15,6 +16,7 @@ DECLARE(test_status_leaving_view);
 void register_tests() {
   REGISTER(test_tracking_cube);
   REGISTER(test_tracking_wood_toy);
+  REGISTER(test_tracking_cube_cylinder);
   REGISTER(test_tracker_grey);
   REGISTER(test_tracker_reset);
   REGISTER(test_fast_motion_cube);

@@ -54,8 +54,8 @@ const char* step_name(Step step) {
 Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params) {
   if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
-  if (model.edges.empty()) return Error{"", 0, "the model has no edge to track"};
-  if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
+  if (primitive_count(model) == 0) return Error{"", 0, "the model has no edge, cylinder or circle to track"};
+  if (primitive_count(model) > kMaxEdges) return Error{"", 0, "the model has too many primitives for Edge-ID"};
   if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
   if (params.me.getRange() == 0) return Error{"", 0, "the moving-edge range must be at least 1 pixel"};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};

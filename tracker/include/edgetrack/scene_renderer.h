@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The test-image renderer: a model drawn flat-shaded over a textured background with noise, as
-/// an RGB565 frame, with the portable rasteriser, so tracking tests with known ground truth run
+/// an RGB565 frame (faces, tessellated cylinder sides, circles as discs), with the portable rasteriser, so tracking tests with known ground truth run
 /// everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
 #pragma once
 
@@ -29,6 +29,7 @@ struct SceneStyle {
   int texture_cell = 12;      ///< pixels between the texture's random grey values
   int face_low = 150;         ///< face grey: face_low + (face_high - face_low) * |cos(light, normal)|
   int face_high = 240;
+  int disc_darker = 70;       ///< a circle's disc is this much darker than a face lit the same way
   uint32_t texture_seed = 1;  ///< the background is the same in every frame
 };
 
@@ -51,10 +52,10 @@ class SceneRenderer {
   SceneStyle style_;
   std::vector<uint8_t> background_;  ///< grey texture, one value per pixel
   std::vector<int32_t> depth_;       ///< supersampled inverse depth
-  std::vector<int16_t> face_;        ///< supersampled face index, -1 for background
+  std::vector<int16_t> face_;        ///< supersampled shade index (faces, then facets and discs), -1 for background
 };
 
-/// Ground truth: true when no face of the model lies on the segment from the camera centre to
+/// Ground truth: true when no face or cylinder side of the model lies on the segment from the camera centre to
 /// the point, except within `margin` (a fraction of the point's distance) in front of it, so a
 /// point on its own faces counts as visible. Exact ray casting, independent of the rasteriser.
 bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,
