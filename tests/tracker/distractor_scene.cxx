@@ -23,7 +23,7 @@ void add_box(const Vec3& start, const Vec3& along, const Vec3& out, const Vec3& 
   const int faces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
   for (const auto& face : faces) {
     polygons.faces.push_back({first + face[0], first + face[1], first + face[2], first + face[3]});
-    polygons.face_names.emplace_back();
+    polygons.face_attributes.emplace_back();
   }
 }
 
@@ -34,7 +34,7 @@ EdgeModel with_distractor_bars(const EdgeModel& model, real offset, real width) 
   polygons.vertices = model.vertices;
   for (const Face& face : model.faces) {
     polygons.faces.push_back(face.vertices);
-    polygons.face_names.push_back(face.name);
+    polygons.face_attributes.push_back(face.attributes);
   }
   const real half(0.5), thickness(0.0005);
   for (const Edge& edge : model.edges) {

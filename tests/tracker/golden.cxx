@@ -9,9 +9,11 @@ using namespace edgetrack;
 
 namespace edgetrack_test {
 
-std::string golden_name(Scene scene, int hypotheses) {
-  const std::string stem = scene == Scene::kCube ? "cube60_double" : "wood_toy_double";
-  return stem + (hypotheses == 1 ? "" : "_k" + std::to_string(hypotheses)) + "_positions.txt";
+std::string golden_name(Scene scene, int subsample, int hypotheses) {
+  std::string speed = subsample > 1 ? "_fast" + std::to_string(subsample) : "";
+  if (hypotheses != edgetrack::TrackerParams{}.hypotheses) speed += "_k" + std::to_string(hypotheses);
+  const char* base = scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder";
+  return base + speed + "_double_positions.txt";
 }
 
 bool write_golden(const std::string& path, const SequenceRun& run) {

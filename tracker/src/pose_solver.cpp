@@ -177,24 +177,24 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   return !residuals.failure;
 }
 
+/// The median of |values| (the distances may be signed).
 real median_of(std::vector<real> values) {
+  using std::fabs;
+  for (real& v : values) v = fabs(v);
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   return values[mid];
 }
 
 /// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
-/// match's used() point) were measured; `distances` become the chosen ones' |delta|. The lines
-/// through the hypotheses are parallel (one normal), so delta_h = delta + n . (used - h): no
-/// projection per hypothesis.
+/// match's used() point) were measured; `distances` become the signed distances to the chosen
+/// ones. The lines through the hypotheses are parallel (one normal), so
+/// delta_h = delta + n . (used - h): no projection per hypothesis.
 void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
   using std::fabs;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
-    if (m.alternative_count == 0) {
-      distances[i] = fabs(distances[i]);
-      continue;
-    }
+    if (m.alternative_count == 0) continue;
     const Vec2 used = m.used();
     const real delta = distances[i];
     real nearest = delta;
@@ -205,14 +205,21 @@ void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real
         m.chosen = h;
       }
     }
-    distances[i] = fabs(nearest);
+    distances[i] = nearest;
   }
+}
+
+/// The signed distances to each match's strongest edge (`found`), from those to its used() one.
+void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+  for (size_t i = 0; i < matches.size(); ++i)
+    if (matches[i].chosen != 0) distances[i] = distances[i] + dot(matches[i].point.normal, matches[i].used() - matches[i].found);
 }
 
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params) {
+  using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
@@ -221,12 +228,14 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real> distances(matches.size()), weights;
   Se3 pose;
-  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose,
-                  robust ? &distances : nullptr))
+  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose, &distances))
     return solution;
   solution.camera_from_model = pose;
   solution.solved = true;
-  if (!robust) return solution;
+  if (!robust) {
+    solution.residual_scale = real(1.4826) * median_of(distances);
+    return solution;
+  }
 
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
@@ -235,18 +244,21 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     if (c < params.tukey_floor) c = params.tukey_floor;
     solution.outliers = 0;
     for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
-      const real u = distances[i] / c;
+      const real u = fabs(distances[i]) / c;
       matches[i].outlier = u >= real(1);
       weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
       solution.outliers += matches[i].outlier;
     }
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    const bool last = round + 1 == params.robust_rounds;
-    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose,
-                    last ? nullptr : &distances))
+    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose, &distances))
       break;
     solution.camera_from_model = pose;
   }
+  // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
+  // The scale reads the strongest edges: on an image unrelated to the model the nearest of
+  // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
+  to_strongest(matches, distances);
+  solution.residual_scale = real(1.4826) * median_of(distances);
   return solution;
 }
 

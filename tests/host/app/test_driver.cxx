@@ -6,6 +6,7 @@ DECLARE(test_pose_table);
 DECLARE(test_frame_source);
 DECLARE(test_pose_from_points);
 DECLARE(test_me_config);
+DECLARE(test_guarded);
 
 void register_tests() {
   REGISTER(test_image_io);
@@ -13,6 +14,7 @@ void register_tests() {
   REGISTER(test_frame_source);
   REGISTER(test_pose_from_points);
   REGISTER(test_me_config);
+  REGISTER(test_guarded);
 }
 
 DEFINE_MAIN
