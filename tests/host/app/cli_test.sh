@@ -180,9 +180,9 @@ case $name in
     # All 218 frames with cube.xml's <ecm>, one edge hypothesis against three: the cube's
     # printed inner edges give many control points a second edge within the range; with three
     # the pose step keeps more points as inliers, loses no frame, and puts the corners within
-    # 8 px (640x480) of the single-hypothesis pose in every frame (measured: 5.2 px at frame 192
-    # in double, 5.5 px in S40.23,
-    # where neither overlay is visibly off the cube; there is no ground truth to say which is nearer).
+    # 8 px (640x480) of the single-hypothesis pose in every frame (measured: 5.2 px in double and
+    # 5.5 px in S40.23 at frame 192, where neither overlay is visibly off the cube; there is no
+    # ground truth to say which is nearer).
     for k in 1 3; do
       track_cube --init-pose "$mbt/cube.0.pos" --config "$mbt/cube.xml" --last 217 --hypotheses $k \
         --poses "$work/k$k.csv" || fail "track --hypotheses $k failed"
