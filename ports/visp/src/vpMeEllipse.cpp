@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <type_traits>
 
 #include "visp3/core/vpException.h"
 #include "visp3/core/vpMath.h"
@@ -17,6 +18,9 @@ namespace {
 
 const real kPi = real(M_PI);
 const real kTwoPi = real(2 * M_PI);
+/// An arc of a whole number of steps (360 / 10 degrees) gives a quotient a few units of the last
+/// place below that number in fixed point, where floor() would lose a site; double is exact.
+const real kWholeStepSlack = std::is_floating_point<real>::value ? real(0) : real(1e-4);
 
 /// new_ang moved by 2 pi towards ang when they are more than pi apart.
 real unwrap_near(real new_ang, real ang) {
@@ -161,7 +165,7 @@ void vpMeEllipse::sample(const vpImage<unsigned char>& I, bool doNotTrack) {
   angle.clear();
   const int rows = static_cast<int>(I.getHeight()), cols = static_cast<int>(I.getWidth());
   const real incr = angle_step(me);
-  m_expectedDensity = static_cast<unsigned int>(floor((alpha2 - alpha1) / incr));
+  m_expectedDensity = static_cast<unsigned int>(floor((alpha2 - alpha1) / incr + kWholeStepSlack));
   // Centred in [alpha1, alpha2]: the remainder split between both ends.
   real ang = alpha1 + ((alpha2 - alpha1) - real(static_cast<int>(m_expectedDensity)) * incr) / 2;
   for (unsigned int k = 0; k < m_expectedDensity; ++k) {

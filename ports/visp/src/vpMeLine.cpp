@@ -7,7 +7,6 @@
 
 #include "visp3/core/vpColVector.h"
 #include "visp3/core/vpMath.h"
-#include "visp3/core/vpMatrix.h"
 #include "visp3/core/vpRobust.h"
 #include "visp3/core/vpTrackingException.h"
 
@@ -72,17 +71,44 @@ void vpMeLine::sample(const vpImage<unsigned char>& I, bool /*doNotTrack*/) {
   }
 }
 
+namespace {
+/// Minimises sum w_k^2 (u_k x0 + x1 - b_k)^2: upstream's pseudo-inverse of diag(w) A applied to
+/// diag(w) B, solved on data centred at the weighted mean, which is the same solution and keeps
+/// its precision in fixed point (u is a pixel coordinate, hundreds, beside the column of ones).
+void weighted_line_fit(const vpColVector& u, const vpColVector& rhs, const vpColVector& w, real& x0, real& x1) {
+  const unsigned int n = u.getRows();
+  real sw = 0, su = 0, sb = 0;
+  for (unsigned int k = 0; k < n; ++k) {
+    const real w2 = w[k] * w[k];
+    sw += w2;
+    su += w2 * u[k];
+    sb += w2 * rhs[k];
+  }
+  if (sw == 0) {
+    x0 = x1 = 0;
+    return;
+  }
+  const real mean_u = su / sw, mean_b = sb / sw;
+  real suu = 0, sub = 0;
+  for (unsigned int k = 0; k < n; ++k) {
+    const real w2 = w[k] * w[k], du = u[k] - mean_u;
+    suu += w2 * du * du;
+    sub += w2 * du * (rhs[k] - mean_b);
+  }
+  x0 = suu == 0 ? real(0) : sub / suu;  // all u equal: the minimum-norm slope, as a pseudo-inverse gives
+  x1 = mean_b - x0 * mean_u;
+}
+}  // namespace
+
 void vpMeLine::fitLine(bool j_on_i, real& x0, real& x1) {
   using std::abs;
   const unsigned int n = numberOfSignal();
-  vpMatrix A(n, 2), DA(n, 2);
-  vpColVector B(n), DB(n), w(n, real(1)), residue(n);
+  vpColVector u(n), rhs(n), w(n, real(1)), residue(n);
   unsigned int k = 0;
   for (const vpMeSite& s : list) {
     if (s.getState() != vpMeSite::NO_SUPPRESSION) continue;
-    A[k][0] = j_on_i ? s.ifloat : s.jfloat;
-    A[k][1] = 1;
-    B[k] = j_on_i ? -s.jfloat : -s.ifloat;
+    u[k] = j_on_i ? s.ifloat : s.jfloat;
+    rhs[k] = j_on_i ? -s.jfloat : -s.ifloat;
     ++k;
   }
   vpRobust robust;
@@ -91,15 +117,8 @@ void vpMeLine::fitLine(bool j_on_i, real& x0, real& x1) {
   x0 = 0;
   x1 = 0;
   for (unsigned int iter = 0; iter < 4 && distance > real(0.05); ++iter) {
-    for (unsigned int r = 0; r < n; ++r) {
-      DA[r][0] = w[r] * A[r][0];
-      DA[r][1] = w[r] * A[r][1];
-      DB[r] = w[r] * B[r];
-    }
-    const vpColVector x = DA.pseudoInverse(real(1e-26)) * DB;
-    x0 = x[0];
-    x1 = x[1];
-    for (unsigned int r = 0; r < n; ++r) residue[r] = B[r] - (A[r][0] * x0 + A[r][1] * x1);
+    weighted_line_fit(u, rhs, w, x0, x1);
+    for (unsigned int r = 0; r < n; ++r) residue[r] = rhs[r] - (u[r] * x0 + x1);
     robust.MEstimator(vpRobust::TUKEY, residue, w);
     distance = abs(x0 - previous0) + abs(x1 - previous1);
     previous0 = x0;

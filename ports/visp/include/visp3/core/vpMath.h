@@ -12,8 +12,9 @@ class vpMath {
  public:
   static constexpr real pi() { return real(M_PI); }
 
-  static inline real deg(real rad) { return rad * real(180 / M_PI); }
-  static inline real rad(real deg) { return deg * real(M_PI / 180); }
+  /// Upstream's order, (rad * 180) / pi: in fixed point it also keeps pi's full precision.
+  static inline real deg(real rad) { return (rad * 180) / real(M_PI); }
+  static inline real rad(real deg) { return (deg * real(M_PI)) / 180; }
   static inline real sqr(real x) { return x * x; }
   /// Nearest integer, halves away from zero (as std::round).
   static inline int round(real x) {
