@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <type_traits>
 
 #include "visp3/core/vpColVector.h"
 #include "visp3/core/vpMath.h"
@@ -38,6 +39,13 @@ void project(real a, real b, real c, real i, real j, real& ip, real& jp) {
     ip = (b * b * i - a * b * j - c * a) / norm2;
     jp = (-c - a * ip) / b;
   }
+}
+
+/// Upstream stores the clicked extremities through float; fixed point keeps its own precision
+/// (and runs no floating-point code).
+real through_float(real x) {
+  if constexpr (std::is_floating_point<real>::value) return static_cast<real>(static_cast<float>(x));
+  return x;
 }
 
 void check_me(const vpMe* me) {
@@ -162,11 +170,10 @@ void vpMeLine::initTracking(const vpImage<unsigned char>& I, const vpImagePoint&
   using std::sin;
   const int i1 = vpMath::round(ip1.get_i()), i2 = vpMath::round(ip2.get_i());
   const int j1 = vpMath::round(ip1.get_j()), j2 = vpMath::round(ip2.get_j());
-  // Upstream stores the extremities through float.
-  PExt[0].ifloat = real(static_cast<float>(ip1.get_i()));
-  PExt[0].jfloat = real(static_cast<float>(ip1.get_j()));
-  PExt[1].ifloat = real(static_cast<float>(ip2.get_i()));
-  PExt[1].jfloat = real(static_cast<float>(ip2.get_j()));
+  PExt[0].ifloat = through_float(ip1.get_i());
+  PExt[0].jfloat = through_float(ip1.get_j());
+  PExt[1].ifloat = through_float(ip2.get_i());
+  PExt[1].jfloat = through_float(ip2.get_j());
   const real direction = atan2(real(i1 - i2), real(j1 - j2));
   a = cos(direction);
   b = sin(direction);

@@ -31,9 +31,13 @@ vpImage<unsigned char> draw(const Edge& e) {
   vpImage<unsigned char> I(kRows, kCols);
   for (unsigned int i = 0; i < kRows; ++i)
     for (unsigned int j = 0; j < kCols; ++j) {
-      int bright = 0;
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) bright += e.distance(i + (a + 0.5) / 4, j + (b + 0.5) / 4) > 0 ? 1 : 0;
+      const double centre = e.distance(i + 0.5, j + 0.5);
+      int bright = centre > 0 ? 16 : 0;
+      if (std::fabs(centre) < 1) {  // supersampled near the edge only
+        bright = 0;
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) bright += e.distance(i + (a + 0.5) / 4, j + (b + 0.5) / 4) > 0 ? 1 : 0;
+      }
       I[i][j] = static_cast<unsigned char>(50 + (150 * bright) / 16);
     }
   return I;
