@@ -102,6 +102,7 @@ class vpMeSite {
   real get_jfloat() const { return jfloat; }
   void setState(const vpMeSiteState& flag) { state = flag; }
   vpMeSiteState getState() const { return state; }
+  int getSign() const { return mask_sign; }
   void setWeight(const real& w) { weight = w; }
   real getWeight() const { return weight; }
 

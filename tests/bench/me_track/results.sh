@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Prints the markdown section for docs/results/me_track.md: ViSP's trackMeLine and trackMeEllipse
+# set-ups (tests/ports/visp/track_me_*.cpp) on our vpMeLine / vpMeEllipse against Debian's ViSP 3.5,
+# frame by frame (tests/host/visp/me_track_compare.sh), in the host double and S40.23 builds, and
+# whether the ARM S40.23 build under QEMU prints exactly what the host S40.23 build prints.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../lib.sh"
+
+examples=(visp_example_track_me_line visp_example_track_me_ellipse)
+host=$(bench_tree host double "${examples[@]}" track_me_line_upstream track_me_ellipse_upstream)
+host_s40=$(bench_tree host s40_23 "${examples[@]}" track_me_line_upstream track_me_ellipse_upstream)
+arm_s40=$(bench_tree arm s40_23 "${examples[@]}")
+sysroot=$(grep -m1 '^EDGETRACK_ARM_SYSROOT:' "$arm_s40/CMakeCache.txt" | cut -d= -f2 || true)
+work=$(mktemp -d "${TMPDIR:-/tmp}/me_track.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+echo "## Line and ellipse tracking: our port against ViSP 3.5 (me_track)"
+echo
+echo "\`tests/bench/me_track/results.sh\` on $(bench_machine); $(g++ --version | head -n 1); ARM runs on"
+echo "$(qemu-arm --version | head -n 1 | sed 's/ (.*//'), \`-cpu pxa270\`."
+echo
+echo "ViSP's example set-ups without display or clicks: \`trackMeLine\` on ViSP-images/line (range 15,"
+echo "threshold 15000, the line through (96, 191) and (122, 211), frames 1-29 after two passes on frame 1)"
+echo "and \`trackMeEllipse\` on ViSP-images/ellipse-1 (range 20, sample step 10 degrees, threshold 15000,"
+echo "five points, frames 1-50). Every site of every frame is compared by list position."
+echo
+for tree in "$host" "$host_s40"; do
+  name=$(grep -m1 EDGETRACK_REAL: "$tree/CMakeCache.txt" | cut -d= -f2)
+  echo "Host $name:"
+  echo
+  echo '```'
+  "$top/tests/host/visp/me_track_compare.sh" "$tree/tests/host/visp/track_me_line_upstream" \
+    "$tree/tests/ports/visp/visp_example_track_me_line" line 0.001 0.00001 0.01 || true
+  "$top/tests/host/visp/me_track_compare.sh" "$tree/tests/host/visp/track_me_ellipse_upstream" \
+    "$tree/tests/ports/visp/visp_example_track_me_ellipse" ellipse 0.1 0.0002 0.1 || true
+  echo '```'
+  echo
+done
+
+echo "ARM S40.23 under QEMU against host S40.23 (the same program, every printed digit):"
+echo
+for example in "${examples[@]}"; do
+  qemu-arm -cpu pxa270 ${sysroot:+-L "$sysroot"} "$arm_s40/tests/ports/visp/$example" --sites >"$work/arm"
+  "$host_s40/tests/ports/visp/$example" --sites >"$work/host"
+  if cmp -s "$work/arm" "$work/host"; then verdict="identical"; else verdict="DIFFERENT"; fi
+  echo "- \`$example\`: $(wc -l <"$work/host") lines, $verdict"
+done
