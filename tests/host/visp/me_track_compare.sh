@@ -29,6 +29,8 @@ paste -d' ' "$tmp/u" "$tmp/o" | awk -v kind="$kind" -v ts="$tol_shape" -v ta="$t
     # line FRAME RHO THETA A B C SITES
     frames++; off = 8
     if ($8 != $(8 + off)) counts++
+    d = absd($3 - $(3 + off)) > absd($4 - $(4 + off)) ? absd($3 - $(3 + off)) : absd($4 - $(4 + off))
+    if (d <= 1e-6) exact++
     keep("shape", absd($3 - $(3 + off))); keep("angle", absd($4 - $(4 + off)))
     next
   }
@@ -36,6 +38,9 @@ paste -d' ' "$tmp/u" "$tmp/o" | awk -v kind="$kind" -v ts="$tol_shape" -v ta="$t
     # ellipse FRAME UC VC A B E N20 N11 N02 SITES
     frames++; off = 11
     if ($11 != $(11 + off)) counts++
+    d = 0
+    for (c = 3; c <= 7; c++) if (absd($c - $(c + off)) > d) d = absd($c - $(c + off))
+    if (d <= 1e-6) exact++
     for (c = 3; c <= 6; c++) keep("shape", absd($c - $(c + off)))
     keep("angle", absd($7 - $(7 + off)))
     next
@@ -43,7 +48,8 @@ paste -d' ' "$tmp/u" "$tmp/o" | awk -v kind="$kind" -v ts="$tol_shape" -v ta="$t
   END {
     shape = kind == "line" ? "rho" : "centre, A, B"
     angle = kind == "line" ? "theta" : "E"
-    printf "%s: %d frames, %d sites; site-count mismatches %d, state mismatches %d\n", kind, frames, sites, counts, states
+    printf "%s: %d frames (%d equal to 1e-6), %d sites; site-count mismatches %d, state mismatches %d\n",
+           kind, frames, exact, sites, counts, states
     printf "  max |d %s| %.3g px (tolerance %s), max |d %s| %.3g rad (tolerance %s), max site offset %.3g px (tolerance %s)\n",
            shape, worst["shape"], ts, angle, worst["angle"], ta, worst["site"], tp
     ok = frames > 0 && misaligned == 0 && counts == 0 && states == 0 && worst["shape"] <= ts && worst["angle"] <= ta && worst["site"] <= tp
