@@ -45,25 +45,21 @@ real angle_step(const vpMe* me) {
   return vpMath::rad(step == 0 ? real(10) : step);
 }
 
+vpColVector column3(real x, real y, real z) {
+  vpColVector v(3);
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
 }  // namespace
 
 vpMeEllipse::vpMeEllipse() : K(6) {}
 
-vpColVector vpMeEllipse::get_nij() const {
-  vpColVector nij(3);
-  nij[0] = m_n20;
-  nij[1] = m_n11;
-  nij[2] = m_n02;
-  return nij;
-}
+vpColVector vpMeEllipse::get_nij() const { return column3(m_n20, m_n11, m_n02); }
 
-vpColVector vpMeEllipse::get_ABE() const {
-  vpColVector abe(3);
-  abe[0] = a;
-  abe[1] = b;
-  abe[2] = e;
-  return abe;
-}
+vpColVector vpMeEllipse::get_ABE() const { return column3(a, b, e); }
 
 real vpMeEllipse::computeTheta(const vpImagePoint& iP) const { return computeTheta(iP.get_u(), iP.get_v()); }
 

@@ -191,28 +191,22 @@ void vpMeLine::suppressPoints() {
 void vpMeLine::setExtremities() {
   using std::abs;
   real imin = real(1000000), jmin = real(1000000), imax = -1, jmax = -1;
-  for (const vpMeSite& s : list) {
-    if (s.ifloat < imin) {
-      imin = s.ifloat;
-      jmin = s.jfloat;
-    }
-    if (s.ifloat > imax) {
-      imax = s.ifloat;
-      jmax = s.jfloat;
-    }
-  }
-  if (abs(imin - imax) < 25) {  // rather horizontal: the extremities by column
+  // The sites of smallest and largest row (or column), starting from the extremes found so far.
+  const auto scan = [&](bool by_column) {
     for (const vpMeSite& s : list) {
-      if (s.jfloat < jmin) {
+      const real key = by_column ? s.jfloat : s.ifloat;
+      if (key < (by_column ? jmin : imin)) {
         imin = s.ifloat;
         jmin = s.jfloat;
       }
-      if (s.jfloat > jmax) {
+      if (key > (by_column ? jmax : imax)) {
         imax = s.ifloat;
         jmax = s.jfloat;
       }
     }
-  }
+  };
+  scan(false);
+  if (abs(imin - imax) < 25) scan(true);  // rather horizontal: the extremities by column
   PExt[0].ifloat = imin;
   PExt[0].jfloat = jmin;
   PExt[1].ifloat = imax;

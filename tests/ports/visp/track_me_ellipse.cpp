@@ -17,12 +17,11 @@
 #include <visp3/me/vpMeSite.h>
 
 #include <cstdio>
-#include <cstring>
 #include <list>
 #include <string>
 #include <vector>
 
-#include "example_pgm.h"
+#include "example_io.h"
 
 namespace {
 
@@ -34,18 +33,13 @@ void print_ellipse(unsigned int frame, vpMeEllipse& ellipse, bool sites) {
               static_cast<double>(centre.get_v()), static_cast<double>(abe[0]), static_cast<double>(abe[1]),
               static_cast<double>(abe[2]), static_cast<double>(nij[0]), static_cast<double>(nij[1]),
               static_cast<double>(nij[2]), static_cast<unsigned int>(list.size()));
-  if (!sites) return;
-  unsigned int k = 0;
-  for (const vpMeSite& s : list) {
-    std::printf("site %u %u %d %.6f %.6f %.6f\n", frame, k++, static_cast<int>(s.getState()),
-                static_cast<double>(s.ifloat), static_cast<double>(s.jfloat), static_cast<double>(s.alpha));
-  }
+  if (sites) example::print_sites(frame, list);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool sites = argc > 1 && std::strcmp(argv[1], "--sites") == 0;
+  const bool sites = example::wants_sites(argc, argv);
   const std::string dir = example::visp_images_path() + "/ellipse-1";
   vpImage<unsigned char> I;
   if (!example::read_pgm(example::frame_path(dir, 1), I)) return 2;

@@ -15,11 +15,10 @@
 #include <visp3/me/vpMeSite.h>
 
 #include <cstdio>
-#include <cstring>
 #include <list>
 #include <string>
 
-#include "example_pgm.h"
+#include "example_io.h"
 
 namespace {
 
@@ -31,18 +30,13 @@ void print_line(unsigned int frame, vpMeLine& line, bool sites) {
   const std::list<vpMeSite>& list = line.getMeList();
   std::printf("line %u %.9f %.9f %.9f %.9f %.9f %u\n", frame, static_cast<double>(line.getRho()),
               static_cast<double>(line.getTheta()), a, b, c, static_cast<unsigned int>(list.size()));
-  if (!sites) return;
-  unsigned int k = 0;
-  for (const vpMeSite& s : list) {
-    std::printf("site %u %u %d %.6f %.6f %.6f\n", frame, k++, static_cast<int>(s.getState()),
-                static_cast<double>(s.ifloat), static_cast<double>(s.jfloat), static_cast<double>(s.alpha));
-  }
+  if (sites) example::print_sites(frame, list);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool sites = argc > 1 && std::strcmp(argv[1], "--sites") == 0;
+  const bool sites = example::wants_sites(argc, argv);
   const std::string dir = example::visp_images_path() + "/line";
   vpImage<unsigned char> I;
   if (!example::read_pgm(example::frame_path(dir, 1), I)) return 2;

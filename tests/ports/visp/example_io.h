@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Reads the binary PGM frames of ViSP's image data set for the example programs, which stand
-/// in for upstream's vpImageIo::read (not ported). ViSP API only, so that the examples build
-/// against upstream too. Also finds the data set: VISP_INPUT_IMAGE_PATH, as upstream's examples.
+/// Input and output of the example programs, ViSP API only so that they build against upstream
+/// too: the data set's place (VISP_INPUT_IMAGE_PATH, as upstream's examples), its binary PGM
+/// frames (standing in for upstream's vpImageIo::read, not ported), and the site listing.
 #pragma once
 
 #include <visp3/core/vpImage.h>
+#include <visp3/me/vpMeSite.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <list>
 #include <string>
 
 namespace example {
@@ -37,6 +40,18 @@ inline bool read_pgm(const std::string& path, vpImage<unsigned char>& image) {
   if (file != nullptr) std::fclose(file);
   if (!ok) std::fprintf(stderr, "%s: not a readable 8-bit binary PGM\n", path.c_str());
   return ok;
+}
+
+/// True when the program was asked for the sites ("--sites").
+inline bool wants_sites(int argc, char** argv) { return argc > 1 && std::strcmp(argv[1], "--sites") == 0; }
+
+/// "site FRAME K STATE I J ALPHA" for every site of the list, in list order.
+inline void print_sites(unsigned int frame, const std::list<vpMeSite>& list) {
+  unsigned int k = 0;
+  for (const vpMeSite& s : list) {
+    std::printf("site %u %u %d %.6f %.6f %.6f\n", frame, k++, static_cast<int>(s.getState()),
+                static_cast<double>(s.ifloat), static_cast<double>(s.jfloat), static_cast<double>(s.alpha));
+  }
 }
 
 }  // namespace example
