@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Mirrors ViSP's visp3/core/vpMatrix.h: a dense row-major matrix of `real` (upstream: double),
 /// the subset the moving edges use: products, transpose, identity, insert, and the SVD with its
-/// pseudo-inverse and null space. The SVD is our own one-sided Jacobi (Hestenes) on `real`, not
-/// Lapack: singular values come sorted in decreasing order, as upstream's; the sign of each
-/// singular vector is fixed so that its largest component is positive (upstream's is Lapack's).
+/// pseudo-inverse and null space. The SVD is our own one-sided Jacobi (Hestenes) on `real`, not a
+/// library call: singular values come sorted in decreasing order, as upstream's; the sign of each
+/// singular vector is fixed so that its largest component is positive (upstream's is whatever its
+/// SVD library gives: GSL in Debian's build).
 #pragma once
 
 #include <cstddef>
