@@ -3,14 +3,16 @@
 # Prints the markdown section for docs/results/me_track.md: ViSP's trackMeLine and trackMeEllipse
 # set-ups (tests/ports/visp/track_me_*.cpp) on our vpMeLine / vpMeEllipse against Debian's ViSP 3.5,
 # frame by frame (tests/host/visp/me_track_compare.sh), in the host double and S40.23 builds, and
-# how far the ARM builds under QEMU (S40.23, soft-float double) are from the host build of their type.
+# how far the ARM builds under QEMU (S40.23, soft-float double) are from the host build of their type;
+# then the transformation classes against upstream on a grid of rotations (tests/host/visp/transforms.cpp).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
 examples=(visp_example_track_me_line visp_example_track_me_ellipse)
-host=$(bench_tree host double "${examples[@]}" track_me_line_upstream track_me_ellipse_upstream)
-host_s40=$(bench_tree host s40_23 "${examples[@]}" track_me_line_upstream track_me_ellipse_upstream)
+upstream_targets=(track_me_line_upstream track_me_ellipse_upstream transforms_upstream transforms_ports)
+host=$(bench_tree host double "${examples[@]}" "${upstream_targets[@]}")
+host_s40=$(bench_tree host s40_23 "${examples[@]}" "${upstream_targets[@]}")
 arm_s40=$(bench_tree arm s40_23 "${examples[@]}")
 arm_double=$(bench_tree arm double "${examples[@]}")
 sysroot=$(grep -m1 '^EDGETRACK_ARM_SYSROOT:' "$arm_s40/CMakeCache.txt" | cut -d= -f2 || true)
@@ -57,3 +59,19 @@ for pair in "$arm_s40|$host_s40|S40.23" "$arm_double|$host|double (soft-float)";
     echo "- $name \`$example\`: $(wc -l <"$work/host") lines, $verdict"
   done
 done
+echo
+echo "### Transformation classes against ViSP 3.5 (tests/host/visp/transforms_compare.sh)"
+echo
+echo "R(theta u), theta u back from R, the inverse of [R t], a transformed point and the pose vector,"
+echo "for 6 axes and 8 angles from 0 to pi - 1e-6:"
+echo
+echo '```'
+for tree in "$host" "$host_s40"; do
+  name=$(grep -m1 EDGETRACK_REAL: "$tree/CMakeCache.txt" | cut -d= -f2)
+  tolerance=2e-5; [ "$name" = double ] && tolerance=1e-9  # as tests/host/visp/CMakeLists.txt
+  printf '%s: ' "$name"
+  "$top/tests/host/visp/transforms_compare.sh" "$tree/tests/host/visp/transforms_upstream" \
+    "$tree/tests/host/visp/transforms_ports" "$tolerance" || true
+done
+echo '```'
+
