@@ -3,7 +3,9 @@
 # Prints the markdown section for docs/results/visp_coverage.md: for each ViSP 3.5 class in the
 # scope of ports/visp (the ME module's headers, the core headers they include, and the core
 # classes the ME and pose code use), whether ports/visp has it at upstream's include path, which
-# of upstream's public member names it lacks, and which of our tests exercise it.
+# of upstream's public member names it lacks, and which of our tests exercise it; then upstream's
+# own tests of those classes (ViSP v3.5.0's modules/core/test and modules/tracker/me/test, listed
+# below from upstream's tree) with the test of ours that covers the same class.
 # Upstream's headers are read from Debian's libvisp-dev (UPSTREAM_VISP_INCLUDE to override).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../../.." && pwd)
@@ -79,3 +81,35 @@ for header in $(scope | sort -u); do
 done
 echo
 echo "$ported of $total headers in scope are ported."
+echo
+echo "### Upstream's tests of these classes"
+echo
+echo "ViSP v3.5.0's tests in \`modules/core/test\` and \`modules/tracker/me/test\` for the classes above"
+echo "(upstream has no test of vpMe, vpMeSite, vpMeTracker, vpMeLine or vpMeEllipse; ours are the"
+echo "\`test_me_*\` tests and the trackMeLine/trackMeEllipse comparisons in \`tests/host/visp\`)."
+echo
+echo "| upstream test | what it checks | ours | status |"
+echo "|---|---|---|---|"
+# upstream test | what it checks | our test | what ours leaves out
+while IFS='|' read -r upstream_test checks our_test left_out; do
+  if [ -f "$top/tests/ports/visp/$our_test.cxx" ] || [ -f "$top/tests/host/visp/$our_test" ]; then
+    status="ported${left_out:+; not: $left_out}"
+  else
+    status="not ported${left_out:+ ($left_out)}"; our_test="—"
+  fi
+  echo "| \`$upstream_test\` | $checks | \`$our_test\` | $status |"
+done <<'TESTS'
+image/testImagePoint.cpp|set_i/j/u/v, == and !=|test_image_point|
+math/testMath.cpp|round, equal, isNaN/isInf, saturate, mean/median/stdev|test_math|isNaN, isInf, saturate, getMean/Median/Stdev (not ported)
+math/testColVector.cpp|resize, insert, stack, t, median, stdev|test_matrix|insert, stack, t, median, stdev (not ported)
+math/testMatrix.cpp|eye, getCol/Row/Diag, insert, stack, juxtapose, hadamard, t, load/save|test_matrix|getRow, getDiag, stack, juxtapose, hadamard, load/save (not ported)
+math/testSvd.cpp|SVD of random matrices (A = U W V^T), eigenValues of AtA, det|test_matrix|eigenValues, AtA, det (not ported)
+math/testMatrixPseudoInverse.cpp|pseudo-inverse (A A+ A = A) per backend|test_matrix|per-backend variants (ours has one)
+math/testRobust.cpp|Tukey's weight formula over residues -10..10, written to a file (vpRobust is not called)|test_robust|
+math/testRotation.cpp|R, theta u, Euler angles and quaternions back and forth; isARotationMatrix|test_transformations|Euler angles, quaternions (not ported)
+math/testHomogeneousMatrix.cpp|re-orthogonalising a nearly orthonormal rotation on construction|test_transformations|re-orthogonalisation (not ported: ours keeps the entries given)
+math/testPoseVector.cpp|constructors, buildFrom (t, R), (t, tu), M; set, size, assignment|test_transformations|
+math/testTranslationVector.cpp|cross product, skew matrix, norms|test_transformations|
+tracker/me/test/testNurbs.cpp|vpNurbs curve fitting|—|vpMeNurbs and vpNurbs are outside the paper's scope
+TESTS
+
