@@ -343,12 +343,10 @@ void vpMeEllipse::setArcFromEndpoints() {
   if (alpha2 <= alpha1 || abs(alpha2 - alpha1) < m_arcEpsilon) alpha2 += kTwoPi;
 }
 
-void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const std::vector<vpImagePoint>& iP, bool trackArc) {
-  m_trackArc = trackArc;
-  leastSquare(I, iP);
-  if (trackArc) {
-    iP1 = iP.front();
-    iP2 = iP.back();
+void vpMeEllipse::startTracking(const vpImage<unsigned char>& I, const vpImagePoint* first, const vpImagePoint* last) {
+  if (m_trackArc && first != nullptr && last != nullptr) {
+    iP1 = *first;
+    iP2 = *last;
     setArcFromEndpoints();
   } else {
     alpha1 = 0;
@@ -358,6 +356,12 @@ void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const std::vecto
   }
   sample(I);
   track(I);
+}
+
+void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const std::vector<vpImagePoint>& iP, bool trackArc) {
+  m_trackArc = trackArc;
+  leastSquare(I, iP);
+  startTracking(I, &iP.front(), &iP.back());
 }
 
 void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const vpColVector& param, vpImagePoint* pt1,
@@ -370,19 +374,8 @@ void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const vpColVecto
   m_n02 = param[4];
   computeAbeFromNij();
   computeKiFromNij();
-  if (m_trackArc) {
-    iP1 = *pt1;
-    iP2 = *pt2;
-    setArcFromEndpoints();
-  } else {
-    alpha1 = 0;
-    alpha2 = kTwoPi;
-    computePointOnEllipse(alpha1, iP1);
-    iP2 = iP1;
-  }
   iPc.set_uv(m_uc, m_vc);
-  sample(I);
-  track(I);
+  startTracking(I, pt1, pt2);
 }
 
 void vpMeEllipse::track(const vpImage<unsigned char>& I) {

@@ -2,7 +2,8 @@
 /// vpMeEllipse on synthetic frames: a bright filled ellipse (semi-axes 45 and 28 px, major axis
 /// at 0.35 rad) moving 1 px per frame. Initialised from five points of the true ellipse 1 px
 /// outside it, the tracker must give the centre, A, B and E, every kept site must lie on the
-/// outline, and the area and moments must follow from A, B, E.
+/// outline, and the area and moments must follow from A, B, E. An arc of it (trackArc) must keep
+/// its sites within the arc.
 #include <cmath>
 #include <vector>
 
@@ -49,9 +50,35 @@ vpImagePoint on_outline(double t, double uc, double vc, double grow) {
   return vpImagePoint(vc + x * std::sin(kE) + y * std::cos(kE), uc + x * std::cos(kE) - y * std::sin(kE));
 }
 
+/// An arc: five points from t = 0.3 to 3.9 rad; the sites must stay within the arc's angles.
+void test_arc() {
+  const double uc = 95, vc = 72;
+  vpMe me;
+  me.setRange(6);
+  me.setSampleStep(10);
+  vpMeEllipse arc;
+  arc.setMe(&me);
+  const vpImage<unsigned char> I = draw(uc, vc);
+  std::vector<vpImagePoint> points;
+  for (double t : {0.3, 1.2, 2.1, 3.0, 3.9}) points.push_back(on_outline(t, uc, vc, 1.0));
+  arc.initTracking(I, points, true);
+  const double span = static_cast<double>(arc.getHighestAngle() - arc.getSmallestAngle());
+  TEST_EQUAL("arc of 3.6 rad: 20 sites expected", arc.getExpectedDensity(), 20u);
+  TEST("the sites span most of the arc and no more", span > 3.0 && span <= 3.6 + 1e-3, true);
+  const vpColVector abe = arc.get_ABE();
+  TEST_NEAR("the arc gives the ellipse's A within the 1 px search step", abe[0], kA, 1.0);
+  TEST_NEAR("the arc gives the ellipse's B within the 1 px search step", abe[1], kB, 1.0);
+  const vpImagePoint end = arc.getFirstEndpoint();
+  TEST_NEAR("the first endpoint lies on the outline",
+            (std::sqrt(radius2(static_cast<double>(end.get_j()) + 0.5, static_cast<double>(end.get_i()) + 0.5, uc, vc)) - 1) * kB,
+            0, 1.5);
+  TEST_NEAR("the first endpoint is near the first point", vpImagePoint::distance(end, points.front()), 0, 5.0);
+}
+
 }  // namespace
 
 static void test_me_ellipse() {
+  test_arc();
   double uc = 95, vc = 72;
   vpMe me;
   me.setRange(6);

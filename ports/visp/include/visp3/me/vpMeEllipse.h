@@ -103,4 +103,7 @@ class vpMeEllipse : public vpMeTracker {
   /// A site on the ellipse at angle ang, snapped within +-2 pixels; false when lost or outside.
   bool addSite(const vpImage<unsigned char>& I, real ang, vpMeSite& site, real& site_angle);
   void setArcFromEndpoints();
+  /// The arc from first to last when tracking an arc and both are given, else the whole
+  /// ellipse; then the sites are sampled and tracked once.
+  void startTracking(const vpImage<unsigned char>& I, const vpImagePoint* first, const vpImagePoint* last);
 };
