@@ -280,10 +280,12 @@ class CaoLoader {
   Result<Polygons> load(const std::string& path, const Se3& model_from_file, std::vector<IncludeStep>& chain) {
     const std::string name = normalized_path(path);
     std::vector<TextLine> lines;
-    if (!read_text_lines(path, lines)) {
-      if (chain.empty()) return Error{path, 0, "cannot open the file"};
+    auto read = read_text_lines(path, lines);
+    if (!read.ok()) {
+      if (chain.empty()) return read.error();
       return Error{chain.back().file, chain.back().line,
-                   "cannot open the included file " + path + " (include chain: " + chain_text(chain, path) + ")"};
+                   "cannot read the included file " + path + ": " + read.error().message +
+                       " (include chain: " + chain_text(chain, path) + ")"};
     }
     loaded_.push_back(name);
     ancestors_.push_back(name);

@@ -21,7 +21,8 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 Result<Polygons> read_obj(const std::string& path) {
   std::vector<TextLine> lines;
-  if (!read_text_lines(path, lines)) return Error{path, 0, "cannot open the file"};
+  auto read = read_text_lines(path, lines);
+  if (!read.ok()) return read.error();
   Polygons out;
   for (const TextLine& line : lines) {
     const std::string& kind = line.tokens[0];

@@ -2,15 +2,18 @@
 /// Reading model files line by line.
 #include "text_lines.h"
 
+#include "edgetrack/input_file.h"
+
 #include <cstdlib>
-#include <fstream>
+#include <cmath>
 #include <sstream>
 
 namespace edgetrack {
 
-bool read_text_lines(const std::string& path, std::vector<TextLine>& lines) {
-  std::ifstream in(path);
-  if (!in) return false;
+Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lines) {
+  auto whole = read_input_text(path);
+  if (!whole.ok()) return whole.error();
+  std::istringstream in(whole.value());
   std::string text;
   int number = 0;
   while (std::getline(in, text)) {
@@ -38,7 +41,7 @@ bool parse_int(const std::string& token, long& value) {
 bool parse_real(const std::string& token, real& value) {
   char* end = nullptr;
   const double parsed = std::strtod(token.c_str(), &end);
-  if (token.empty() || *end != '\0') return false;
+  if (token.empty() || *end != '\0' || !std::isfinite(parsed) || std::fabs(parsed) > kMaxModelNumber) return false;
   value = real(parsed);  // set-up time conversion, never in the frame loop
   return true;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "edgetrack/result.h"
 #include "real/real.h"
 
 namespace edgetrack {
@@ -17,11 +18,16 @@ struct TextLine {
   std::vector<std::string> tokens;  ///< `text` split at white space
 };
 
-/// Reads the non-empty lines of `path`; false when the file cannot be opened.
-bool read_text_lines(const std::string& path, std::vector<TextLine>& lines);
+/// Reads the non-empty lines of `path`; an Error naming it when it cannot be read (missing, not
+/// a regular file, over read_input_text's size cap).
+Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lines);
 
 /// A whole token as a decimal integer or a real number.
 bool parse_int(const std::string& token, long& value);
+/// Model numbers (coordinates in metres, radii, thresholds) are finite and within a thousand
+/// kilometres: a NaN or an overflowing vertex is refused at its line instead of breaking the
+/// geometry built from it.
+constexpr double kMaxModelNumber = 1e6;
 bool parse_real(const std::string& token, real& value);
 
 }  // namespace edgetrack

@@ -66,7 +66,7 @@ track_cube() {
 
 case $name in
   error_missing_model)
-    expect_error "$work/none.cao: cannot open the file" \
+    expect_error "$work/none.cao: no such file" \
       "$edgetrack" track --model "$work/none.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" ;;
   error_unreadable_image)
