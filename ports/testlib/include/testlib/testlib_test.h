@@ -53,13 +53,14 @@ auto near_value(const T& x) {
     return static_cast<double>(x);
   }
 }
-/// When one side of TEST_NEAR is complex, both are compared as complex.
-template <class A, class B>
-auto near_pair_first(const A& a, const B&) {
+/// Runs `check` on p and v as doubles, or as complex<double> when either is complex; each
+/// argument is evaluated once, by the macro's caller.
+template <class A, class B, class Check>
+void compare(const std::string& msg, const A& a, const B& b, double tol, Check check) {
   if constexpr (is_complex<A>::value || is_complex<B>::value) {
-    return std::complex<double>(near_value(a));
+    check(msg, std::complex<double>(near_value(a)), std::complex<double>(near_value(b)), tol);
   } else {
-    return near_value(a);
+    check(msg, near_value(a), near_value(b), tol);
   }
 }
 }  // namespace testlib_detail
@@ -86,17 +87,20 @@ auto near_pair_first(const A& a, const B&) {
                               testlib_detail::to_text(testlib_p_));                       \
   } while (false)
 /// Checks |p - v| <= t; p and v may be complex or any type that converts explicitly to double.
-#define TEST_NEAR(s, p, v, t)                                                                  \
-  testlib_test_assert_near(s, testlib_detail::near_pair_first(p, v), testlib_detail::near_pair_first(v, p), \
-                           static_cast<double>(t))
+#define TEST_NEAR(s, p, v, t)                                                         \
+  testlib_detail::compare(s, (p), (v), static_cast<double>(t), [](const auto&... args) { \
+    testlib_test_assert_near(args...);                                                \
+  })
 /// Checks |p - v| <= t * max(|p|, |v|).
-#define TEST_NEAR_REL(s, p, v, t)                                                            \
-  testlib_test_assert_near_relative(s, testlib_detail::near_pair_first(p, v),                \
-                                    testlib_detail::near_pair_first(v, p), static_cast<double>(t))
+#define TEST_NEAR_REL(s, p, v, t)                                                     \
+  testlib_detail::compare(s, (p), (v), static_cast<double>(t), [](const auto&... args) { \
+    testlib_test_assert_near_relative(args...);                                       \
+  })
 /// Checks |p - v| > t.
-#define TEST_FAR(s, p, v, t)                                                                 \
-  testlib_test_assert_far(s, testlib_detail::near_pair_first(p, v), testlib_detail::near_pair_first(v, p), \
-                          static_cast<double>(t))
+#define TEST_FAR(s, p, v, t)                                                          \
+  testlib_detail::compare(s, (p), (v), static_cast<double>(t), [](const auto&... args) { \
+    testlib_test_assert_far(args...);                                                 \
+  })
 
 /// Defines `testname_main`, the entry point a driver registers; its body is `testname()`.
 #define TESTMAIN(testname)                     \
