@@ -33,6 +33,7 @@ class vnl_diag_matrix {
   T operator()(unsigned i, unsigned j) const { return i == j ? diagonal_[i] : T(0); }
   T& operator()(unsigned i, unsigned j) {
     assert(i == j);
+    (void)j;
     return diagonal_[i];
   }
   T& operator()(unsigned i) { return diagonal_[i]; }
