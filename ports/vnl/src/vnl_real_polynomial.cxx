@@ -99,17 +99,28 @@ double vnl_rms_difference(const vnl_real_polynomial& f1, const vnl_real_polynomi
 }
 
 void vnl_real_polynomial::print(std::ostream& os) const {
+  // Upstream's format: " X^3 +2 X^2 -X +4": each nonzero term after a space, '+' before a
+  // positive term that is not the first, unit coefficients shown only as their sign.
   const int d = degree();
   bool first = true;
   for (int i = 0; i <= d; ++i) {
     const double a = coeffs_[i];
     if (a == 0.0) continue;
     const int power = d - i;
-    const double magnitude = std::fabs(a);
-    os << (a < 0 ? (first ? "-" : " - ") : (first ? " " : " + "));
-    if (magnitude != 1.0 || power == 0) os << magnitude;
-    if (power > 0) os << (magnitude != 1.0 ? " X" : "X");
-    if (power > 1) os << '^' << power;
+    os << ' ';
+    if (a > 0.0 && !first) os << '+';
+    if (power == 0) {
+      os << a;
+    } else if (a == -1.0) {
+      os << '-';
+    } else if (a != 1.0) {
+      os << a << ' ';
+    }
+    if (power > 1) {
+      os << "X^" << power;
+    } else if (power == 1) {
+      os << 'X';
+    }
     first = false;
   }
   if (first) os << " 0";

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// The vnl driver (upstream: core/vnl/tests/test_driver.cxx).
 #include "testlib/testlib_register.h"
 
 DECLARE(test_vector);
@@ -6,6 +7,14 @@ DECLARE(test_matrix);
 DECLARE(test_math);
 DECLARE(test_rotation_matrix);
 DECLARE(test_levenberg_marquardt);
+DECLARE(test_quaternion);
+DECLARE(test_real_polynomial);
+DECLARE(test_sparse_matrix);
+DECLARE(test_diag_matrix);
+DECLARE(test_inverse);
+DECLARE(test_numeric_traits);
+DECLARE(test_random);
+DECLARE(test_transpose);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -13,6 +22,14 @@ void register_tests() {
   REGISTER(test_math);
   REGISTER(test_rotation_matrix);
   REGISTER(test_levenberg_marquardt);
+  REGISTER(test_quaternion);
+  REGISTER(test_real_polynomial);
+  REGISTER(test_sparse_matrix);
+  REGISTER(test_diag_matrix);
+  REGISTER(test_inverse);
+  REGISTER(test_numeric_traits);
+  REGISTER(test_random);
+  REGISTER(test_transpose);
 }
 
 DEFINE_MAIN

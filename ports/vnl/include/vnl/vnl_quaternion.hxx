@@ -6,6 +6,8 @@
 #include <limits>
 #include <ostream>
 
+#include "vnl/vnl_cross.h"
+#include "vnl/vnl_math.h"
 #include "vnl/vnl_quaternion.h"
 
 template <class T>

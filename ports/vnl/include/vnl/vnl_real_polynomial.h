@@ -49,7 +49,7 @@ class vnl_real_polynomial {
   const vnl_vector<double>& coefficients() const { return coeffs_; }
   vnl_vector<double>& coefficients() { return coeffs_; }
   void set_coefficients(const vnl_vector<double>& coeffs) { coeffs_ = coeffs; }
-  /// Prints e.g. " 2 X^2 - X + 3".
+  /// Prints as upstream does, e.g. " 2 X^2 -X +3".
   void print(std::ostream& os) const;
 
  private:

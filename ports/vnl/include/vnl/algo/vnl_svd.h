@@ -49,6 +49,8 @@ class vnl_svd {
   const vnl_diag_matrix<singval_t>& Winverse() const { return Winverse_; }
   singval_t& W(int i, int j) { return W_(i, j); }
   singval_t& W(int i) { return W_(i, i); }
+  singval_t W(int i, int j) const { return W_(i, j); }
+  singval_t W(int i) const { return W_(i, i); }
   singval_t sigma_max() const { return W_[0]; }
   singval_t sigma_min() const { return W_[n_ - 1]; }
   vnl_matrix<T>& V() { return V_; }
@@ -82,6 +84,8 @@ class vnl_svd {
   bool valid() const { return valid_; }
 
  private:
+  void complete_u_basis();
+
   unsigned m_, n_;
   vnl_matrix<T> U_;
   vnl_diag_matrix<singval_t> W_;

@@ -85,10 +85,49 @@ vnl_svd<T>::vnl_svd(const vnl_matrix<T>& M, double zero_out_tol)
     vnl_svd_detail::swap_columns(U_, j, largest);
     vnl_svd_detail::swap_columns(V_, j, largest);
   }
+  complete_u_basis();
+  // A wide matrix has at most m nonzero singular values; the rest are exact zeros, as in
+  // LINPACK's result, and their U columns (no room left in m dimensions) are zero.
+  for (unsigned j = m_; j < n_; ++j) {
+    W_[j] = singval_t(0);
+    for (unsigned i = 0; i < m_; ++i) U_(i, j) = T(0);
+  }
   if (zero_out_tol >= 0) {
     zero_out_absolute(zero_out_tol);
   } else {
     zero_out_relative(-zero_out_tol);
+  }
+}
+
+template <class T>
+void vnl_svd<T>::complete_u_basis() {
+  // A column of U whose singular value is zero to working precision is M v / w with w ~ 0:
+  // rounding noise. Replace it, as LINPACK's U would be, by a unit vector orthogonal to the
+  // columns before it (Gram-Schmidt, twice, on the first coordinate axis that survives).
+  using std::sqrt;
+  if (n_ == 0) return;
+  const singval_t negligible =
+      std::numeric_limits<T>::epsilon() * T(static_cast<int>(m_ > n_ ? m_ : n_)) * W_[0] +
+      vnl_jacobi::rounding_floor<T>(m_);
+  const unsigned columns = m_ < n_ ? m_ : n_;
+  for (unsigned j = 0; j < columns; ++j) {
+    if (W_[j] > negligible) continue;
+    for (unsigned axis = 0; axis < m_; ++axis) {
+      vnl_vector<T> u(m_, T(0));
+      u[axis] = T(1);
+      for (int pass = 0; pass < 2; ++pass) {
+        for (unsigned k = 0; k < j; ++k) {
+          T dot(0);
+          for (unsigned i = 0; i < m_; ++i) dot += U_(i, k) * u[i];
+          for (unsigned i = 0; i < m_; ++i) u[i] -= dot * U_(i, k);
+        }
+      }
+      const T norm = u.two_norm();
+      static constexpr T kHalf = T(0.5);
+      if (norm < kHalf) continue;  // the axis lies (nearly) in the span so far
+      for (unsigned i = 0; i < m_; ++i) U_(i, j) = u[i] / norm;
+      break;
+    }
   }
 }
 
