@@ -15,6 +15,8 @@ DECLARE(test_inverse);
 DECLARE(test_numeric_traits);
 DECLARE(test_random);
 DECLARE(test_transpose);
+DECLARE(test_vector_fixed_ref);
+DECLARE(test_matrix_fixed_ref);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -30,6 +32,8 @@ void register_tests() {
   REGISTER(test_numeric_traits);
   REGISTER(test_random);
   REGISTER(test_transpose);
+  REGISTER(test_vector_fixed_ref);
+  REGISTER(test_matrix_fixed_ref);
 }
 
 DEFINE_MAIN
