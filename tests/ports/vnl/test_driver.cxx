@@ -17,6 +17,16 @@ DECLARE(test_random);
 DECLARE(test_transpose);
 DECLARE(test_vector_fixed_ref);
 DECLARE(test_matrix_fixed_ref);
+DECLARE(test_include);
+DECLARE(test_template_include);
+DECLARE(test_rational);
+DECLARE(test_polynomial);
+DECLARE(test_sym_matrix);
+DECLARE(test_power);
+DECLARE(test_matrix_exp);
+DECLARE(test_vnl_index_sort);
+DECLARE(test_complexify);
+DECLARE(test_diag_matrix_fixed);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -34,6 +44,16 @@ void register_tests() {
   REGISTER(test_transpose);
   REGISTER(test_vector_fixed_ref);
   REGISTER(test_matrix_fixed_ref);
+  REGISTER(test_include);
+  REGISTER(test_template_include);
+  REGISTER(test_rational);
+  REGISTER(test_polynomial);
+  REGISTER(test_sym_matrix);
+  REGISTER(test_power);
+  REGISTER(test_matrix_exp);
+  REGISTER(test_vnl_index_sort);
+  REGISTER(test_complexify);
+  REGISTER(test_diag_matrix_fixed);
 }
 
 DEFINE_MAIN

@@ -11,7 +11,8 @@ class vnl_unary_function {
   /// The smallest and largest values f may return (upstream: numeric limits).
   virtual Return get_range_min() const;
   virtual Return get_range_max() const;
-  virtual vnl_unary_function* Copy() const = 0;
+  /// A heap copy; nullptr unless a subclass provides one (as upstream).
+  virtual vnl_unary_function* Copy() const { return nullptr; }
 };
 
 #include <limits>
