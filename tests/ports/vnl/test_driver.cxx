@@ -27,6 +27,9 @@ DECLARE(test_matrix_exp);
 DECLARE(test_vnl_index_sort);
 DECLARE(test_complexify);
 DECLARE(test_diag_matrix_fixed);
+DECLARE(test_gamma);
+DECLARE(test_bessel);
+DECLARE(test_na);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -54,6 +57,9 @@ void register_tests() {
   REGISTER(test_vnl_index_sort);
   REGISTER(test_complexify);
   REGISTER(test_diag_matrix_fixed);
+  REGISTER(test_gamma);
+  REGISTER(test_bessel);
+  REGISTER(test_na);
 }
 
 DEFINE_MAIN

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every public vnl header compiles together with the others (upstream's test_include.cxx).
 #include "vnl/dll.h"
+#include "vnl/vnl_bessel.h"
+#include "vnl/vnl_beta.h"
 #include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_complex_traits.h"
 #include "vnl/vnl_complexify.h"
@@ -27,6 +29,7 @@
 #include "vnl/vnl_double_4.h"
 #include "vnl/vnl_double_4x3.h"
 #include "vnl/vnl_double_4x4.h"
+#include "vnl/vnl_erf.h"
 #include "vnl/vnl_error.h"
 #include "vnl/vnl_float_1x1.h"
 #include "vnl/vnl_float_1x2.h"
@@ -44,6 +47,7 @@
 #include "vnl/vnl_fortran_copy.h"
 #include "vnl/vnl_fortran_copy_fixed.h"
 #include "vnl/vnl_fwd.h"
+#include "vnl/vnl_gamma.h"
 #include "vnl/vnl_identity.h"
 #include "vnl/vnl_identity_3x3.h"
 #include "vnl/vnl_imag.h"
@@ -62,6 +66,7 @@
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_matrix_fixed_ref.h"
 #include "vnl/vnl_matrix_ref.h"
+#include "vnl/vnl_na.h"
 #include "vnl/vnl_nonlinear_minimizer.h"
 #include "vnl/vnl_numeric_traits.h"
 #include "vnl/vnl_operators.h"
