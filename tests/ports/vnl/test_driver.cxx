@@ -30,6 +30,8 @@ DECLARE(test_diag_matrix_fixed);
 DECLARE(test_gamma);
 DECLARE(test_bessel);
 DECLARE(test_na);
+DECLARE(test_file_matrix);
+DECLARE(test_crs_index);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -60,6 +62,8 @@ void register_tests() {
   REGISTER(test_gamma);
   REGISTER(test_bessel);
   REGISTER(test_na);
+  REGISTER(test_file_matrix);
+  REGISTER(test_crs_index);
 }
 
 DEFINE_MAIN

@@ -89,10 +89,11 @@ class vnl_matrix {
   vnl_matrix& set(const T* data) { return copy_in(data); }
   void copy_out(T* data) const;
 
-  vnl_matrix& operator+=(const T& value);
-  vnl_matrix& operator-=(const T& value);
-  vnl_matrix& operator*=(const T& value);
-  vnl_matrix& operator/=(const T& value);
+  /// The scalar forms take T by value, as upstream, so m /= m[0][0] divides by the old value.
+  vnl_matrix& operator+=(T value);
+  vnl_matrix& operator-=(T value);
+  vnl_matrix& operator*=(T value);
+  vnl_matrix& operator/=(T value);
   vnl_matrix& operator+=(const vnl_matrix& rhs);
   vnl_matrix& operator-=(const vnl_matrix& rhs);
   vnl_matrix& operator*=(const vnl_matrix& rhs) { return *this = *this * rhs; }

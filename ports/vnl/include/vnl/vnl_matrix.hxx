@@ -194,25 +194,25 @@ void vnl_matrix<T>::copy_out(T* data) const {
 }
 
 template <class T>
-vnl_matrix<T>& vnl_matrix<T>::operator+=(const T& value) {
+vnl_matrix<T>& vnl_matrix<T>::operator+=(T value) {
   for (T& x : *this) x += value;
   return *this;
 }
 
 template <class T>
-vnl_matrix<T>& vnl_matrix<T>::operator-=(const T& value) {
+vnl_matrix<T>& vnl_matrix<T>::operator-=(T value) {
   for (T& x : *this) x -= value;
   return *this;
 }
 
 template <class T>
-vnl_matrix<T>& vnl_matrix<T>::operator*=(const T& value) {
+vnl_matrix<T>& vnl_matrix<T>::operator*=(T value) {
   for (T& x : *this) x *= value;
   return *this;
 }
 
 template <class T>
-vnl_matrix<T>& vnl_matrix<T>::operator/=(const T& value) {
+vnl_matrix<T>& vnl_matrix<T>::operator/=(T value) {
   for (T& x : *this) x /= value;
   return *this;
 }

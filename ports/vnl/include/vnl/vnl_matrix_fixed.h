@@ -93,13 +93,13 @@ class vnl_matrix_fixed {
     }
     return *this;
   }
-  vnl_matrix_fixed& operator*=(const T& s) {
+  vnl_matrix_fixed& operator*=(T s) {
     for (auto& row : data_) {
       for (T& x : row) x *= s;
     }
     return *this;
   }
-  vnl_matrix_fixed& operator/=(const T& s) {
+  vnl_matrix_fixed& operator/=(T s) {
     for (auto& row : data_) {
       for (T& x : row) x /= s;
     }

@@ -79,10 +79,11 @@ class vnl_vector {
   vnl_vector& set(const T* data) { return copy_in(data); }
   void copy_out(T* data) const;
 
-  vnl_vector& operator+=(const T& value);
-  vnl_vector& operator-=(const T& value);
-  vnl_vector& operator*=(const T& value);
-  vnl_vector& operator/=(const T& value);
+  /// The scalar forms take T by value, as upstream, so v /= v[0] divides by the old v[0].
+  vnl_vector& operator+=(T value);
+  vnl_vector& operator-=(T value);
+  vnl_vector& operator*=(T value);
+  vnl_vector& operator/=(T value);
   vnl_vector& operator+=(const vnl_vector& rhs);
   vnl_vector& operator-=(const vnl_vector& rhs);
   /// *this = M * (*this).

@@ -179,25 +179,25 @@ void vnl_vector<T>::copy_out(T* data) const {
 }
 
 template <class T>
-vnl_vector<T>& vnl_vector<T>::operator+=(const T& value) {
+vnl_vector<T>& vnl_vector<T>::operator+=(T value) {
   for (T& x : *this) x += value;
   return *this;
 }
 
 template <class T>
-vnl_vector<T>& vnl_vector<T>::operator-=(const T& value) {
+vnl_vector<T>& vnl_vector<T>::operator-=(T value) {
   for (T& x : *this) x -= value;
   return *this;
 }
 
 template <class T>
-vnl_vector<T>& vnl_vector<T>::operator*=(const T& value) {
+vnl_vector<T>& vnl_vector<T>::operator*=(T value) {
   for (T& x : *this) x *= value;
   return *this;
 }
 
 template <class T>
-vnl_vector<T>& vnl_vector<T>::operator/=(const T& value) {
+vnl_vector<T>& vnl_vector<T>::operator/=(T value) {
   for (T& x : *this) x /= value;
   return *this;
 }
