@@ -32,6 +32,7 @@ DECLARE(test_bessel);
 DECLARE(test_na);
 DECLARE(test_file_matrix);
 DECLARE(test_crs_index);
+DECLARE(test_fastops);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -64,6 +65,7 @@ void register_tests() {
   REGISTER(test_na);
   REGISTER(test_file_matrix);
   REGISTER(test_crs_index);
+  REGISTER(test_fastops);
 }
 
 DEFINE_MAIN
