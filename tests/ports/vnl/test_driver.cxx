@@ -33,6 +33,7 @@ DECLARE(test_na);
 DECLARE(test_file_matrix);
 DECLARE(test_crs_index);
 DECLARE(test_fastops);
+DECLARE(test_block_and_matops);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -66,6 +67,7 @@ void register_tests() {
   REGISTER(test_file_matrix);
   REGISTER(test_crs_index);
   REGISTER(test_fastops);
+  REGISTER(test_block_and_matops);
 }
 
 DEFINE_MAIN
