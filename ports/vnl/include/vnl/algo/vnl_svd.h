@@ -85,6 +85,8 @@ class vnl_svd {
 
  private:
   void complete_u_basis();
+  /// Zeroes the singular values <= limit and their inverses; sets rank_.
+  void zero_out_below(const singval_t& limit);
 
   unsigned m_, n_;
   vnl_matrix<T> U_;

@@ -132,9 +132,7 @@ void vnl_svd<T>::complete_u_basis() {
 }
 
 template <class T>
-void vnl_svd<T>::zero_out_absolute(double tol) {
-  last_tol_ = tol;
-  const singval_t limit = singval_t(tol);  // one conversion of the caller's double
+void vnl_svd<T>::zero_out_below(const singval_t& limit) {
   rank_ = n_;
   for (unsigned k = 0; k < n_; ++k) {
     if (vnl_math::abs(W_[k]) <= limit) {
@@ -148,19 +146,15 @@ void vnl_svd<T>::zero_out_absolute(double tol) {
 }
 
 template <class T>
+void vnl_svd<T>::zero_out_absolute(double tol) {
+  last_tol_ = tol;
+  zero_out_below(singval_t(tol));  // one conversion of the caller's double
+}
+
+template <class T>
 void vnl_svd<T>::zero_out_relative(double tol) {
   last_tol_ = tol;
-  const singval_t limit = singval_t(tol) * vnl_math::abs(sigma_max());
-  rank_ = n_;
-  for (unsigned k = 0; k < n_; ++k) {
-    if (vnl_math::abs(W_[k]) <= limit) {
-      W_[k] = singval_t(0);
-      Winverse_[k] = singval_t(0);
-      --rank_;
-    } else {
-      Winverse_[k] = singval_t(1) / W_[k];
-    }
-  }
+  zero_out_below(singval_t(tol) * vnl_math::abs(sigma_max()));
 }
 
 template <class T>
