@@ -34,6 +34,7 @@ DECLARE(test_file_matrix);
 DECLARE(test_crs_index);
 DECLARE(test_fastops);
 DECLARE(test_block_and_matops);
+DECLARE(test_hungarian_algorithm);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -68,6 +69,7 @@ void register_tests() {
   REGISTER(test_crs_index);
   REGISTER(test_fastops);
   REGISTER(test_block_and_matops);
+  REGISTER(test_hungarian_algorithm);
 }
 
 DEFINE_MAIN

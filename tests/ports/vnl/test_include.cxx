@@ -55,6 +55,7 @@
 #include "vnl/vnl_fortran_copy_fixed.h"
 #include "vnl/vnl_fwd.h"
 #include "vnl/vnl_gamma.h"
+#include "vnl/vnl_hungarian_algorithm.h"
 #include "vnl/vnl_identity.h"
 #include "vnl/vnl_identity_3x3.h"
 #include "vnl/vnl_imag.h"
