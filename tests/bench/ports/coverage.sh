@@ -47,8 +47,9 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
   fi
   local test=${name%.*} dirs
   dirs=$(ours_test_dirs "$lib")
-  # Our LM test stays in the vnl driver, next to the LM path it was written with.
-  [ "$lib/$test" = vnl_algo/test_levenberg_marquardt ] && dirs="tests/ports/vnl"
+  # Two of upstream's algo tests live in our vnl driver: LM (next to the LM path it was written
+  # with) and rank (vnl_rank.h is a core header).
+  case $lib/$test in vnl_algo/test_levenberg_marquardt | vnl_algo/test_rank) dirs="tests/ports/vnl" ;; esac
   for dir in $dirs; do
     if [ -e "$top/$dir/$test.cxx" ]; then
       if grep -qw "$test" "$top/$dir/CMakeLists.txt"; then

@@ -35,6 +35,7 @@ DECLARE(test_crs_index);
 DECLARE(test_fastops);
 DECLARE(test_block_and_matops);
 DECLARE(test_hungarian_algorithm);
+DECLARE(test_rank);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -70,6 +71,7 @@ void register_tests() {
   REGISTER(test_fastops);
   REGISTER(test_block_and_matops);
   REGISTER(test_hungarian_algorithm);
+  REGISTER(test_rank);
 }
 
 DEFINE_MAIN

@@ -86,6 +86,7 @@
 #include "vnl/vnl_power.h"
 #include "vnl/vnl_quaternion.h"
 #include "vnl/vnl_random.h"
+#include "vnl/vnl_rank.h"
 #include "vnl/vnl_rational.h"
 #include "vnl/vnl_rational_traits.h"
 #include "vnl/vnl_real.h"
