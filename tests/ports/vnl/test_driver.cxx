@@ -36,6 +36,9 @@ DECLARE(test_fastops);
 DECLARE(test_block_and_matops);
 DECLARE(test_hungarian_algorithm);
 DECLARE(test_rank);
+DECLARE(test_complex);
+DECLARE(test_resize);
+DECLARE(test_matrix_fixed);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -72,6 +75,9 @@ void register_tests() {
   REGISTER(test_block_and_matops);
   REGISTER(test_hungarian_algorithm);
   REGISTER(test_rank);
+  REGISTER(test_complex);
+  REGISTER(test_resize);
+  REGISTER(test_matrix_fixed);
 }
 
 DEFINE_MAIN

@@ -6,6 +6,7 @@
 #include "vnl/vnl_beta.h"
 #include "vnl/vnl_block.h"
 #include "vnl/vnl_c_vector.h"
+#include "vnl/vnl_complex.h"
 #include "vnl/vnl_complex_traits.h"
 #include "vnl/vnl_complexify.h"
 #include "vnl/vnl_config.h"
