@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every public vnl header compiles together with the others (upstream's test_include.cxx).
 #include "vnl/dll.h"
+#include "vnl/vnl_alloc.h"
 #include "vnl/vnl_analytic_integrant.h"
 #include "vnl/vnl_bessel.h"
 #include "vnl/vnl_beta.h"
 #include "vnl/vnl_block.h"
+#include "vnl/vnl_c_na_vector.h"
 #include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_complex.h"
 #include "vnl/vnl_complex_traits.h"

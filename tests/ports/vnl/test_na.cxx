@@ -6,6 +6,7 @@
 #include <string>
 
 #include "testlib/testlib_test.h"
+#include "vnl/vnl_c_na_vector.h"
 #include "vnl/vnl_na.h"
 
 static void test_na() {
@@ -24,6 +25,11 @@ static void test_na() {
   std::ostringstream out;
   out << vnl_na_stream(na) << ' ' << vnl_na_stream(3.0);
   TEST("prints NA and numbers", out.str(), std::string("NA 3"));
+  const double values[] = {1, na, 3, na};
+  TEST("vnl_c_na_vector::sum skips NA", vnl_c_na_vector<double>::sum(values, 4), 4.0);
+  TEST("vnl_c_na_vector::mean counts only the others", vnl_c_na_vector<double>::mean(values, 4), 2.0);
+  TEST("vnl_c_na_vector::two_nrm2", vnl_c_na_vector<double>::two_nrm2(values, 4), 10.0);
+  TEST("the mean of only NAs is NA", vnl_na_isna(vnl_c_na_vector<double>::mean(values + 1, 1)), true);
 }
 
 TESTMAIN(test_na)
