@@ -39,6 +39,7 @@ DECLARE(test_rank);
 DECLARE(test_complex);
 DECLARE(test_resize);
 DECLARE(test_matrix_fixed);
+DECLARE(test_real_npolynomial);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -78,6 +79,7 @@ void register_tests() {
   REGISTER(test_complex);
   REGISTER(test_resize);
   REGISTER(test_matrix_fixed);
+  REGISTER(test_real_npolynomial);
 }
 
 DEFINE_MAIN

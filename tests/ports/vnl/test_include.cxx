@@ -93,6 +93,7 @@
 #include "vnl/vnl_rational.h"
 #include "vnl/vnl_rational_traits.h"
 #include "vnl/vnl_real.h"
+#include "vnl/vnl_real_npolynomial.h"
 #include "vnl/vnl_real_polynomial.h"
 #include "vnl/vnl_rotation_matrix.h"
 #include "vnl/vnl_sparse_matrix.h"
