@@ -3,7 +3,8 @@
 # Writes docs/PORTS.md: each upstream vnl, vnl_algo, vcl and testlib header and test (listed
 # offline in upstream_vxl.tsv) with its status in our tree. A header counts as ported when our
 # file of the same name exists; a test when our test_<x>.cxx exists and its CMakeLists.txt
-# registers it. Reasons for what is left out come from not_ported.tsv.
+# registers it. Reasons for what is left out come from not_ported.tsv, notes on what a ported
+# file does differently from notes.tsv.
 # Usage: tests/bench/ports/coverage.sh [output]   (default docs/PORTS.md)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../../.." && pwd)
@@ -31,6 +32,10 @@ ours_test_dirs() {  # library -> our test folders
   esac
 }
 
+note() {  # name -> what a ported file leaves out or does differently, if anything
+  awk -F'\t' -v n="$1" '$1 == n { print $2; exit }' "$here/notes.tsv"
+}
+
 reason() {  # name -> why it is not ported, or a default
   local found
   found=$(awk -F'\t' -v n="$1" '$1 == n { print $2; exit }' "$here/not_ported.tsv")
@@ -42,7 +47,14 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
   if [ "$kind" = header ]; then
     local mine
     mine=$(ours_header "$lib" "$path")
-    if [ -e "$top/$mine" ]; then printf 'ported\t%s\t\n' "$mine"; else printf 'missing\t\t%s\n' "$(reason "$name")"; fi
+    if [ -e "$top/$mine" ]; then
+      local n
+      n=$(note "$name")
+      # A note starting "partial:" marks a header that leaves part of upstream's out.
+      if [[ $n == partial:* ]]; then printf 'partial\t%s\t%s\n' "$mine" "${n#partial: }"; else printf 'ported\t%s\t%s\n' "$mine" "$n"; fi
+    else
+      printf 'missing\t\t%s\n' "$(reason "$name")"
+    fi
     return
   fi
   local test=${name%.*} dirs
@@ -53,7 +65,7 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
   for dir in $dirs; do
     if [ -e "$top/$dir/$test.cxx" ]; then
       if grep -qw "$test" "$top/$dir/CMakeLists.txt"; then
-        printf 'ported\t%s\t\n' "$dir/$test.cxx"
+        printf 'ported\t%s\t%s\n' "$dir/$test.cxx" "$(note "$test")"
       else
         printf 'file only\t%s\tnot registered in %s/CMakeLists.txt\n' "$dir/$test.cxx" "$dir"
       fi
@@ -79,14 +91,15 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
   echo "\`qemu-arm -cpu pxa270\`). Our code and tests are our own; only names, signatures and the"
   echo "behaviour checked follow upstream. Notes on the algorithms we chose are in \`docs/ARCHITECTURE.md\`."
   echo
-  echo "| library | headers ported | tests ported |"
-  echo "|---|---|---|"
+  echo "| library | headers ported | of which partial | tests ported |"
+  echo "|---|---|---|---|"
   for lib in vnl vnl_algo vcl testlib; do
     h_all=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "header"' <<<"$rows" | wc -l)
-    h_ok=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "header" && $4 == "ported"' <<<"$rows" | wc -l)
+    h_ok=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "header" && ($4 == "ported" || $4 == "partial")' <<<"$rows" | wc -l)
+    h_part=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "header" && $4 == "partial"' <<<"$rows" | wc -l)
     t_all=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "test"' <<<"$rows" | wc -l)
     t_ok=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "test" && $4 == "ported"' <<<"$rows" | wc -l)
-    echo "| $lib | $h_ok / $h_all | $t_ok / $t_all |"
+    echo "| $lib | $h_ok / $h_all | $h_part | $t_ok / $t_all |"
   done
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do

@@ -40,6 +40,7 @@ DECLARE(test_complex);
 DECLARE(test_resize);
 DECLARE(test_matrix_fixed);
 DECLARE(test_real_npolynomial);
+DECLARE(test_finite);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -80,6 +81,7 @@ void register_tests() {
   REGISTER(test_resize);
   REGISTER(test_matrix_fixed);
   REGISTER(test_real_npolynomial);
+  REGISTER(test_finite);
 }
 
 DEFINE_MAIN

@@ -41,6 +41,7 @@
 #include "vnl/vnl_fastops.h"
 #include "vnl/vnl_file_matrix.h"
 #include "vnl/vnl_file_vector.h"
+#include "vnl/vnl_finite.h"
 #include "vnl/vnl_float_1x1.h"
 #include "vnl/vnl_float_1x2.h"
 #include "vnl/vnl_float_1x3.h"
