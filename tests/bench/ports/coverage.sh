@@ -36,9 +36,12 @@ note() {  # name -> what a ported file leaves out or does differently, if anythi
   awk -F'\t' -v n="$1" '$1 == n { print $2; exit }' "$here/notes.tsv"
 }
 
-reason() {  # name -> why it is not ported, or a default
+reason() {  # library, name -> why it is not ported, or a default
   local found
-  found=$(awk -F'\t' -v n="$1" '$1 == n { print $2; exit }' "$here/not_ported.tsv")
+  found=$(awk -F'\t' -v n="$2" '$1 == n { print $2; exit }' "$here/not_ported.tsv")
+  if [ -z "$found" ] && [ "$1" = vnl_algo ]; then
+    found="outside the scope ported: the paper took LM and what pairs with it (SVD, QR, Cholesky, eigensystem, determinant, inverse)"
+  fi
   echo "${found:-not ported yet}"
 }
 
@@ -53,7 +56,7 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
       # A note starting "partial:" marks a header that leaves part of upstream's out.
       if [[ $n == partial:* ]]; then printf 'partial\t%s\t%s\n' "$mine" "${n#partial: }"; else printf 'ported\t%s\t%s\n' "$mine" "$n"; fi
     else
-      printf 'missing\t\t%s\n' "$(reason "$name")"
+      printf 'missing\t\t%s\n' "$(reason "$lib" "$name")"
     fi
     return
   fi
@@ -72,7 +75,7 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
       return
     fi
   done
-  printf 'missing\t\t%s\n' "$(reason "$test")"
+  printf 'missing\t\t%s\n' "$(reason "$lib" "$test")"
 }
 
 rows=$(grep -v '^#' "$here/upstream_vxl.tsv" | while IFS=$'\t' read -r lib kind path; do

@@ -41,6 +41,8 @@ DECLARE(test_resize);
 DECLARE(test_matrix_fixed);
 DECLARE(test_real_npolynomial);
 DECLARE(test_finite);
+DECLARE(test_integrant);
+DECLARE(test_container_interface);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -82,6 +84,8 @@ void register_tests() {
   REGISTER(test_matrix_fixed);
   REGISTER(test_real_npolynomial);
   REGISTER(test_finite);
+  REGISTER(test_integrant);
+  REGISTER(test_container_interface);
 }
 
 DEFINE_MAIN
