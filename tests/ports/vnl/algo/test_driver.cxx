@@ -8,6 +8,9 @@ DECLARE(test_qr);
 DECLARE(test_cholesky);
 DECLARE(test_symmetric_eigensystem);
 DECLARE(test_determinant);
+DECLARE(test_svd_fixed);
+DECLARE(test_matrix_update);
+DECLARE(test_integral);
 
 void register_tests() {
   REGISTER(test_include);
@@ -16,6 +19,9 @@ void register_tests() {
   REGISTER(test_cholesky);
   REGISTER(test_symmetric_eigensystem);
   REGISTER(test_determinant);
+  REGISTER(test_svd_fixed);
+  REGISTER(test_matrix_update);
+  REGISTER(test_integral);
 }
 
 DEFINE_MAIN
