@@ -11,6 +11,8 @@ DECLARE(test_determinant);
 DECLARE(test_svd_fixed);
 DECLARE(test_matrix_update);
 DECLARE(test_integral);
+DECLARE(test_brent_minimizer);
+DECLARE(test_bracket_minimum);
 
 void register_tests() {
   REGISTER(test_include);
@@ -22,6 +24,8 @@ void register_tests() {
   REGISTER(test_svd_fixed);
   REGISTER(test_matrix_update);
   REGISTER(test_integral);
+  REGISTER(test_brent_minimizer);
+  REGISTER(test_bracket_minimum);
 }
 
 DEFINE_MAIN

@@ -3,6 +3,8 @@
 #include "vnl/algo/vnl_adaptsimpson_integral.h"
 #include "vnl/algo/vnl_adjugate.h"
 #include "vnl/algo/vnl_algo_fwd.h"
+#include "vnl/algo/vnl_bracket_minimum.h"
+#include "vnl/algo/vnl_brent_minimizer.h"
 #include "vnl/algo/vnl_chi_squared.h"
 #include "vnl/algo/vnl_cholesky.h"
 #include "vnl/algo/vnl_determinant.h"
