@@ -22,7 +22,12 @@ void testlib_register_test(const std::string& name, TestMainFunction main_functi
 }
 
 int testlib_main(int argc, char* argv[]) {
-  if (argc < 2) {
+  // No name, or upstream's "all", runs every test and passes the remaining arguments to each.
+  if (argc < 2 || std::strcmp(argv[1], "all") == 0) {
+    if (argc >= 2) {
+      --argc;
+      ++argv;
+    }
     int failures = 0;
     for (const auto& test : registry()) failures += test.main_function(argc, argv) != 0;
     return failures == 0 ? 0 : 1;
@@ -33,3 +38,5 @@ int testlib_main(int argc, char* argv[]) {
   for (const auto& test : registry()) std::fprintf(stderr, "  %s\n", test.name.c_str());
   return 2;
 }
+
+void testlib_cleanup() { registry().clear(); }

@@ -90,3 +90,32 @@ void testlib_test_assert_equal(const std::string& msg, bool equal, const std::st
   if (!equal) std::printf("(expected %s, got %s) ", expected.c_str(), got.c_str());
   testlib_test_perform(equal);
 }
+
+void testlib_test_assert_near(const std::string& msg, std::complex<double> expr, std::complex<double> target,
+                              double tol) {
+  testlib_test_begin(msg);
+  const double diff = std::abs(expr - target);
+  if (target != 0.0 && diff != 0) std::printf("(|diff| %g) ", diff);
+  testlib_test_perform(diff <= tol);
+}
+
+void testlib_test_assert_near_relative(const std::string& msg, std::complex<double> expr,
+                                       std::complex<double> target, double tol) {
+  testlib_test_begin(msg);
+  const double scale = std::fmax(std::abs(expr), std::abs(target));
+  const double diff = std::abs(expr - target);
+  if (diff != 0) std::printf("(rel %g) ", scale > 0 ? diff / scale : diff);
+  testlib_test_perform(diff <= tol * (scale > 0 ? scale : 1));
+}
+
+void testlib_test_assert_far(const std::string& msg, std::complex<double> expr, std::complex<double> target,
+                             double tol) {
+  testlib_test_begin(msg);
+  testlib_test_perform(std::abs(expr - target) > tol);
+}
+
+void testlib_test_assert_equal(const std::string& msg, long expr, long target) {
+  testlib_test_begin(msg);
+  if (expr != target) std::printf("(expected %ld, got %ld) ", target, expr);
+  testlib_test_perform(expr == target);
+}

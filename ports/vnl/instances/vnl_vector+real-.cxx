@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Instantiates vnl_vector for the configured `real` (upstream: core/vnl/Templates/).
+/// Instantiates vnl_vector for the configured `real` when it is fixed point (a double or float
+/// `real` is already instantiated by the double and float files; upstream: core/vnl/Templates/).
 #include "real/real.h"
 #include "vnl/vnl_vector.hxx"
 
+#if !defined(EDGETRACK_REAL_DOUBLE) && !defined(EDGETRACK_REAL_FLOAT)
 VNL_VECTOR_INSTANTIATE(real);
+#endif

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vnl_vector and vnl_vector_fixed behave as upstream's: sizes, arithmetic, norms and products.
+#include <cmath>
+#include <complex>
 #include <sstream>
 #include <string>
 
@@ -7,6 +9,8 @@
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector.hxx"
 #include "vnl/vnl_vector_fixed.h"
+#include "vnl/vnl_vector_ref.h"
+#include "vnl/vnl_matrix.h"
 #include "vnl_test_types.h"
 
 namespace {
@@ -85,7 +89,72 @@ struct CheckVector {
   }
 };
 
-void test_vector() { for_each_test_scalar<CheckVector>(); }
+/// The rest of upstream's vnl_vector interface: scalar operators, views, reordering, search,
+/// comparison with a tolerance and text input.
+template <class T>
+struct CheckVectorApi {
+  static void run(const std::string& type) {
+    const std::string in = " (" + type + ")";
+    const vnl_vector<T> v{T(3), T(-1), T(4), T(1)};
+    TEST("initializer list" + in, v.size() == 4u && v[2] == T(4), true);
+    TEST("vector + scalar" + in, (v + T(1))[1] == T(0), true);
+    TEST("scalar + vector" + in, (T(1) + v)[0] == T(4), true);
+    TEST("scalar - vector" + in, (T(1) - v)[2] == T(-3), true);
+    TEST("vector - scalar" + in, (v - T(1))[3] == T(0), true);
+    TEST("scalar * vector" + in, (T(2) * v)[2] == T(8), true);
+    TEST("arg_min is 1, arg_max is 2" + in, v.arg_min() == 1u && v.arg_max() == 2u, true);
+    TEST("min_value, max_value" + in, v.min_value() == T(-1) && v.max_value() == T(4), true);
+    TEST("roll(1) moves element 0 to 1" + in, v.roll(1)[1] == T(3) && v.roll(1)[0] == T(1), true);
+    TEST("roll(-1) moves element 1 to 0" + in, v.roll(-1)[0] == T(-1), true);
+    vnl_vector<T> f(v);
+    f.flip();
+    TEST("flip reverses" + in, f[0] == T(1) && f[3] == T(3), true);
+    f.flip(1, 3);
+    TEST("flip(1, 3) reverses elements 1 and 2" + in, f[1] == T(-1) && f[2] == T(4), true);
+    TEST("is_equal within a tolerance" + in, v.is_equal(v + T(0.25), 0.5) && !v.is_equal(v + T(1), 0.5), true);
+    TEST("is_zero" + in, vnl_vector<T>(3, T(0)).is_zero() && !v.is_zero(), true);
+    TEST("is_finite" + in, v.is_finite(), true);
+    T storage[3] = {T(1), T(2), T(3)};
+    vnl_vector_ref<T> ref(3, storage);
+    ref[1] = T(9);
+    TEST("vnl_vector_ref writes its memory" + in, storage[1] == T(9), true);
+    ref += T(1);
+    TEST("vnl_vector_ref arithmetic writes its memory" + in, storage[2] == T(4), true);
+    ref = vnl_vector<T>(3, T(-1));
+    TEST("vnl_vector_ref assignment copies into its memory" + in, storage[0] == T(-1), true);
+    vnl_vector<T> owner(2, T(0));
+    owner.as_ref()[1] = T(5);
+    TEST("as_ref views the vector" + in, owner[1] == T(5), true);
+    vnl_vector<T> a(2, T(1)), b(3, T(2));
+    a.swap(b);
+    TEST("swap exchanges contents" + in, a.size() == 3u && b.size() == 2u && a[0] == T(2), true);
+    std::istringstream text("1 2.5 -3");
+    vnl_vector<T> read;
+    read.read_ascii(text);
+    TEST("read_ascii of an empty vector reads all values" + in, read.size() == 3u && read[2] == T(-3), true);
+    TEST("element_quotient" + in, element_quotient(v, v)[2] == T(1), true);
+    const vnl_vector<T> e0{T(1), T(0)}, e1{T(0), T(2)};
+    TEST_NEAR("angle between perpendicular vectors is pi/2" + in, angle(e0, e1), 1.5707963267948966, ulps<T>(16));
+    TEST("vnl_cross_2d" + in, vnl_cross_2d(e0, e1) == T(2), true);
+    vnl_matrix<T> m(2, 4, T(1));
+    vnl_vector<T> row(v);
+    row.pre_multiply(m);
+    TEST("pre_multiply: M v" + in, row.size() == 2u && row[0] == T(7), true);
+  }
+};
+
+void test_vector() {
+  for_each_test_scalar<CheckVector>();
+  for_each_test_scalar<CheckVectorApi>();
+  // Integer and complex vectors, as upstream instantiates them.
+  const vnl_vector<int> iv{3, -4};
+  TEST("vnl_vector<int> two_norm is 5 (abs_t unsigned)", iv.two_norm(), 5u);
+  TEST("vnl_vector<int> one_norm", iv.one_norm(), 7u);
+  const vnl_vector<std::complex<double>> cv{{3, 4}, {0, 1}};
+  TEST_NEAR("vnl_vector<complex> two_norm is sqrt(26)", cv.two_norm(), std::sqrt(26.0), 1e-15);
+  TEST_NEAR("inner_product conjugates the second", inner_product(cv, cv), std::complex<double>(26, 0), 1e-15);
+  TEST_NEAR("dot_product does not", dot_product(cv, cv), std::complex<double>(-8, 24), 1e-15);
+}
 
 }  // namespace
 

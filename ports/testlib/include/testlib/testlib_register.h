@@ -9,17 +9,22 @@
 using TestMainFunction = int (*)(int, char*[]);
 
 void testlib_register_test(const std::string& name, TestMainFunction main_function);
-/// Runs the test named by argv[1] (or every registered test when none is named).
+/// Runs the test named by argv[1] (every registered test when none is named or the name is
+/// "all"); the test sees argv from its own name on.
 int testlib_main(int argc, char* argv[]);
+/// Forgets the registered tests (upstream's DEFINE_MAIN calls it before returning).
+void testlib_cleanup();
 
 /// Declares `name_main`, the entry point that a test file defines with TESTMAIN.
 #define DECLARE(testname) int testname##_main(int argc, char* argv[])
 #define REGISTER(testname) testlib_register_test(#testname, &testname##_main)
 /// The driver's main(): the driver file defines register_tests() with its REGISTER lines.
-#define DEFINE_MAIN                     \
-  int main(int argc, char* argv[]) {    \
-    register_tests();                   \
-    return testlib_main(argc, argv);    \
+#define DEFINE_MAIN                           \
+  int main(int argc, char* argv[]) {          \
+    register_tests();                         \
+    const int status = testlib_main(argc, argv); \
+    testlib_cleanup();                        \
+    return status;                            \
   }
 
 void register_tests();

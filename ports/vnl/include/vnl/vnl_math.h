@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cmath>
+#include <complex>
+#include <type_traits>
 
 namespace vnl_math {
 
@@ -44,8 +46,102 @@ struct constant {
 
 template <class T>
 T abs(const T& x) {
-  return x < T(0) ? -x : x;
+  if constexpr (std::is_unsigned_v<T>) {
+    return x;
+  } else {
+    return x < T(0) ? -x : x;
+  }
 }
+template <class T>
+T abs(const std::complex<T>& x) {
+  return std::abs(x);
+}
+/// |x|^2: x*x, or norm(x) for complex x (upstream's vnl_math::squared_magnitude).
+template <class T>
+T squared_magnitude(const T& x) {
+  return x * x;
+}
+template <class T>
+T squared_magnitude(const std::complex<T>& x) {
+  return std::norm(x);
+}
+/// The complex conjugate; the value itself for a real scalar.
+template <class T>
+T conj(const T& x) {
+  return x;
+}
+template <class T>
+std::complex<T> conj(const std::complex<T>& x) {
+  return std::conj(x);
+}
+/// Floating-point classification; integers and fixed point are always finite.
+template <class T>
+bool isnan(const T& x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::isnan(x);
+  } else {
+    return false;
+  }
+}
+template <class T>
+bool isnan(const std::complex<T>& x) {
+  return vnl_math::isnan(x.real()) || vnl_math::isnan(x.imag());
+}
+template <class T>
+bool isinf(const T& x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::isinf(x);
+  } else {
+    return false;
+  }
+}
+template <class T>
+bool isfinite(const T& x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::isfinite(x);
+  } else {
+    return true;
+  }
+}
+template <class T>
+bool isfinite(const std::complex<T>& x) {
+  return vnl_math::isfinite(x.real()) && vnl_math::isfinite(x.imag());
+}
+/// Rounds to the nearest integer, halves away from zero (upstream's rnd_halfintup differs
+/// only on exact halves of negative numbers).
+inline int rnd(double x) { return static_cast<int>(x < 0 ? x - 0.5 : x + 0.5); }
+inline int rnd(float x) { return static_cast<int>(x < 0 ? x - 0.5f : x + 0.5f); }
+inline int floor(double x) { return static_cast<int>(std::floor(x)); }
+inline int floor(float x) { return static_cast<int>(std::floor(x)); }
+inline int ceil(double x) { return static_cast<int>(std::ceil(x)); }
+inline int ceil(float x) { return static_cast<int>(std::ceil(x)); }
+/// x mod y with the sign of x (truncated) or of y (floored).
+template <class T>
+T remainder_truncated(T x, T y) {
+  if constexpr (std::is_integral_v<T>) {
+    return x % y;
+  } else {
+    using std::fmod;
+    return fmod(x, y);
+  }
+}
+template <class T>
+T remainder_floored(T x, T y) {
+  const T r = remainder_truncated(x, y);
+  return (r != T(0) && ((r < T(0)) != (y < T(0)))) ? r + y : r;
+}
+/// The angle in [0, 2 pi) or (-pi, pi].
+inline double angle_0_to_2pi(double angle) {
+  const double a = remainder_floored(angle, 6.28318530717958647692);
+  return a;
+}
+inline double angle_minuspi_to_pi(double angle) {
+  const double a = angle_0_to_2pi(angle);
+  return a > 3.14159265358979323846 ? a - 6.28318530717958647692 : a;
+}
+/// Real cube root, for negative x too.
+inline double cuberoot(double x) { return std::cbrt(x); }
+inline float cuberoot(float x) { return std::cbrt(x); }
 template <class T>
 T sqr(const T& x) {
   return x * x;

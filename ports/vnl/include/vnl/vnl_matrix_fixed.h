@@ -93,11 +93,59 @@ class vnl_matrix_fixed {
     }
     return *this;
   }
-  vnl_matrix_fixed& operator*=(const T& s) {
+  vnl_matrix_fixed& operator*=(T s) {
     for (auto& row : data_) {
       for (T& x : row) x *= s;
     }
     return *this;
+  }
+  vnl_matrix_fixed& operator/=(T s) {
+    for (auto& row : data_) {
+      for (T& x : row) x /= s;
+    }
+    return *this;
+  }
+  vnl_matrix_fixed& fill_diagonal(const T& value) {
+    for (unsigned i = 0; i < num_rows && i < num_cols; ++i) data_[i][i] = value;
+    return *this;
+  }
+  vnl_matrix_fixed& set_diagonal(const vnl_vector<T>& v) {
+    for (unsigned i = 0; i < v.size(); ++i) data_[i][i] = v[i];
+    return *this;
+  }
+  vnl_vector<T> get_diagonal() const {
+    vnl_vector<T> d(num_rows < num_cols ? num_rows : num_cols);
+    for (unsigned i = 0; i < d.size(); ++i) d[i] = data_[i][i];
+    return d;
+  }
+  /// Writes `m` into this matrix with its top-left corner at (top, left).
+  vnl_matrix_fixed& update(const vnl_matrix<T>& m, unsigned top = 0, unsigned left = 0) {
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      for (unsigned c = 0; c < m.cols(); ++c) data_[top + r][left + c] = m(r, c);
+    }
+    return *this;
+  }
+  vnl_matrix<T> extract(unsigned rows, unsigned cols, unsigned top = 0, unsigned left = 0) const {
+    return as_matrix().extract(rows, cols, top, left);
+  }
+  /// Largest row sum of |a_ij|.
+  T operator_inf_norm() const {
+    T largest(0);
+    for (const auto& row : data_) {
+      T total(0);
+      for (const T& x : row) total += x < T(0) ? -x : x;
+      if (total > largest) largest = total;
+    }
+    return largest;
+  }
+  bool is_identity() const { return is_identity(T(0)); }
+  bool is_zero() const {
+    for (const auto& row : data_) {
+      for (const T& x : row) {
+        if (!(x == T(0))) return false;
+      }
+    }
+    return true;
   }
   vnl_matrix_fixed operator-() const {
     vnl_matrix_fixed result(*this);

@@ -81,11 +81,11 @@ class vnl_vector_fixed {
     for (unsigned i = 0; i < n; ++i) data_[i] -= rhs.data_[i];
     return *this;
   }
-  vnl_vector_fixed& operator*=(const T& s) {
+  vnl_vector_fixed& operator*=(T s) {
     for (T& x : data_) x *= s;
     return *this;
   }
-  vnl_vector_fixed& operator/=(const T& s) {
+  vnl_vector_fixed& operator/=(T s) {
     for (T& x : data_) x /= s;
     return *this;
   }

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's vcl/vcl_atomic_count.h: a thread-safe counter (++, --, read). Upstream picks a
+/// platform file from vcl/internal/; std::atomic does that job for every platform we build.
+#pragma once
+
+#include <atomic>
+
+#include "vcl_compiler.h"
+
+class vcl_atomic_count {
+ public:
+  explicit vcl_atomic_count(long v) : value_(v) {}
+  vcl_atomic_count(const vcl_atomic_count&) = delete;
+  vcl_atomic_count& operator=(const vcl_atomic_count&) = delete;
+
+  /// Increments and returns the new value.
+  long operator++() { return ++value_; }
+  /// Decrements and returns the new value.
+  long operator--() { return --value_; }
+  operator long() const { return value_.load(); }
+
+ private:
+  std::atomic<long> value_;
+};

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's vcl/vcl_stlfwd.h: the standard containers, for code that used it to name them.
+#pragma once
+
+#include <deque>
+#include <list>
+#include <map>
+#include <queue>
+#include <set>
+#include <stack>
+#include <string>
+#include <vector>
+
+#include "vcl_compiler.h"

@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's vcl/vcl_windows_header.h: <windows.h> without min/max macros, on Windows only.
+#pragma once
+
+#if defined(_WIN32)
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+#endif

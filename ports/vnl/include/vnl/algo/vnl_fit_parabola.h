@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/algo/vnl_fit_parabola.h: the parabola through (xa, fa), (xb, fb),
+/// (xc, fc) has its extremum at xb + p / q (q == 0 when the points are collinear).
+#pragma once
+
+inline void vnl_fit_parabola(double xa, double xb, double xc, double fa, double fb, double fc, double& p, double& q) {
+  const double x1 = xa - xb, f1 = fa - fb;
+  const double x2 = xc - xb, f2 = fc - fb;
+  p = x2 * x2 * f1 - x1 * x1 * f2;
+  q = 2 * (x2 * f1 - x1 * f2);
+}

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/algo/vnl_orthogonal_complement.h: an n x (n-1) matrix whose
+/// orthonormal columns span the space orthogonal to v (from the SVD of v as a row).
+#pragma once
+
+#include "vnl/algo/vnl_svd.h"
+#include "vnl/vnl_matrix.h"
+#include "vnl/vnl_vector.h"
+
+template <class T>
+vnl_matrix<T> vnl_orthogonal_complement(const vnl_vector<T>& v) {
+  const std::size_t n = v.size();
+  vnl_matrix<T> row(1, n);
+  row.set_row(0, v);
+  return vnl_svd<T>(row).V().extract(n, n - 1, 0, 1);
+}

@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/dll.h: the export macro for a shared vnl library; our vnl is
+/// static, so it expands to nothing.
+#pragma once
+
+#define VNL_DLL_DATA
+#ifndef VNL_EXPORT
+#define VNL_EXPORT
+#endif

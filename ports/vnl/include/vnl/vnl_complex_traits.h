@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_complex_traits.h: whether a scalar is real or complex, its
+/// conjugate, and its complexification.
+#pragma once
+
+#include <complex>
+
+template <class T>
+struct vnl_complex_traits {
+  static constexpr bool isreal = true;
+  static T conjugate(T x) { return x; }
+  static std::complex<T> complexify(T x) { return std::complex<T>(x, T(0)); }
+};
+
+template <class T>
+struct vnl_complex_traits<std::complex<T>> {
+  static constexpr bool isreal = false;
+  static std::complex<T> conjugate(std::complex<T> x) { return std::conj(x); }
+  static std::complex<T> complexify(std::complex<T> x) { return x; }
+};
+
+template <class T>
+struct vnl_complex_traits<const T> : vnl_complex_traits<T> {};

@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_double_2x3.h: vnl_double_2x3, a fixed 2 x 3 matrix of doubles.
+#pragma once
+
+#include "vnl/vnl_matrix_fixed.h"
+
+using vnl_double_2x3 = vnl_matrix_fixed<double, 2, 3>;

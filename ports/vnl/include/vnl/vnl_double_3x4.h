@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_double_3x4.h: vnl_double_3x4, a fixed 3 x 4 matrix of doubles.
+#pragma once
+
+#include "vnl/vnl_matrix_fixed.h"
+
+using vnl_double_3x4 = vnl_matrix_fixed<double, 3, 4>;

@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_erf.h: the error function and its complement in double (the C
+/// library's erf and erfc; upstream derives them from the incomplete gamma function), and the
+/// scaled complement exp(x^2) erfc(x), by its asymptotic series where erfc underflows.
+#pragma once
+
+#include <cmath>
+
+inline double vnl_erf(double x) { return std::erf(x); }
+double vnl_erfc(double x);
+/// exp(x^2) erfc(x), finite for large x.
+double vnl_scaled_erfc(double x);

@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_float_1x2.h: vnl_float_1x2, a fixed 1 x 2 matrix of floats.
+#pragma once
+
+#include "vnl/vnl_matrix_fixed.h"
+
+using vnl_float_1x2 = vnl_matrix_fixed<float, 1, 2>;

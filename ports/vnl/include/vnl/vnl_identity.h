@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_identity.h: the identity function f(x) = x as a vnl_unary_function.
+#pragma once
+
+#include "vnl/vnl_unary_function.h"
+
+template <class T>
+class vnl_identity : public vnl_unary_function<T, T> {
+ public:
+  vnl_unary_function<T, T>* Copy() const override { return new vnl_identity<T>(*this); }
+  T f(const T& x) override { return x; }
+};

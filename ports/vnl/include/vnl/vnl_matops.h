@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/vnl_matops.h: double matrix concatenation, the distance between
+/// matrices up to scale, and float/double conversion of whole containers.
+#pragma once
+
+#include "vnl/vnl_matrix.h"
+#include "vnl/vnl_vector.h"
+
+class vnl_matops {
+ public:
+  /// |A/|A| - B/|B|| in the Frobenius norm, choosing the sign of B that makes it smallest.
+  static double homg_diff(const vnl_matrix<double>& A, const vnl_matrix<double>& B);
+  /// [A B] side by side (same number of rows); a vector counts as one column.
+  static vnl_matrix<double> cat(const vnl_matrix<double>& A, const vnl_matrix<double>& B);
+  static vnl_matrix<double> cat(const vnl_matrix<double>& A, const vnl_vector<double>& B);
+  static vnl_matrix<double> cat(const vnl_vector<double>& A, const vnl_matrix<double>& B);
+  /// [A; B] stacked (same number of columns).
+  static vnl_matrix<double> vcat(const vnl_matrix<double>& A, const vnl_matrix<double>& B);
+  static vnl_matrix<double> f2d(const vnl_matrix<float>&);
+  static vnl_vector<double> f2d(const vnl_vector<float>&);
+  static vnl_matrix<float> d2f(const vnl_matrix<double>&);
+  static vnl_vector<float> d2f(const vnl_vector<double>&);
+};

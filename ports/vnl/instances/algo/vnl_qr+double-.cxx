@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates vnl_qr for double (upstream: core/vnl/algo/Templates/).
+#include "vnl/algo/vnl_qr.hxx"
+
+VNL_QR_INSTANTIATE(double);

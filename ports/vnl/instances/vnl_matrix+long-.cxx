@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates vnl_matrix for long (upstream: core/vnl/Templates/).
+#include "vnl/vnl_matrix.hxx"
+
+VNL_MATRIX_INSTANTIATE(long);

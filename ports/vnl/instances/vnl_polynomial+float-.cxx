@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates vnl_polynomial for float (upstream: core/vnl/Templates/).
+#include "vnl/vnl_polynomial.hxx"
+
+VNL_POLYNOMIAL_INSTANTIATE(float);

@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates vnl_vector for int (upstream: core/vnl/Templates/).
+#include "vnl/vnl_vector.hxx"
+
+VNL_VECTOR_INSTANTIATE(int);

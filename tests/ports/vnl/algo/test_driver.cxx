@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The vnl_algo driver (upstream: core/vnl/algo/tests/test_driver.cxx).
+#include "testlib/testlib_register.h"
+
+DECLARE(test_include);
+DECLARE(test_svd);
+DECLARE(test_qr);
+DECLARE(test_cholesky);
+DECLARE(test_symmetric_eigensystem);
+DECLARE(test_determinant);
+DECLARE(test_svd_fixed);
+DECLARE(test_matrix_update);
+DECLARE(test_integral);
+DECLARE(test_brent_minimizer);
+DECLARE(test_bracket_minimum);
+
+void register_tests() {
+  REGISTER(test_include);
+  REGISTER(test_svd);
+  REGISTER(test_qr);
+  REGISTER(test_cholesky);
+  REGISTER(test_symmetric_eigensystem);
+  REGISTER(test_determinant);
+  REGISTER(test_svd_fixed);
+  REGISTER(test_matrix_update);
+  REGISTER(test_integral);
+  REGISTER(test_brent_minimizer);
+  REGISTER(test_bracket_minimum);
+}
+
+DEFINE_MAIN
