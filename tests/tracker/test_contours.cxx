@@ -3,8 +3,10 @@
 /// (checked against the analytic case), sampled where the limbs project, and a cylinder in
 /// front of a cube hides the cube's edges behind it in Edge-ID; circles are sampled evenly on
 /// their projected ellipse with its normal, and faces hide them.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "edgetrack/contours.h"
 #include "edgetrack/control_points.h"
@@ -16,6 +18,11 @@ using namespace edgetrack;
 namespace {
 
 const PinholeCamera kCamera{real(220), real(220), real(160), real(120), 320, 240};
+
+/// `base`, or `steps` steps of the real's resolution where that is coarser (S47.16: 2^-16).
+double tolerance(double base, double steps) {
+  return std::max(base, steps * static_cast<double>(std::numeric_limits<real>::epsilon()));
+}
 
 /// A 60 mm cube centred at (0, 0, 0.2), seen from the origin, plus, when asked, a cylinder of
 /// radius 10 mm standing along y at (0, 0, 0.12), in front of the cube, and circles.
@@ -68,10 +75,12 @@ void test_generators_analytic() {
   TEST("a camera outside the cylinder sees two generators", cylinder_generators(c, camera, lines), true);
   const double x = 0.02 * 0.02 / 0.1, y = 0.02 * std::sqrt(1 - 0.04);
   for (int k = 0; k < 2; ++k) {
-    TEST_NEAR("the generator touches the rim at x = r^2/D", lines[k][0].x, x, 1e-6);
-    TEST_NEAR("at |y| = r sqrt(1 - r^2/D^2)", std::fabs(double(lines[k][0].y)), y, 1e-6);
-    TEST_NEAR("it runs from one axis end", lines[k][0].z, -0.05, 1e-6);
-    TEST_NEAR("to the other", lines[k][1].z, 0.05, 1e-6);
+    // Each coordinate is an axis point (rounded once) plus r times a unit vector; y also takes
+    // the square root of 1 - (r/D)^2: one step, two for y.
+    TEST_NEAR("the generator touches the rim at x = r^2/D", lines[k][0].x, x, tolerance(1e-6, 1));
+    TEST_NEAR("at |y| = r sqrt(1 - r^2/D^2)", std::fabs(double(lines[k][0].y)), y, tolerance(1e-6, 2));
+    TEST_NEAR("it runs from one axis end", lines[k][0].z, -0.05, tolerance(1e-6, 1));
+    TEST_NEAR("to the other", lines[k][1].z, 0.05, tolerance(1e-6, 1));
     // Tangency: the radius at the touching point is perpendicular to the viewing ray.
     const Vec3 radial{lines[k][0].x, lines[k][0].y, real(0)};
     TEST_NEAR("the viewing ray is perpendicular to the radius there (tangent)",
@@ -170,11 +179,13 @@ void test_circles() {
   std::printf("front circle: %d points (%d shown), back circle: %d (%d shown)\n", front, front_shown, back, back_shown);
   TEST_EQUAL("the front circle is sampled every 10 px: floor(2 pi 19.41 / 10) points", front,
              static_cast<int>(2 * 3.14159265358979 * radius_px / 10));
-  // Tolerances: the fixed-point builds round unit vectors and products at about 1e-6.
+  // Tolerances: S40.23 rounds unit vectors and products at about 1e-6. Where the real's step is
+  // coarser (S47.16), a point is the centre plus r times a unit vector, two steps off the 3D
+  // circle, and one step of metres at 170 mm is 220 / 0.17 of a pixel on the image circle.
   std::printf("largest deviations: %.2g px from the image circle, %.2g m from the 3D circle, normal cosine %.8f\n",
               worst_px, worst_m, worst_cos);
-  TEST_NEAR("each point lies on the image circle (px)", worst_px, 0, 1e-3);
-  TEST_NEAR("and on the 3D circle (m)", worst_m, 0, 1e-5);
+  TEST_NEAR("each point lies on the image circle (px)", worst_px, 0, tolerance(1e-3, 220 / 0.17));
+  TEST_NEAR("and on the 3D circle (m)", worst_m, 0, tolerance(1e-5, 2));
   TEST_NEAR("with the ellipse's normal, here radial (cosine)", worst_cos, 1, 1e-6);
   TEST_EQUAL("the circle on the front face is visible", front_shown, front);
   TEST("the circle on the back face is sampled", back > 0, true);
