@@ -9,6 +9,7 @@
 
 #include "args.h"
 #include "commands.h"
+#include "configuration.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "frame_source.h"
@@ -114,7 +115,7 @@ int synth_main(int argc, char** argv) {
     int width = 320, height = 240;
     auto size = a.size("--size", width, height);
     if (!size.ok()) return report("synth", size.error()) + 1;
-    auto read = edgetrack::read_visp_camera_xml(a.text("--camera"), width, height);
+    auto read = read_camera(a.text("--camera"), width, height);
     if (!read.ok()) return report("synth", read.error());
     camera = read.value();
   }

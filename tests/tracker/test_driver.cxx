@@ -10,6 +10,7 @@ DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
 DECLARE(test_pose_solver);
+DECLARE(test_face_visibility);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -20,6 +21,7 @@ void register_tests() {
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
   REGISTER(test_pose_solver);
+  REGISTER(test_face_visibility);
 }
 
 DEFINE_MAIN

@@ -6,12 +6,14 @@ DECLARE(test_tracking_cube);
 DECLARE(test_tracking_wood_toy);
 DECLARE(test_tracker_grey);
 DECLARE(test_tracker_reset);
+DECLARE(test_visp_config);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
   REGISTER(test_tracking_wood_toy);
   REGISTER(test_tracker_grey);
   REGISTER(test_tracker_reset);
+  REGISTER(test_visp_config);
 }
 
 DEFINE_MAIN

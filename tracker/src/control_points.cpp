@@ -5,12 +5,6 @@
 #include <cmath>
 
 namespace edgetrack {
-namespace {
-
-/// Only the part of an edge at least this far in front of the camera is sampled (metres).
-const real kNear = real(0.01);
-
-}  // namespace
 
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params) {
@@ -21,15 +15,17 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
   for (size_t e = 0; e < model.edges.size(); ++e) {
     Vec3 a = model.vertices[model.edges[e].a], b = model.vertices[model.edges[e].b];
     Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
-    if (ca.z < kNear && cb.z < kNear) continue;
-    if (ca.z < kNear || cb.z < kNear) {  // keep the part in front of the near plane
-      const real s = (kNear - ca.z) / (cb.z - ca.z);
-      if (ca.z < kNear) {
-        a = a + s * (b - a);
-        ca = ca + s * (cb - ca);
-      } else {
-        b = a + s * (b - a);
-        cb = ca + s * (cb - ca);
+    real t0, t1;
+    if (!clip_to_view(ca, cb, camera, params.clipping, t0, t1)) continue;
+    if (t0 > real(0) || t1 < real(1)) {  // keep the part in view
+      const Vec3 a0 = a, ca0 = ca;
+      if (t0 > real(0)) {
+        a = a0 + t0 * (b - a0);
+        ca = ca0 + t0 * (cb - ca0);
+      }
+      if (t1 < real(1)) {
+        b = a0 + t1 * (b - a0);
+        cb = ca0 + t1 * (cb - ca0);
       }
     }
     const Vec2 pa = camera.project(ca), pb = camera.project(cb);

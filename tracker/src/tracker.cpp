@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "edgetrack/me_search_box.h"
+#include "edgetrack/tracker_params.h"
 #include "visp3/core/vpImageConvert.h"
 
 namespace edgetrack {
@@ -41,8 +42,8 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
   if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
   if (model.edges.empty()) return Error{"", 0, "the model has no edge to track"};
   if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
-  if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
-  if (params.me.getRange() == 0) return Error{"", 0, "the moving-edge range must be at least 1 pixel"};
+  const auto problem = check_tracker_params(params);
+  if (problem) return Error{"", 0, problem->message};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
   return Tracker(model, camera, initial, params);
 }
@@ -51,12 +52,11 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
     : model_(model),
       camera_(camera),
       params_(params),
-      me_(params.me),
+      sampling_(sampling_params(params)),
+      face_visibility_(model),
       camera_from_model_(initial),
       edge_ids_(camera),
-      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {
-  me_.setSampleStep(params.sampling.step);
-}
+      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
 
 const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsigned int& converted) {
   if (params_.grey == GreyScaling::kWholeFrame) {
@@ -69,7 +69,7 @@ const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsign
   // tiles converted twice the pixels, at twice the guest instructions).
   converted = 0;
   for (const ControlPoint& point : visible_) {
-    const PixelBox box = me_search_box(point, me_);
+    const PixelBox box = me_search_box(point, params_.me);
     converted += vpImageConvert::RGB565ToGrey(rgb565, grey_, box.top, box.left, box.bottom, box.right);
   }
   return grey_;
@@ -87,7 +87,10 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
   else edge_ids_.render(model_, camera_from_model_);
-  visible_ = keep_visible(sample_control_points(model_, camera_, camera_from_model_, params_.sampling), edge_ids_);
+  face_visibility_.update(model_, camera_, camera_from_model_, params_.faces);
+  std::vector<ControlPoint> sampled = sample_control_points(model_, camera_, camera_from_model_, sampling_);
+  face_visibility_.keep_tracked(sampled);
+  visible_ = keep_visible(sampled, edge_ids_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -95,7 +98,7 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, me_);
+  matches_ = search_moving_edges(grey, visible_, params_.me);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

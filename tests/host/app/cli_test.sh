@@ -75,7 +75,7 @@ case $name in
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$work/frames/frame%04d.pgm" ;;
   error_size_mismatch)
-    printf '<camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0><image_width>320</image_width><image_height>240</image_height></camera>\n' >"$work/qvga.xml"
+    printf '<conf><camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0><image_width>320</image_width><image_height>240</image_height></camera></conf>\n' >"$work/qvga.xml"
     expect_error "image size 640x480 does not match the camera's 320x240" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$work/qvga.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" ;;
@@ -150,7 +150,7 @@ case $name in
     [ "$lost" -eq 40 ] || fail "the edge threshold of --config is not applied" ;;
   error_bad_config)
     sed 's:<size>5<:<size>1<:' "$mbt/cube.xml" >"$work/bad.xml"
-    expect_error "$work/bad.xml: <mask><size> must be 3..15 pixels, not 1" \
+    expect_error "$work/bad.xml:5: <ecm><mask><size> must be 3..15 pixels, not 1" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --config "$work/bad.xml" ;;
   lost_on_noise_and_blank_frames)

@@ -10,6 +10,7 @@
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
+#include "edgetrack/face_visibility.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/pose_solver.h"
@@ -26,13 +27,17 @@ enum class GreyScaling {
   kWholeFrame  ///< every pixel, as the paper does
 };
 
+/// The tracker's settings, each in one place; check_tracker_params (tracker_params.h) holds their
+/// limits, and the configuration reader (visp_config.h) fills them from a ViSP XML file.
 struct TrackerParams {
-  SamplingParams sampling;
-  PoseParams pose;
-  /// Moving-edge settings with upstream's meanings (range, threshold, mask size and number).
-  /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
-  /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
+  /// The moving edges with upstream's meanings, and the one home of every <ecm> setting: range,
+  /// threshold, mask size and number, mu1/mu2 and the sample step that spaces the control
+  /// points. mu1/mu2 are not used: sites are re-sampled every frame, so no previous contrast
+  /// exists to test them on.
   vpMe me;
+  FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
+  int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
+  PoseParams pose;
   GreyScaling grey = GreyScaling::kOnDemand;
 };
 
@@ -95,6 +100,8 @@ class Tracker {
   const std::vector<ControlPoint>& control_points() const { return visible_; }
   const std::vector<EdgeMatch>& matches() const { return matches_; }
   const EdgeIdBuffer& edge_ids() const { return edge_ids_; }
+  /// The faces' visibility and the edges tracked in the last frame.
+  const FaceVisibility& face_visibility() const { return face_visibility_; }
 
  private:
   Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
@@ -110,7 +117,8 @@ class Tracker {
   EdgeModel model_;
   PinholeCamera camera_;
   TrackerParams params_;
-  vpMe me_;
+  SamplingParams sampling_;  ///< from params_: the sample step of params_.me, the border, the clipping
+  FaceVisibility face_visibility_;
   Se3 camera_from_model_;
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
