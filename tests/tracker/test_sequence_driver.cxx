@@ -7,6 +7,7 @@ DECLARE(test_tracking_wood_toy);
 DECLARE(test_tracker_grey);
 DECLARE(test_tracker_reset);
 DECLARE(test_visp_config);
+DECLARE(test_tracker_faces);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -14,6 +15,7 @@ void register_tests() {
   REGISTER(test_tracker_grey);
   REGISTER(test_tracker_reset);
   REGISTER(test_visp_config);
+  REGISTER(test_tracker_faces);
 }
 
 DEFINE_MAIN

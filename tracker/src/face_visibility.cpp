@@ -83,6 +83,11 @@ FaceVisibility::FaceVisibility(const EdgeModel& model)
   clipped_.reserve(most + 6);
 }
 
+void FaceVisibility::reset() {
+  std::fill(face_visible_.begin(), face_visible_.end(), 0);
+  std::fill(edge_tracked_.begin(), edge_tracked_.end(), 0);
+}
+
 real FaceVisibility::clipped_area(const EdgeModel& model, int face, const PinholeCamera& camera,
                                   const Se3& camera_from_model, const ViewClipping& clipping) {
   polygon_.clear();

@@ -78,6 +78,7 @@ const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsign
 bool Tracker::reset(const Se3& camera_from_model) {
   if (camera_from_model.translation().z <= real(0)) return false;
   camera_from_model_ = camera_from_model;
+  face_visibility_.reset();
   return true;
 }
 

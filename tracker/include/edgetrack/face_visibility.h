@@ -66,6 +66,9 @@ class FaceVisibility {
   void update(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
               const FaceVisibilityParams& params);
 
+  /// Every face hidden again, as in a new tracker.
+  void reset();
+
   bool face_visible(int face) const { return face_visible_[static_cast<size_t>(face)] != 0; }
   bool edge_tracked(int edge) const { return edge_tracked_[static_cast<size_t>(edge)] != 0; }
   /// Removes, in place, the control points of edges not tracked.

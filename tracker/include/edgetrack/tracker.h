@@ -92,7 +92,8 @@ class Tracker {
 
   const Se3& camera_from_model() const { return camera_from_model_; }
   /// Continues from `camera_from_model` at the next frame (after a lost frame, or a new
-  /// initialisation); keeps the buffers, the parameters and the Edge-ID source. False, and
+  /// initialisation); keeps the buffers, the parameters and the Edge-ID source, and starts the
+  /// faces' visibility afresh (all hidden, as a new tracker's). False, and
   /// nothing changes, when the pose puts the model behind the camera.
   bool reset(const Se3& camera_from_model);
   /// The visible control points and the matches of the last frame (with the pose step's
