@@ -9,6 +9,7 @@
 #include "edgetrack/control_points.h"
 #include "edgetrack/face_visibility.h"
 #include "edgetrack/model_io.h"
+#include "face_angle.h"
 #include "testlib/testlib_test.h"
 
 using namespace edgetrack;
@@ -27,21 +28,6 @@ Se3 turned_about_y(double degrees, double distance) {
   return Se3(r, {real(0), real(0), real(distance)});
 }
 
-/// The angle between face f's normal and the direction from its centre to the camera, in double.
-double face_angle(const EdgeModel& model, int f, const Se3& pose) {
-  double c[3] = {0, 0, 0};
-  for (int v : model.faces[f].vertices) {
-    const Vec3 p = pose * model.vertices[v];
-    c[0] += static_cast<double>(p.x);
-    c[1] += static_cast<double>(p.y);
-    c[2] += static_cast<double>(p.z);
-  }
-  const Vec3 n = pose.rotation() * model.faces[f].normal;
-  const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  const double d = -(c[0] * static_cast<double>(n.x) + c[1] * static_cast<double>(n.y) + c[2] * static_cast<double>(n.z));
-  return std::acos(d / len) * 180 / kPi;
-}
-
 void hysteresis(const EdgeModel& model, const PinholeCamera& camera) {
   FaceVisibilityParams params;
   params.angle_appear = real(65 * kPi / 180);
@@ -56,7 +42,7 @@ void hysteresis(const EdgeModel& model, const PinholeCamera& camera) {
     const double turn = k <= 176 ? k * 0.5 : (352 - k) * 0.5;
     const Se3 pose = turned_about_y(turn, 0.15);
     faces.update(model, camera, pose, params);
-    const double angle = face_angle(model, front, pose);
+    const double angle = edgetrack_test::face_angle_degrees(model, front, pose);
     const bool was = expected;
     expected = was ? angle < 75 : angle < 65;
     if (std::fabs(angle - 75) < 0.05 || std::fabs(angle - 65) < 0.05) {

@@ -13,6 +13,7 @@
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
 #include "synthetic_sequence.h"
+#include "face_angle.h"
 #include "testlib/testlib_test.h"
 
 using namespace edgetrack;
@@ -35,22 +36,6 @@ Se3 turned(double degrees) {
   pitch.m[2][1] = real(std::sin(tilt));
   pitch.m[2][2] = real(std::cos(tilt));
   return Se3(pitch * yaw, {real(0.003), real(-0.002), real(0.15)});
-}
-
-/// The angle the face rule measures for face f: between its normal and the direction from its
-/// centre to the camera (degrees, in double).
-double face_angle(const EdgeModel& model, int f, const Se3& pose) {
-  double c[3] = {0, 0, 0};
-  for (int v : model.faces[f].vertices) {
-    const Vec3 p = pose * model.vertices[v];
-    c[0] += static_cast<double>(p.x);
-    c[1] += static_cast<double>(p.y);
-    c[2] += static_cast<double>(p.z);
-  }
-  const Vec3 n = pose.rotation() * model.faces[f].normal;
-  const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  const double d = -(c[0] * static_cast<double>(n.x) + c[1] * static_cast<double>(n.y) + c[2] * static_cast<double>(n.z));
-  return std::acos(d / len) * 180 / kPi;
 }
 
 }  // namespace
@@ -81,7 +66,7 @@ static void test_tracker_faces() {
   for (size_t k = 0; k < angles.size(); ++k) {
     renderer.render(model.value(), turned(angles[k]), static_cast<uint32_t>(500 + k), image);
     // The rule runs at the frame's starting pose, the previous frame's.
-    const double seen_at = face_angle(model.value(), front, tracker.value().camera_from_model());
+    const double seen_at = face_angle_degrees(model.value(), front, tracker.value().camera_from_model());
     tracker.value().track(image.pixels.data());
     const FaceVisibility& faces = tracker.value().face_visibility();
     const bool visible = faces.face_visible(front);

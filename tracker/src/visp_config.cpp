@@ -155,28 +155,40 @@ class Reading {
     return true;
   }
 
+  /// A whole number read as a switch: non-zero is on, as ViSP reads it.
+  Result<bool> flag(const XmlElement& e, const std::string& where, bool& out) const {
+    auto got = whole(e, where);
+    if (!got.ok()) return got.error();
+    out = got.value() != 0;
+    return true;
+  }
+  /// A number times `scale` into `out`, then the limits.
+  Result<bool> measure(const XmlElement& e, const std::string& where, double scale, real& out) {
+    auto got = number(e, where);
+    if (!got.ok()) return got.error();
+    out = real(got.value() * scale);  // set-up time conversion
+    return check(e);
+  }
+
   Result<bool> face(const XmlElement& block) {
     FaceVisibilityParams& faces = config_.params.faces;
     for (const XmlElement& e : block.children) {
       const std::string where = "<face><" + e.name + ">";
+      Result<bool> read = true;
       if (e.name == "fov_clipping") {
-        auto got = whole(e, where);
-        if (!got.ok()) return got.error();
-        faces.fov_clipping = got.value() != 0;
-        continue;
+        read = flag(e, where, faces.fov_clipping);
+      } else if (e.name == "angle_appear") {
+        read = measure(e, where, kRadiansPerDegree, faces.angle_appear);
+      } else if (e.name == "angle_disappear") {
+        read = measure(e, where, kRadiansPerDegree, faces.angle_disappear);
+      } else if (e.name == "near_clipping") {
+        faces.near_clipping = true;
+        read = measure(e, where, 1, faces.near_distance);
+      } else if (e.name == "far_clipping") {
+        faces.far_clipping = true;
+        read = measure(e, where, 1, faces.far_distance);
       }
-      real* value = e.name == "angle_appear" ? &faces.angle_appear : e.name == "angle_disappear" ? &faces.angle_disappear
-                    : e.name == "near_clipping" ? &faces.near_distance : e.name == "far_clipping" ? &faces.far_distance
-                    : nullptr;
-      if (!value) continue;
-      auto got = number(e, where);
-      if (!got.ok()) return got.error();
-      const bool angle = e.name == "angle_appear" || e.name == "angle_disappear";
-      *value = real(angle ? got.value() * kRadiansPerDegree : got.value());
-      if (e.name == "near_clipping") faces.near_clipping = true;
-      if (e.name == "far_clipping") faces.far_clipping = true;
-      auto checked = check(e);
-      if (!checked.ok()) return checked;
+      if (!read.ok()) return read;
     }
     return true;
   }
@@ -185,20 +197,11 @@ class Reading {
     FaceVisibilityParams& faces = config_.params.faces;
     for (const XmlElement& e : block.children) {
       const std::string where = "<lod><" + e.name + ">";
-      if (e.name == "use_lod") {
-        auto got = whole(e, where);
-        if (!got.ok()) return got.error();
-        faces.use_lod = got.value() != 0;
-        continue;
-      }
-      real* value = e.name == "min_line_length_threshold"    ? &faces.min_line_length
-                    : e.name == "min_polygon_area_threshold" ? &faces.min_polygon_area : nullptr;
-      if (!value) continue;
-      auto got = number(e, where);
-      if (!got.ok()) return got.error();
-      *value = real(got.value());
-      auto checked = check(e);
-      if (!checked.ok()) return checked;
+      Result<bool> read = true;
+      if (e.name == "use_lod") read = flag(e, where, faces.use_lod);
+      else if (e.name == "min_line_length_threshold") read = measure(e, where, 1, faces.min_line_length);
+      else if (e.name == "min_polygon_area_threshold") read = measure(e, where, 1, faces.min_polygon_area);
+      if (!read.ok()) return read;
     }
     return true;
   }
