@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # The README's test command: installs what is missing, builds the host trees (double, s40_23,
-# and double with ASan+UBSan) and the ARM trees (s40_23, double soft-float), and runs ctest in
-# each; ARM tests run on qemu-arm -cpu pxa270. Fails if any build or test fails.
+# s47_16, and double with ASan+UBSan), the fuzz tree (clang's libFuzzer over every parser, a
+# short smoke run each) and the ARM trees (s40_23, double soft-float), and runs ctest in each;
+# ARM tests run on qemu-arm -cpu pxa270. Fails if any build or test fails.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
@@ -11,11 +12,15 @@ jobs=${EDGETRACK_JOBS:-$(nproc)}
 "$top/toolchains/install-deps.sh"
 
 arm_toolchain=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
+fuzz=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DEDGETRACK_FUZZ=ON -DEDGETRACK_HOST_EXTRAS=OFF
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo)
 # name | cmake arguments
 trees=(
   "host-double|-DEDGETRACK_REAL=double"
   "host-s40_23|-DEDGETRACK_REAL=s40_23"
+  "host-s47_16|-DEDGETRACK_REAL=s47_16"
   "host-asan|-DEDGETRACK_REAL=double -DEDGETRACK_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
+  "host-fuzz|-DEDGETRACK_REAL=double ${fuzz[*]}"
   "arm-s40_23|-DEDGETRACK_REAL=s40_23 ${arm_toolchain[*]}"
   "arm-double|-DEDGETRACK_REAL=double ${arm_toolchain[*]}"
 )

@@ -17,7 +17,9 @@ set(CMAKE_C_FLAGS_INIT "${EDGETRACK_ARM_FLAGS}")
 set(CMAKE_CXX_FLAGS_INIT "${EDGETRACK_ARM_FLAGS}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static -no-pie")
 
-set(CMAKE_FIND_ROOT_PATH ${EDGETRACK_ARM_SYSROOT})
+# Prefixes on CMAKE_PREFIX_PATH (an edgetrack installed for this target) are roots too, so a
+# program built with this file finds them without re-rooting them under the sysroot.
+set(CMAKE_FIND_ROOT_PATH ${EDGETRACK_ARM_SYSROOT} ${CMAKE_PREFIX_PATH})
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)

@@ -10,6 +10,8 @@ packages=(
   libvisp-dev visp-images-data               # upstream ViSP 3.5 and its real image sequences
   libopencv-dev libosmesa6-dev               # host image/video I/O and offscreen GL
   libx11-dev xvfb xauth xdotool              # track --init-click: display check; its test on a virtual display
+  dpkg-dev                                   # cpack -G DEB: dpkg-shlibdeps fills the tools' Depends
+  clang libclang-rt-14-dev                   # libFuzzer, ASan and UBSan for the fuzz tree (tests/fuzz)
 )
 
 missing=()

@@ -3,7 +3,11 @@
 #include "args.h"
 
 #include <cstdio>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
+
+#include "image_io.h"
 
 using edgetrack::Error;
 using edgetrack::Result;
@@ -48,19 +52,36 @@ Result<double> Args::number(const std::string& name, double fallback) const {
   const std::string& value = values_.at(name);
   char* end = nullptr;
   const double parsed = std::strtod(value.c_str(), &end);
-  if (value.empty() || *end != '\0') return Error{"", 0, "option " + name + " needs a number, not '" + value + "'"};
+  if (value.empty() || *end != '\0' || !std::isfinite(parsed))
+    return Error{"", 0, "option " + name + " needs a finite number, not '" + value + "'"};
   return parsed;
+}
+
+Result<int> Args::frame_number(const std::string& name) const {
+  auto value = integer(name, -1);
+  if (!value.ok()) return value;
+  if (has(name) && value.value() < 0)
+    return Error{"", 0, "option " + name + " needs a frame number (0 or more), not '" + values_.at(name) + "'"};
+  return value;
 }
 
 Result<bool> Args::size(const std::string& name, int& width, int& height) const {
   if (!has(name)) return false;
   const std::string& value = values_.at(name);
-  int w = 0, h = 0;
-  char tail = 0;
-  if (std::sscanf(value.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w <= 0 || h <= 0)
+  // strtoll, not sscanf's %d, so that a side too large for int is refused rather than undefined.
+  const char* text = value.c_str();
+  char* x = nullptr;
+  char* end = nullptr;
+  const long long w = std::isdigit(static_cast<unsigned char>(text[0])) ? std::strtoll(text, &x, 10) : 0;
+  const long long h = x && *x == 'x' && std::isdigit(static_cast<unsigned char>(x[1])) ? std::strtoll(x + 1, &end, 10) : 0;
+  if (w <= 0 || h <= 0 || !end || *end != '\0')
     return Error{"", 0, "option " + name + " needs WIDTHxHEIGHT, not '" + value + "'"};
-  width = w;
-  height = h;
+  if (!usable_image_size(w, h))
+    return Error{"", 0, "option " + name + " asks for " + value + ": sides must be at most " +
+                            std::to_string(kMaxImageSide) + " pixels and the image at most " +
+                            std::to_string(kMaxImagePixels >> 20) + " M pixels"};
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
   return true;
 }
 

@@ -26,8 +26,11 @@ class Args {
   std::string text(const std::string& name, const std::string& fallback = "") const;
   /// The value as an integer / a number; an Error names the option and the value.
   edgetrack::Result<int> integer(const std::string& name, int fallback) const;
+  /// A finite number: nan and inf are refused.
   edgetrack::Result<double> number(const std::string& name, double fallback) const;
-  /// A value "WIDTHxHEIGHT".
+  /// A frame number: -1 when the option is absent, an Error when it is negative.
+  edgetrack::Result<int> frame_number(const std::string& name) const;
+  /// A value "WIDTHxHEIGHT", each side 1..16384 and at most 64 M pixels (image_io.h).
   edgetrack::Result<bool> size(const std::string& name, int& width, int& height) const;
 
  private:

@@ -9,6 +9,7 @@
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "edgetrack/contours.h"
 #include "edgetrack/pose_io.h"
 #include "pose_from_points.h"
 
@@ -81,6 +82,12 @@ void draw_model(cv::Mat& view, const edgetrack::EdgeModel& model, const edgetrac
     cv::Point2d a, b;
     if (pixel(model.vertices[edge.a], a) && pixel(model.vertices[edge.b], b))
       cv::line(view, a, b, {0, 255, 0}, 1, cv::LINE_AA);
+  }
+  std::vector<edgetrack::ContourSegment> curved;
+  edgetrack::curved_contours(model, pose, curved);
+  for (const edgetrack::ContourSegment& segment : curved) {
+    cv::Point2d a, b;
+    if (pixel(segment.a, a) && pixel(segment.b, b)) cv::line(view, a, b, {0, 255, 0}, 1, cv::LINE_AA);
   }
 }
 

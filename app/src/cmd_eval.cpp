@@ -16,17 +16,18 @@ int eval_main(int argc, char** argv) {
       {"--poses", true, "tracked poses CSV (edgetrack track --poses)"},
       {"--truth", true, "ground truth CSV (edgetrack synth writes truth.csv)"},
       {"--plots", true, "directory for fig4_time_per_frame.png and fig5_camera_position.png"},
+      {"--coverage", false, "evaluate a poses file that covers only part of the truth, and say how much"},
       {"--help", false, "this text"},
   };
   auto args = Args::parse(argc, argv, 1, specs);
   if (!args.ok()) return report("eval", args.error()) + 1;
   if (args.value().has("--help")) {
-    std::printf("%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR]", specs).c_str());
+    std::printf("%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR] [--coverage]", specs).c_str());
     return 0;
   }
   const Args& a = args.value();
   if (!a.has("--poses") || !a.has("--truth")) {
-    std::fprintf(stderr, "%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR]", specs).c_str());
+    std::fprintf(stderr, "%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR] [--coverage]", specs).c_str());
     return 2;
   }
   auto poses = read_pose_table(a.text("--poses"), kPosesHeader);
@@ -36,6 +37,14 @@ int eval_main(int argc, char** argv) {
   auto evaluation = evaluate(poses.value(), truth.value(), a.text("--truth"));
   if (!evaluation.ok()) return report("eval", evaluation.error());
   const Evaluation& e = evaluation.value();
+  if (e.first_missing >= 0 && !a.has("--coverage"))
+    return report("eval", {a.text("--poses"), 0,
+                           "covers " + std::to_string(e.frames.size()) + " of the " + std::to_string(e.truth_frames) +
+                               " frames of " + a.text("--truth") + " (frame " + std::to_string(e.first_missing) +
+                               " is missing): a run that stopped early? --coverage evaluates what is there"});
+  if (e.first_missing >= 0)
+    std::printf("coverage: %zu of %d truth frames tracked (first missing: %d)\n", e.frames.size(), e.truth_frames,
+                e.first_missing);
   std::printf("frames %zu, lost %d\n", e.frames.size(), e.lost);
   std::printf("mean absolute camera position error: x %.2f mm, y %.2f mm, z %.2f mm\n", e.mean_abs_mm[0],
               e.mean_abs_mm[1], e.mean_abs_mm[2]);

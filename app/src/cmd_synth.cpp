@@ -4,6 +4,8 @@
 /// occluder; writes the frames, truth.csv, the first pose (.pos) and the camera XML.
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -12,6 +14,7 @@
 #include "configuration.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
+#include "edgetrack/scene_extras.h"
 #include "frame_source.h"
 #include "gl_renderer.h"
 #include "host_io.h"
@@ -51,6 +54,16 @@ RgbImage clutter_texture(int size, uint64_t seed) {
   return image;
 }
 
+/// The occluder's covered share of the object's image over the frames.
+struct CoverStats {
+  double sum = 0, low = 1, high = 0;
+  void add(double share) {
+    sum += share;
+    low = std::min(low, share);
+    high = std::max(high, share);
+  }
+};
+
 /// Adds Gaussian noise (sigma grey levels) and a Gaussian blur (sigma pixels), in place.
 void degrade(RgbImage& image, double noise, double blur, uint64_t seed) {
   cv::Mat mat(image.height, image.width, CV_8UC3, image.rgb.data());
@@ -66,10 +79,132 @@ void degrade(RgbImage& image, double noise, double blur, uint64_t seed) {
   }
 }
 
+/// What synth was asked for, read and checked.
+struct SynthOptions {
+  std::string out, model_path, trajectory;
+  PinholeCamera camera;
+  int frames = 60, supersample = 4, seed = 1;
+  double speed = 1, noise = 2, blur = 0.6, cover = 0, clutter_mm = 0;
+  bool occluder = false, rgb565 = false;
+};
+
+/// The options, or an Error: one naming no file is a bad option value (exit status 2), one
+/// naming a file (the camera XML) a bad input (exit status 1).
+Result<SynthOptions> read_options(const Args& a) {
+  SynthOptions o;
+  o.out = a.text("--out");
+  o.model_path = a.text("--model", data_dir() + "/models/cube60.cao");
+  o.trajectory = a.text("--trajectory", "paper");
+  o.occluder = a.has("--occluder");
+  o.rgb565 = a.has("--rgb565");
+  auto frames = a.integer("--frames", 60), supersample = a.integer("--supersample", 4), seed = a.integer("--seed", 1);
+  auto speed = a.number("--speed", 1.0), noise = a.number("--noise", 2.0), blur = a.number("--blur", 0.6);
+  auto cover = a.number("--cover", 0.0), clutter_mm = a.number("--clutter", 0.0);
+  for (const auto* bad : {&frames.error(), &noise.error(), &blur.error(), &supersample.error(), &seed.error(),
+                          &speed.error(), &cover.error(), &clutter_mm.error()})
+    if (!bad->message.empty()) return *bad;
+  o.frames = frames.value(), o.supersample = supersample.value(), o.seed = seed.value();
+  o.speed = speed.value(), o.noise = noise.value(), o.blur = blur.value();
+  o.cover = cover.value(), o.clutter_mm = clutter_mm.value();
+  if (o.frames <= 0 || o.frames > 100000) return Error{"", 0, "--frames must be 1..100000"};
+  // Past 255 grey levels noise is only saturation; past 50 px a blur leaves no edge to track,
+  // and its cost grows with its width.
+  if (o.noise < 0 || o.noise > 255) return Error{"", 0, "--noise must be 0..255 grey levels"};
+  if (o.blur < 0 || o.blur > 50) return Error{"", 0, "--blur must be 0..50 pixels"};
+  if (o.speed < 1 || o.speed > 16) return Error{"", 0, "--speed must be 1..16"};
+  if (o.cover < 0 || o.cover >= 1) return Error{"", 0, "--cover must be a share in [0, 1)"};
+  if (o.clutter_mm < 0 || o.clutter_mm > 50) return Error{"", 0, "--clutter must be 0..50 mm"};
+  if (o.supersample < 1 || o.supersample > 8) return Error{"", 0, "--supersample must be 1..8"};
+  // The paper's cube at 150 mm shows about 60 control points with this QVGA camera (72 degrees wide).
+  o.camera = PinholeCamera{real(220), real(220), real(160), real(120), 320, 240};
+  if (a.has("--camera")) {
+    int width = 320, height = 240;
+    auto size = a.size("--size", width, height);
+    if (!size.ok()) return size.error();
+    auto read = read_camera(a.text("--camera"), width, height);
+    if (!read.ok()) return read.error();
+    o.camera = read.value();
+  }
+  if (!usable_image_size(static_cast<long long>(o.camera.width) * o.supersample,
+                         static_cast<long long>(o.camera.height) * o.supersample))
+    return Error{"", 0, "the image rendered at --supersample " + std::to_string(o.supersample) + " would be " +
+                            std::to_string(static_cast<long long>(o.camera.width) * o.supersample) + "x" +
+                            std::to_string(static_cast<long long>(o.camera.height) * o.supersample) +
+                            ": at most " + std::to_string(kMaxImageSide) + " pixels a side and " +
+                            std::to_string(kMaxImagePixels >> 20) + " M pixels"};
+  return o;
+}
+
+/// The trajectory at the asked speed, each pose checked to keep the model in front.
+Result<std::vector<Se3>> synth_poses(const SynthOptions& o, const edgetrack::EdgeModel& model) {
+  const int slow_frames = static_cast<int>(std::ceil(o.speed * (o.frames - 1))) + 1;
+  auto slow = make_trajectory(o.trajectory, slow_frames);
+  if (!slow.ok()) return slow.error();
+  std::vector<Se3> poses = edgetrack::faster_poses(slow.value(), real(o.speed), o.frames);
+  if (static_cast<int>(poses.size()) < o.frames) return Error{o.trajectory, 0, "fewer than --frames times --speed poses"};
+  for (size_t k = 0; k < poses.size(); ++k) {
+    auto in_front = check_in_front(model, poses[k], o.trajectory + " frame " + std::to_string(k));
+    if (!in_front.ok()) return in_front.error();
+  }
+  return poses;
+}
+
+/// The backdrop: a plane 80 mm behind the model's centre, facing the first camera position.
+SceneExtras backdrop_scene(const edgetrack::EdgeModel& m, const Se3& first_pose, const RgbImage& backdrop) {
+  Vec3 centre;
+  for (const Vec3& v : m.vertices) centre = centre + v;
+  centre = real(1.0 / m.vertices.size()) * centre;
+  const Vec3 towards_camera = edgetrack::normalized(first_pose.inverse().translation() - centre);
+  SceneExtras extras;
+  extras.backdrop = &backdrop;
+  extras.backdrop_normal = towards_camera;
+  extras.backdrop_centre = centre - real(0.08) * towards_camera;
+  extras.backdrop_size = 0.6;
+  return extras;
+}
+
+/// Renders and writes every frame and the truth rows; returns the occluder's covered shares.
+Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeModel& m, const std::vector<Se3>& poses,
+                                SceneExtras extras, const std::string& pattern) {
+  auto renderer = GlRenderer::create(o.camera, o.supersample);
+  if (!renderer.ok()) return renderer.error();
+  auto truth = PoseTableWriter::open(o.out + "/truth.csv", false);
+  if (!truth.ok()) return truth.error();
+  CoverStats covered;
+  std::vector<uint8_t> mask;
+  std::vector<int> columns;
+  std::vector<uint16_t> packed;
+  for (int k = 0; k < o.frames; ++k) {
+    const Se3& pose = poses[static_cast<size_t>(k)];
+    // The occluder sweeps from left to right across the middle third of the sequence.
+    extras.occluder_x = -0.03 + 0.06 * (k - o.frames / 3.0) / (o.frames / 3.0);
+    if (o.cover > 0) {
+      edgetrack::silhouette_columns(m, o.camera, pose, mask, columns);
+      extras.band = edgetrack::occluder_band(columns, edgetrack::sweeping_centre(columns, k, o.frames), real(o.cover));
+      covered.add(static_cast<double>(extras.band.covered_share));
+    }
+    RgbImage image = renderer.value()->render_scene(m, pose, extras);
+    degrade(image, o.noise, o.blur, static_cast<uint64_t>(o.seed) * 7919u + static_cast<uint64_t>(k));
+    const std::string path = expand_pattern(pattern, k);
+    Result<bool> written = true;
+    if (o.rgb565) {
+      to_rgb565(image, packed);
+      written = write_raw_rgb565(path, packed);
+    } else {
+      written = write_ppm(path, image);
+    }
+    if (!written.ok()) return written.error();
+    truth.value().write(pose_row(k, pose));
+  }
+  auto closed = truth.value().close();
+  if (!closed.ok()) return closed.error();
+  return covered;
+}
+
 int synth_main(int argc, char** argv) {
   const std::string synopsis =
       "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--noise S] [--blur S] [--occluder] [--rgb565]";
+      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--clutter MM] [--rgb565]";
   const std::vector<OptionSpec> specs = {
       {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
       {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
@@ -77,9 +212,12 @@ int synth_main(int argc, char** argv) {
       {"--size", true, "image size for --camera, WIDTHxHEIGHT (default 320x240)"},
       {"--trajectory", true, "paper (default) or a CSV with the header of truth.csv"},
       {"--frames", true, "number of frames (default 60)"},
+      {"--speed", true, "the same path K times faster: frame k shows trajectory pose K k, interpolated (default 1)"},
       {"--noise", true, "Gaussian noise, grey levels sigma (default 2)"},
       {"--blur", true, "Gaussian blur, pixels sigma (default 0.6)"},
       {"--occluder", false, "a dark bar crossing the view in front of the model"},
+      {"--cover", true, "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping across it"},
+      {"--clutter", true, "dark lines parallel to every model edge, this many mm beside it, away from the model's centre"},
       {"--rgb565", false, "write raw RGB565 frames (.rgb565) instead of PPM"},
       {"--supersample", true, "samples per pixel along each axis (default 4)"},
       {"--seed", true, "seed of the backdrop and the noise (default 1)"},
@@ -96,89 +234,41 @@ int synth_main(int argc, char** argv) {
     std::fprintf(stderr, "%s", usage("synth", synopsis, specs).c_str());
     return 2;
   }
-  auto frames = a.integer("--frames", 60);
-  auto noise = a.number("--noise", 2.0);
-  auto blur = a.number("--blur", 0.6);
-  auto supersample = a.integer("--supersample", 4);
-  auto seed = a.integer("--seed", 1);
-  for (const auto* bad : {&frames.error(), &noise.error(), &blur.error(), &supersample.error(), &seed.error()})
-    if (!bad->message.empty()) return report("synth", *bad) + 1;
-  if (frames.value() <= 0) return report("synth", {"", 0, "--frames must be positive"}) + 1;
-  if (supersample.value() < 1 || supersample.value() > 8) return report("synth", {"", 0, "--supersample must be 1..8"}) + 1;
-
-  const std::string model_path = a.text("--model", data_dir() + "/models/cube60.cao");
-  auto model = edgetrack::load_model(model_path);
+  auto options = read_options(a);
+  if (!options.ok()) return report("synth", options.error()) + (options.error().file.empty() ? 1 : 0);
+  const SynthOptions& o = options.value();
+  auto model = edgetrack::load_model(o.model_path);
   if (!model.ok()) return report("synth", model.error());
-  // The paper's cube at 150 mm shows about 60 control points with this QVGA camera (72 degrees wide).
-  PinholeCamera camera{real(220), real(220), real(160), real(120), 320, 240};
-  if (a.has("--camera")) {
-    int width = 320, height = 240;
-    auto size = a.size("--size", width, height);
-    if (!size.ok()) return report("synth", size.error()) + 1;
-    auto read = read_camera(a.text("--camera"), width, height);
-    if (!read.ok()) return report("synth", read.error());
-    camera = read.value();
-  }
-  auto poses = make_trajectory(a.text("--trajectory", "paper"), frames.value());
-  if (!poses.ok()) return report("synth", poses.error());
-  for (size_t k = 0; k < poses.value().size(); ++k) {
-    auto in_front = check_in_front(model.value(), poses.value()[k], a.text("--trajectory", "paper") + " frame " + std::to_string(k));
-    if (!in_front.ok()) return report("synth", in_front.error());
-  }
-
-  const std::string out = a.text("--out");
-  std::error_code error;
-  std::filesystem::create_directories(out + "/frames", error);
-  if (error) return report("synth", {out, 0, "cannot create the directory: " + error.message()});
-  auto renderer = GlRenderer::create(camera, supersample.value());
-  if (!renderer.ok()) return report("synth", renderer.error());
-
-  // The backdrop: a plane 80 mm behind the model's centre, facing the first camera position.
-  const RgbImage backdrop = clutter_texture(1024, static_cast<uint64_t>(seed.value()));
   const edgetrack::EdgeModel& m = model.value();
-  Vec3 centre;
-  for (const Vec3& v : m.vertices) centre = centre + v;
-  centre = real(1.0 / m.vertices.size()) * centre;
-  const Vec3 towards_camera = edgetrack::normalized(poses.value()[0].inverse().translation() - centre);
-  SceneExtras extras;
-  extras.backdrop = &backdrop;
-  extras.backdrop_normal = towards_camera;
-  extras.backdrop_centre = centre - real(0.08) * towards_camera;
-  extras.backdrop_size = 0.6;
-  extras.occluder = a.has("--occluder");
+  auto poses = synth_poses(o, m);
+  if (!poses.ok()) return report("synth", poses.error());
+  std::error_code error;
+  std::filesystem::create_directories(o.out + "/frames", error);
+  if (error) return report("synth", {o.out, 0, "cannot create the directory: " + error.message()});
 
-  auto truth = PoseTableWriter::open(out + "/truth.csv", false);
-  if (!truth.ok()) return report("synth", truth.error());
-  const bool rgb565 = a.has("--rgb565");
-  const std::string pattern = out + (rgb565 ? "/frames/frame%04d.rgb565" : "/frames/frame%04d.ppm");
-  std::vector<uint16_t> packed;
-  for (int k = 0; k < frames.value(); ++k) {
-    const Se3& pose = poses.value()[k];
-    // The occluder sweeps from left to right across the middle third of the sequence.
-    extras.occluder_x = -0.03 + 0.06 * (k - frames.value() / 3.0) / (frames.value() / 3.0);
-    RgbImage image = renderer.value()->render_scene(m, pose, extras);
-    degrade(image, noise.value(), blur.value(), static_cast<uint64_t>(seed.value()) * 7919u + static_cast<uint64_t>(k));
-    const std::string path = expand_pattern(pattern, k);
-    Result<bool> written = true;
-    if (rgb565) {
-      to_rgb565(image, packed);
-      written = write_raw_rgb565(path, packed);
-    } else {
-      written = write_ppm(path, image);
-    }
-    if (!written.ok()) return report("synth", written.error());
-    truth.value().write(pose_row(k, pose));
-  }
-  auto closed = truth.value().close();
-  if (!closed.ok()) return report("synth", closed.error());
-  auto pos = edgetrack::write_pos(out + "/first.pos", poses.value()[0]);
+  const RgbImage backdrop = clutter_texture(1024, static_cast<uint64_t>(o.seed));
+  SceneExtras extras = backdrop_scene(m, poses.value()[0], backdrop);
+  extras.occluder = o.occluder;
+  const std::vector<edgetrack::Segment3> clutter = edgetrack::parallel_clutter(m, real(o.clutter_mm / 1000));
+  if (o.clutter_mm > 0) extras.clutter = &clutter;
+  const std::string pattern = o.out + (o.rgb565 ? "/frames/frame%04d.rgb565" : "/frames/frame%04d.ppm");
+  auto covered = write_frames(o, m, poses.value(), extras, pattern);
+  if (!covered.ok()) return report("synth", covered.error());
+  auto pos = edgetrack::write_pos(o.out + "/first.pos", poses.value()[0]);
   if (!pos.ok()) return report("synth", pos.error());
-  auto xml = write_camera_xml(out + "/camera.xml", camera);
+  auto xml = write_camera_xml(o.out + "/camera.xml", o.camera);
   if (!xml.ok()) return report("synth", xml.error());
-  std::printf("synth: %d frames of %dx%d in %s, largest image motion %.2f px/frame\n", frames.value(), camera.width,
-              camera.height, pattern.c_str(), largest_vertex_motion(m, camera, poses.value()));
-  std::printf("synth: truth %s/truth.csv, first pose %s/first.pos, camera %s/camera.xml\n", out.c_str(), out.c_str(),
-              out.c_str());
+  std::printf("synth: %d frames of %dx%d in %s, largest image motion %.2f px/frame\n", o.frames, o.camera.width,
+              o.camera.height, pattern.c_str(), largest_vertex_motion(m, o.camera, poses.value()));
+  if (o.cover > 0)
+    std::printf("synth: occluder covers %.1f %% of the object's image on average (%.1f to %.1f %%)\n",
+                100 * covered.value().sum / o.frames, 100 * covered.value().low, 100 * covered.value().high);
+  if (o.clutter_mm > 0)
+    std::printf("synth: %zu clutter lines %.1f mm beside the edges, %.1f px off them on average in the first frame\n",
+                clutter.size(), o.clutter_mm,
+                static_cast<double>(edgetrack::clutter_image_offset(m, clutter, o.camera, poses.value()[0])));
+  std::printf("synth: truth %s/truth.csv, first pose %s/first.pos, camera %s/camera.xml\n", o.out.c_str(),
+              o.out.c_str(), o.out.c_str());
   return 0;
 }
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -13,6 +12,7 @@
 #include "click_init.h"
 #include "commands.h"
 #include "configuration.h"
+#include "downscaled_tracking.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
@@ -40,6 +40,8 @@ const char* const kSynopsis =
 struct RunTotals {
   int frames = 0;
   int lost = 0;
+  int uncertain = 0;
+  int reasons[edgetrack::kStatusReasonCount] = {};  ///< frames per edgetrack::StatusReason
   double step_ms[edgetrack::kStepCount] = {0, 0, 0, 0};
   double points_matched = 0;
   double points_sampled = 0;
@@ -56,37 +58,24 @@ void print_table1(const RunTotals& totals) {
                 total > 0 ? 100 * totals.step_ms[s] / total : 0.0);
   std::printf("| total | %.3f | 100 %% |\n\n", total / n);
   std::printf("tracking: %.1f frames per second of tracking work, %.1f points tracked of %.1f sampled per frame, "
-              "%d frames lost\n",
-              total > 0 ? 1000 * n / total : 0.0, totals.points_matched / n, totals.points_sampled / n, totals.lost);
+              "%d frames uncertain, %d lost\n",
+              total > 0 ? 1000 * n / total : 0.0, totals.points_matched / n, totals.points_sampled / n,
+              totals.uncertain, totals.lost);
+  for (int r = 1; r < edgetrack::kStatusReasonCount; ++r)
+    if (totals.reasons[r] > 0)
+      std::printf("  %d frames: %s\n", totals.reasons[r], edgetrack::reason_name(static_cast<edgetrack::StatusReason>(r)));
 }
 
-/// Whether a frame's pose can be trusted (docs/APP.md, "lost"): the pose step solved, at least
-/// half of the visible control points were matched and kept, and the matches sit closer to the
-/// solved pose than chance would put them. A site on an image of no relation to the model
-/// (noise, background) takes whichever pixel of its +-range search responds most, so its
-/// distance to the pose is spread over the range and their median is about half of it; on a
-/// tracked frame it stays under a pixel or a small share of the range.
-bool frame_trusted(const edgetrack::FrameResult& result, const std::vector<edgetrack::EdgeMatch>& matches,
-                   const PinholeCamera& camera, const edgetrack::TrackerParams& params) {
-  if (!result.pose.solved || result.points_matched < params.pose.min_points) return false;
-  if (2 * result.points_matched < result.points_sampled) return false;
-  std::vector<double> distances;
-  distances.reserve(matches.size());
-  for (const edgetrack::EdgeMatch& m : matches)
-    distances.push_back(std::fabs(static_cast<double>(
-        dot(m.point.normal, camera.project(result.camera_from_model * m.point.point_in_model) - m.found))));
-  const size_t mid = distances.size() / 2;
-  std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(mid), distances.end());
-  const double chance_share = 0.4, floor_px = 1.0;
-  return distances[mid] <= std::max(chance_share * params.me.getRange(), floor_px);
-}
-
-/// The camera for a frame `factor` times smaller: the same rays land at (u + 0.5) / factor - 0.5.
-PinholeCamera downscaled(const PinholeCamera& camera, int factor) {
-  if (factor <= 1) return camera;
-  const real f(factor), half(0.5);
-  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
-          camera.width / factor, camera.height / factor};
+/// One stderr line for a frame the tracker did not report tracked: its status, the reason and
+/// the measures the rule read.
+void print_status(int frame, const edgetrack::FrameResult& result) {
+  const edgetrack::FrameMeasures& m = result.measures;
+  std::fprintf(stderr, "frame %d %s (%s): %d of %d visible points matched, %d kept; residual scale %.2f px over "
+               "range %u px; correction %.1f px; pose change %.1f mm %.1f deg; %llu saturations\n",
+               frame, edgetrack::status_name(result.status), edgetrack::reason_name(result.reason), m.matched,
+               m.visible, m.kept, static_cast<double>(m.residual_scale), m.range,
+               static_cast<double>(m.correction_px), static_cast<double>(m.translation_change_mm),
+               static_cast<double>(m.rotation_change_deg), static_cast<unsigned long long>(m.saturations));
 }
 
 /// The initial pose from a .init file and the image positions of its points (full-size pixels).
@@ -144,7 +133,7 @@ int track_main(int argc, char** argv) {
   }
   SourceOptions source_options;
   source_options.images = a.text("--images");
-  auto first = a.integer("--first", -1), last = a.integer("--last", -1), device = a.integer("--camera-device", -1);
+  auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);
   auto factor = a.integer("--downscale", 1);
   auto raw = a.size("--raw-size", source_options.raw_width, source_options.raw_height);
   for (const Error* bad : {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error()})
@@ -159,7 +148,8 @@ int track_main(int argc, char** argv) {
   if (!model.ok()) return report("track", model.error());
   auto config = read_configuration(a.text("--camera"), a.text("--config"));
   if (!config.ok()) return report("track", config.error());
-  const edgetrack::TrackerParams params = downscaled_params(config.value().config.params, factor.value());
+  edgetrack::TrackerParams params = config.value().config.params;
+  downscale_settings(params, factor.value());  // in pixels of the input frames
   auto source = open_frame_source(source_options);
   if (!source.ok()) return report("track", source.error());
   Frame frame;
@@ -189,7 +179,6 @@ int track_main(int argc, char** argv) {
   auto tracker = edgetrack::Tracker::create(model.value(), camera, initial.value(), params);
   if (!tracker.ok()) return report("track", {init_source, 0, tracker.error().message});
   tracker.value().set_edge_id_source(edge_id_source.value().get());
-  print_notes(config.value().notes);
 
   // Outputs.
   std::unique_ptr<PoseTableWriter> poses;
@@ -220,7 +209,6 @@ int track_main(int argc, char** argv) {
   const std::string overlay_ext = host_io_available() ? "png" : "ppm";
 
   RunTotals totals;
-  Se3 trusted_pose = initial.value();  // the pose of the last frame not lost
   const bool progress = !a.has("--quiet");
   const bool terminal = isatty(2) != 0;
   const auto start = std::chrono::steady_clock::now();
@@ -239,27 +227,24 @@ int track_main(int argc, char** argv) {
       totals.step_ms[s] += result.step_ns[s] / 1e6;
       ms += result.step_ns[s] / 1e6;
     }
-    const bool lost = !frame_trusted(result, tracker.value().matches(), camera, params);
-    if (lost) {
-      // The next frame starts from the last trusted pose, not from one fitted to noise.
-      if (!tracker.value().reset(trusted_pose))
-        return report("track", {frame.name, 0, "the last trusted pose puts the model behind the camera"});
-    } else {
-      trusted_pose = result.camera_from_model;
-    }
+    const bool lost = result.status == edgetrack::TrackingStatus::kLost;
+    if (progress && result.status != edgetrack::TrackingStatus::kTracked) print_status(frame.index, result);
     ++totals.frames;
     totals.lost += lost ? 1 : 0;
+    totals.uncertain += result.status == edgetrack::TrackingStatus::kUncertain ? 1 : 0;
+    ++totals.reasons[static_cast<int>(result.reason)];
     totals.points_matched += result.points_matched;
     totals.points_sampled += result.points_sampled;
     if (poses) {
-      PoseRow row = pose_row(frame.index, trusted_pose);
+      PoseRow row = pose_row(frame.index, result.camera_from_model);
       row.points = result.points_matched;
       row.ms = ms;
       row.lost = lost;
+      row.uncertain = result.status == edgetrack::TrackingStatus::kUncertain;
       poses->write(row);
     }
     if (overlay) {
-      const RgbImage drawn = overlay->draw(image, model.value(), trusted_pose, cone);
+      const RgbImage drawn = overlay->draw(image, model.value(), result.camera_from_model, cone);
       if (!overlay_dir.empty()) {
         char name[64];
         std::snprintf(name, sizeof name, "/overlay%04d.", frame.index);
@@ -270,8 +255,8 @@ int track_main(int argc, char** argv) {
     }
     if (progress && (terminal || totals.frames % 50 == 0)) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "%sframe %d (%d done, %d lost), %.1f frames/s%s", terminal ? "\r" : "", frame.index,
-                   totals.frames, totals.lost, totals.frames / (seconds > 0 ? seconds : 1), terminal ? "   " : "\n");
+      std::fprintf(stderr, "%sframe %d %s (%d done, %d uncertain, %d lost), %.1f frames/s%s", terminal ? "\r" : "",
+                   frame.index, edgetrack::status_name(result.status), totals.frames, totals.uncertain, totals.lost, totals.frames / (seconds > 0 ? seconds : 1), terminal ? "   " : "\n");
     }
     frame = Frame{};
     auto more = source.value()->next(frame);
@@ -283,6 +268,11 @@ int track_main(int argc, char** argv) {
     auto closed = poses->close();
     if (!closed.ok()) return report("track", closed.error());
   }
+  if (video) {
+    auto closed = video->close();
+    if (!closed.ok()) return report("track", closed.error());
+  }
+  print_notes(config.value().notes);  // after a run that went through: an error stays one line
   print_table1(totals);
   return 0;
 }

@@ -25,6 +25,8 @@ std::vector<Command> tracking_commands();
 /// Commands that need host libraries (OSMesa, OpenCV); empty in the ARM build.
 std::vector<Command> host_commands();
 int edgeid_main(int argc, char** argv);
+/// `compare`, when ViSP's mbt module was found at configure time (else empty).
+std::vector<Command> comparison_commands();
 
 /// Prints "edgetrack <command>: <error>" to stderr and returns the exit status for a failure.
 int report(const std::string& command, const edgetrack::Error& error);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Helpers the subcommands share: error reporting, the data folder, pose and camera checks.
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
 
@@ -14,7 +15,17 @@ int report(const std::string& command, const Error& error) {
   return 1;
 }
 
-std::string data_dir() { return EDGETRACK_DATA_DIR; }
+// An installed edgetrack reads the models installed with it (<prefix>/share/edgetrack beside
+// <prefix>/bin); one run from its build tree reads the source tree's data/.
+std::string data_dir() {
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed = executable.parent_path() / EDGETRACK_INSTALLED_DATA_DIR;
+    if (std::filesystem::is_directory(installed / "models", error)) return installed.lexically_normal().string();
+  }
+  return EDGETRACK_DATA_DIR;
+}
 
 Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
                             const std::string& source) {

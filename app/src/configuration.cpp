@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Reading --camera and --config, and scaling the settings with --downscale.
+/// Reading --camera and --config.
 #include "configuration.h"
 
 #include <algorithm>
@@ -59,17 +59,6 @@ Result<edgetrack::PinholeCamera> read_camera(const std::string& path, int width,
   if (camera.height == 0) camera.height = height;
   if (camera.width <= 0 || camera.height <= 0) return edgetrack::Error{path, 0, "the camera has no image size (give --size)"};
   return camera;
-}
-
-edgetrack::TrackerParams downscaled_params(const edgetrack::TrackerParams& params, int factor) {
-  if (factor <= 1) return params;
-  edgetrack::TrackerParams scaled = params;
-  const real f(factor);
-  scaled.me.setSampleStep(params.me.getSampleStep() / f);
-  scaled.me.setRange(std::max(1u, params.me.getRange() / static_cast<unsigned>(factor)));
-  scaled.faces.min_line_length = params.faces.min_line_length / f;
-  scaled.faces.min_polygon_area = params.faces.min_polygon_area / (f * f);
-  return scaled;
 }
 
 }  // namespace edgetrack_app

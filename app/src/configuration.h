@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The command line's ViSP configuration files: `--camera C.xml` read as ViSP's loadConfigFile
-/// reads it, `--config X.xml` over it, the notes printed once, and the settings for downscaled
-/// frames.
+/// reads it, `--config X.xml` over it, and the notes printed once.
 #pragma once
 
 #include <string>
@@ -29,11 +28,5 @@ void print_notes(const std::vector<std::string>& notes);
 
 /// The camera of one file, its image size from the file or else width x height.
 edgetrack::Result<edgetrack::PinholeCamera> read_camera(const std::string& path, int width, int height);
-
-/// The settings for frames `factor` times smaller: the sample step and the level-of-detail
-/// length are pixels of the input frames and shrink with them (the area by factor^2), the range
-/// rounded down to at least 1 pixel, so the smaller frames get the same control points on the
-/// object and a search that reaches no farther into the scene.
-edgetrack::TrackerParams downscaled_params(const edgetrack::TrackerParams& params, int factor);
 
 }  // namespace edgetrack_app

@@ -45,6 +45,14 @@ Result<Evaluation> evaluate(const std::vector<PoseRow>& poses, const std::vector
     result.lost += e.lost ? 1 : 0;
     result.frames.push_back(e);
   }
+  result.truth_frames = static_cast<int>(truth.size());
+  std::map<int, bool> tracked;
+  for (const PoseRow& row : poses) tracked[row.frame] = true;
+  for (const PoseRow& row : truth)
+    if (!tracked.count(row.frame)) {
+      result.first_missing = row.frame;
+      break;
+    }
   const double n = result.frames.empty() ? 1.0 : static_cast<double>(result.frames.size());
   for (double& m : result.mean_abs_mm) m /= n;
   result.mean_distance_mm /= n;

@@ -29,10 +29,13 @@ struct Evaluation {
   double mean_rotation_deg = 0;
   double mean_ms = 0;
   int lost = 0;
+  int truth_frames = 0;  ///< rows of the ground truth; frames.size() of them were tracked
+  int first_missing = -1;  ///< the first truth frame without a tracked pose, or -1
 };
 
 /// Compares every tracked frame with the truth row of the same frame number; a tracked frame
-/// without truth is an error naming `truth_path`.
+/// without truth is an error naming `truth_path`. Truth frames without a tracked pose are
+/// counted (truth_frames, first_missing), not refused: the caller decides.
 edgetrack::Result<Evaluation> evaluate(const std::vector<PoseRow>& poses, const std::vector<PoseRow>& truth,
                                        const std::string& truth_path);
 

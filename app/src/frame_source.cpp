@@ -3,6 +3,7 @@
 #include "frame_source.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
@@ -24,6 +25,26 @@ bool is_image(const std::string& ext) {
 }
 bool is_video(const std::string& ext) {
   return ext == "mp4" || ext == "avi" || ext == "mkv" || ext == "mov" || ext == "mpg" || ext == "webm";
+}
+
+/// Whether anything is at `path`, or an Error saying why that cannot be known (a name too long,
+/// a directory that may not be entered); never throws.
+Result<bool> path_exists(const std::string& path) {
+  std::error_code error;
+  const bool found = std::filesystem::exists(path, error);
+  if (error && error != std::errc::no_such_file_or_directory && error != std::errc::not_a_directory)
+    return Error{path, 0, error.message()};
+  return found;
+}
+
+/// The number a frame's file name ends with ("image0042.pgm" -> 42), or -1 when its stem does
+/// not end in digits (or in more than 9).
+int number_in_name(const std::string& path) {
+  const std::string stem = std::filesystem::path(path).stem().string();
+  size_t digits = 0;
+  while (digits < stem.size() && std::isdigit(static_cast<unsigned char>(stem[stem.size() - 1 - digits]))) ++digits;
+  if (digits == 0 || digits > 9) return -1;
+  return std::stoi(stem.substr(stem.size() - digits));
 }
 
 /// Where the one integer conversion of a printf pattern is: [begin, end) of "%...d", or begin = npos.
@@ -53,7 +74,9 @@ class PatternSource : public FrameSource {
   Result<bool> next(Frame& frame) override {
     if (last_ >= 0 && next_ > last_) return false;
     const std::string path = expand_pattern(pattern_, next_);
-    if (!std::filesystem::exists(path)) {
+    auto exists = path_exists(path);
+    if (!exists.ok()) return exists.error();
+    if (!exists.value()) {
       if (last_ >= 0) return Error{path, 0, "missing frame (the sequence should run to " + std::to_string(last_) + ")"};
       return false;
     }
@@ -72,26 +95,61 @@ class PatternSource : public FrameSource {
   int raw_width_, raw_height_;
 };
 
+/// The image files of a directory (or one file), each with its frame number.
+struct ListedFrame {
+  std::string path;
+  int number = 0;
+};
+
 class ListSource : public FrameSource {
  public:
-  ListSource(std::vector<std::string> files, int first, int last, int raw_width, int raw_height)
-      : files_(std::move(files)), next_(first < 0 ? 0 : first), last_(last), raw_width_(raw_width), raw_height_(raw_height) {}
+  ListSource(std::vector<ListedFrame> files, int first, int last, int raw_width, int raw_height)
+      : files_(std::move(files)), first_(first), last_(last), raw_width_(raw_width), raw_height_(raw_height) {}
   Result<bool> next(Frame& frame) override {
-    if (next_ >= static_cast<int>(files_.size()) || (last_ >= 0 && next_ > last_)) return false;
-    auto image = read_frame_file(files_[next_], raw_width_, raw_height_);
+    while (next_ < files_.size() && files_[next_].number < first_) ++next_;
+    if (next_ >= files_.size() || (last_ >= 0 && files_[next_].number > last_)) return false;
+    const ListedFrame& file = files_[next_++];
+    auto image = read_frame_file(file.path, raw_width_, raw_height_);
     if (!image.ok()) return image.error();
-    frame.index = next_;
-    frame.name = files_[next_++];
+    frame.index = file.number;
+    frame.name = file.path;
     frame.image = std::move(image).value();
     return true;
   }
 
  private:
-  std::vector<std::string> files_;
-  int next_;
+  std::vector<ListedFrame> files_;
+  size_t next_ = 0;
+  int first_;
   int last_;
   int raw_width_, raw_height_;
 };
+
+/// The image files of `dir` in name order, numbered by the number their names end with when
+/// every name has one and no two share it (image0000.pgm ... as ViSP writes them), else by
+/// their position in that order.
+Result<std::vector<ListedFrame>> list_directory(const std::string& dir) {
+  std::error_code error;
+  std::vector<std::string> paths;
+  std::filesystem::directory_iterator it(dir, error), end;
+  for (; !error && it != end; it.increment(error)) {
+    std::error_code type_error;
+    if (it->is_regular_file(type_error) && !type_error && is_image(extension_of(it->path().string())))
+      paths.push_back(it->path().string());
+  }
+  if (error) return Error{dir, 0, "cannot list the directory: " + error.message()};
+  std::sort(paths.begin(), paths.end());
+  std::vector<ListedFrame> files;
+  bool numbered = true;
+  for (size_t i = 0; i < paths.size(); ++i) {
+    const int number = number_in_name(paths[i]);
+    numbered = numbered && number >= 0 && (files.empty() || number > files.back().number);
+    files.push_back({paths[i], number});
+  }
+  if (!numbered)
+    for (size_t i = 0; i < files.size(); ++i) files[i].number = static_cast<int>(i);
+  return files;
+}
 
 class VideoSource : public FrameSource {
  public:
@@ -156,7 +214,6 @@ std::string expand_pattern(const std::string& pattern, int index) {
 
 Result<RgbImage> read_frame_file(const std::string& path, int raw_width, int raw_height) {
   const std::string ext = extension_of(path);
-  if (!std::filesystem::exists(path)) return Error{path, 0, "no such file"};
   if (is_raw(ext)) return read_raw_rgb565(path, raw_width, raw_height);
   if (is_netpbm(ext)) return read_netpbm(path);
   return read_image_any(path);
@@ -171,27 +228,34 @@ Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOptions& opti
                                                                   options.first, options.last)),
                      "camera " + std::to_string(options.camera_device));
   }
+  if (options.first >= 0 && options.last >= 0 && options.first > options.last)
+    return Error{"", 0, "--first " + std::to_string(options.first) + " is after --last " + std::to_string(options.last) +
+                            ": no frame to track"};
   const std::string& images = options.images;
   if (images.empty()) return Error{"", 0, "no frames given (--images PATTERN|DIR|VIDEO or --camera-device N)"};
   size_t begin = 0, end = 0;
   if (find_conversion(images, begin, end)) {
     int first = options.first;
-    if (first < 0) first = std::filesystem::exists(expand_pattern(images, 0)) ? 0 : 1;
+    if (first < 0) {
+      auto zero = path_exists(expand_pattern(images, 0));
+      if (!zero.ok()) return zero.error();
+      first = zero.value() ? 0 : 1;
+    }
     return non_empty(std::unique_ptr<FrameSource>(
                          new PatternSource(images, first, options.last, options.raw_width, options.raw_height)),
                      images);
   }
+  auto exists = path_exists(images);
+  if (!exists.ok()) return exists.error();
+  if (!exists.value()) return Error{images, 0, "no such file or directory"};
   std::error_code error;
   if (std::filesystem::is_directory(images, error)) {
-    std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(images, error))
-      if (entry.is_regular_file() && is_image(extension_of(entry.path().string()))) files.push_back(entry.path().string());
-    std::sort(files.begin(), files.end());
-    return non_empty(std::unique_ptr<FrameSource>(
-                         new ListSource(std::move(files), options.first, options.last, options.raw_width, options.raw_height)),
+    auto files = list_directory(images);
+    if (!files.ok()) return files.error();
+    return non_empty(std::unique_ptr<FrameSource>(new ListSource(std::move(files).value(), options.first, options.last,
+                                                                 options.raw_width, options.raw_height)),
                      images);
   }
-  if (!std::filesystem::exists(images)) return Error{images, 0, "no such file or directory"};
   if (is_video(extension_of(images))) {
     auto video = open_video_file(images);
     if (!video.ok()) return video.error();
@@ -200,7 +264,7 @@ Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOptions& opti
   }
   // A single image file is a sequence of one frame.
   return non_empty(std::unique_ptr<FrameSource>(
-                       new ListSource({images}, 0, -1, options.raw_width, options.raw_height)),
+                       new ListSource({{images, 0}}, 0, -1, options.raw_width, options.raw_height)),
                    images);
 }
 

@@ -12,7 +12,7 @@
 namespace edgetrack_app {
 
 struct Frame {
-  int index = 0;     ///< frame number: the pattern's number, or the position in the sequence
+  int index = 0;     ///< frame number: the pattern's number, the number ending the file name, or the position
   std::string name;  ///< file name (or "video:N") for messages
   RgbImage image;
 };

@@ -59,6 +59,13 @@ void GlEdgeIdBuffer::render(const edgetrack::EdgeModel& model, const edgetrack::
     vertex(model.vertices[model.edges[i].a]);
     vertex(model.vertices[model.edges[i].b]);
   }
+  edgetrack::curved_contours(model, camera_from_model, curved_);
+  for (const edgetrack::ContourSegment& segment : curved_) {
+    const edgetrack::Rgb888 code = edgetrack::encode_edge_id(segment.primitive);
+    glColor3ub(static_cast<GLubyte>(code.r), static_cast<GLubyte>(code.g), static_cast<GLubyte>(code.b));
+    vertex(segment.a);
+    vertex(segment.b);
+  }
   glEnd();
   glFinish();
 }

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "edgetrack/contours.h"
 #include "edgetrack/edge_id.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
@@ -49,6 +50,7 @@ class GlEdgeIdBuffer {
   edgetrack::PinholeCamera camera_;
   void* context_ = nullptr;
   std::vector<uint16_t> pixels_;
+  std::vector<edgetrack::ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides
 };
 
 /// The tracker's Edge-ID drawn by GL (`track --visibility gl`): each frame the GL image is

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgetrack/contours.h"
+
 using edgetrack::EdgeModel;
 using edgetrack::Error;
 using edgetrack::PinholeCamera;
@@ -68,6 +70,10 @@ void draw_model_faces(const EdgeModel& model) {
     vertex(model.vertices[tri.a]);
     vertex(model.vertices[tri.b]);
     vertex(model.vertices[tri.c]);
+  }
+  for (const edgetrack::SurfaceTriangle& tri : model.cylinder_surface) {
+    normal(tri.normal);
+    for (const Vec3& corner : tri.corners) vertex(corner);
   }
   glEnd();
 }
@@ -185,6 +191,19 @@ RgbImage GlRenderer::render_scene(const EdgeModel& model, const Se3& camera_from
   }
   glColor3f(0.85f, 0.82f, 0.7f);
   draw_model_faces(model);
+  if (extras.clutter) {
+    // Lines as dark as the backdrop's darkest strokes, hidden where the model is in front.
+    glDisable(GL_LIGHTING);
+    glLineWidth(1.5f * supersample_);
+    glColor3f(0.1f, 0.09f, 0.08f);
+    glBegin(GL_LINES);
+    for (const edgetrack::Segment3& line : *extras.clutter) {
+      vertex(line.a);
+      vertex(line.b);
+    }
+    glEnd();
+  }
+  if (extras.band.x_end > extras.band.x_begin) draw_band(extras.band);
   if (extras.occluder) {
     // A bar standing 100 mm in front of the camera, in the camera frame.
     glDisable(GL_LIGHTING);
@@ -205,6 +224,21 @@ RgbImage GlRenderer::render_scene(const EdgeModel& model, const Se3& camera_from
   return image;
 }
 
+void GlRenderer::draw_band(const edgetrack::OccluderBand& band) {
+  // A flat dark board 100 mm in front of the camera whose edges fall on the band's pixel borders.
+  glDisable(GL_LIGHTING);
+  glLoadIdentity();
+  glColor3f(0.2f, 0.18f, 0.16f);
+  const double z = 0.1, px = static_cast<double>(camera_.px), u0 = static_cast<double>(camera_.u0);
+  const double x0 = (band.x_begin - 0.5 - u0) / px * z, x1 = (band.x_end - 0.5 - u0) / px * z;
+  glBegin(GL_QUADS);
+  glVertex3d(x0, -1, z);
+  glVertex3d(x1, -1, z);
+  glVertex3d(x1, 1, z);
+  glVertex3d(x0, 1, z);
+  glEnd();
+}
+
 RgbImage GlRenderer::render_overlay(const RgbImage& frame, const EdgeModel& model, const Se3& camera_from_model,
                                     const Cone& cone) {
   begin_frame(camera_from_model, 0, 0, 0, 0);
@@ -222,6 +256,12 @@ RgbImage GlRenderer::render_overlay(const RgbImage& frame, const EdgeModel& mode
   for (const edgetrack::Edge& edge : model.edges) {
     vertex(model.vertices[edge.a]);
     vertex(model.vertices[edge.b]);
+  }
+  std::vector<edgetrack::ContourSegment> curved;
+  edgetrack::curved_contours(model, camera_from_model, curved);
+  for (const edgetrack::ContourSegment& segment : curved) {
+    vertex(segment.a);
+    vertex(segment.b);
   }
   glEnd();
   const std::vector<uint8_t> rgba = read_rgba();

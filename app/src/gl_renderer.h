@@ -13,6 +13,7 @@
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
+#include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
 #include "image_io.h"
 #include "overlay.h"
@@ -28,6 +29,8 @@ struct SceneExtras {
   bool occluder = false;               ///< a dark bar between camera and model
   double occluder_x = 0;               ///< its centre in the camera frame, metres
   double occluder_width = 0.012;
+  edgetrack::OccluderBand band;        ///< image columns covered in front of everything (none if empty)
+  const std::vector<edgetrack::Segment3>* clutter = nullptr;  ///< dark lines beside the edges, or none
 };
 
 /// With a current GL context: the projection matrix of the pinhole camera (near 10 mm, far
@@ -64,6 +67,7 @@ class GlRenderer {
   GlRenderer(const edgetrack::PinholeCamera& camera, int supersample);
   void begin_frame(const edgetrack::Se3& camera_from_model, float r, float g, float b, float a);
   void draw_cone(const Cone& cone);
+  void draw_band(const edgetrack::OccluderBand& band);
   std::vector<uint8_t> read_rgba() const;
 
   edgetrack::PinholeCamera camera_;

@@ -30,11 +30,15 @@ class VideoInput {
 edgetrack::Result<std::unique_ptr<VideoInput>> open_video_file(const std::string& path);
 edgetrack::Result<std::unique_ptr<VideoInput>> open_camera_device(int device);
 
-/// A video file being written (MPEG-4 part 2 in an .mp4 or .avi container).
+/// A video file being written (MPEG-4 part 2 in an .mp4, .avi, .mkv or .mov container), under
+/// `<stem>.partial.<ext>` until close() renames it: a run that fails leaves no file under the
+/// name of a complete video.
 class VideoOutput {
  public:
   virtual ~VideoOutput() = default;
   virtual bool write(const RgbImage& frame) = 0;
+  /// Finishes the file and gives it its name.
+  virtual edgetrack::Result<bool> close() = 0;
 };
 edgetrack::Result<std::unique_ptr<VideoOutput>> open_video_output(const std::string& path, int width, int height,
                                                                   double fps);

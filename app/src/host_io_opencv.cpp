@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Frame I/O through OpenCV on the host: any image format, video files, cameras, PNG and video output.
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+
+#include <cstdio>
 
 #include "host_io.h"
 
@@ -49,15 +52,32 @@ class CaptureInput : public VideoInput {
 
 class WriterOutput : public VideoOutput {
  public:
-  explicit WriterOutput(cv::VideoWriter writer) : writer_(std::move(writer)) {}
+  WriterOutput(cv::VideoWriter writer, std::string partial, std::string path)
+      : writer_(std::move(writer)), partial_(std::move(partial)), path_(std::move(path)) {}
   bool write(const RgbImage& frame) override {
     writer_.write(to_bgr(frame));
+    return true;
+  }
+  Result<bool> close() override {
+    writer_.release();
+    if (std::rename(partial_.c_str(), path_.c_str()) != 0)
+      return Error{path_, 0, "cannot rename " + partial_ + " to it"};
     return true;
   }
 
  private:
   cv::VideoWriter writer_;
+  std::string partial_, path_;
 };
+
+/// OpenCV reports on stderr what its backends try and fail; our messages say what failed, once.
+void silence_opencv() {
+  static const bool silenced = [] {
+    cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
+    return true;
+  }();
+  (void)silenced;
+}
 
 }  // namespace
 
@@ -88,21 +108,33 @@ Result<bool> write_image(const std::string& path, const RgbImage& image) {
 }
 
 Result<std::unique_ptr<VideoInput>> open_video_file(const std::string& path) {
+  silence_opencv();
   cv::VideoCapture capture(path);
   if (!capture.isOpened()) return Error{path, 0, "unreadable video (OpenCV cannot open it)"};
   return std::unique_ptr<VideoInput>(new CaptureInput(std::move(capture)));
 }
 
 Result<std::unique_ptr<VideoInput>> open_camera_device(int device) {
+  silence_opencv();
   cv::VideoCapture capture(device);
   if (!capture.isOpened()) return Error{"camera " + std::to_string(device), 0, "no such camera, or it cannot be opened"};
   return std::unique_ptr<VideoInput>(new CaptureInput(std::move(capture)));
 }
 
 Result<std::unique_ptr<VideoOutput>> open_video_output(const std::string& path, int width, int height, double fps) {
-  cv::VideoWriter writer(path, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps, cv::Size(width, height));
-  if (!writer.isOpened()) return Error{path, 0, "cannot open the video for writing"};
-  return std::unique_ptr<VideoOutput>(new WriterOutput(std::move(writer)));
+  silence_opencv();
+  const std::string ext = extension_of(path);
+  if (ext != "mp4" && ext != "avi" && ext != "mkv" && ext != "mov")
+    return Error{path, 0, "a video is written as .mp4, .avi, .mkv or .mov, not '." + ext + "'"};
+  const std::string partial = path.substr(0, path.size() - ext.size()) + "partial." + ext;
+  cv::VideoWriter writer;
+  try {
+    writer.open(partial, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps, cv::Size(width, height));
+  } catch (const cv::Exception& e) {
+    return Error{path, 0, std::string("cannot open the video for writing: ") + e.what()};
+  }
+  if (!writer.isOpened()) return Error{path, 0, "cannot open the video for writing (as " + partial + ")"};
+  return std::unique_ptr<VideoOutput>(new WriterOutput(std::move(writer), partial, path));
 }
 
 }  // namespace edgetrack_app

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <iterator>
 
+#include "edgetrack/input_file.h"
+
 using edgetrack::Error;
 using edgetrack::Result;
 
@@ -36,14 +38,17 @@ bool header_number(const std::vector<uint8_t>& bytes, size_t& at, int& value) {
 }
 
 Result<std::vector<uint8_t>> read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, "cannot open the file"};
-  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{path, 0, "read failed"};
-  return bytes;
+  return edgetrack::read_input_file(path, edgetrack::kMaxImageFileBytes);
 }
 
+std::string size_text(long long width, long long height) { return std::to_string(width) + "x" + std::to_string(height); }
+
 }  // namespace
+
+bool usable_image_size(long long width, long long height) {
+  return width > 0 && height > 0 && width <= kMaxImageSide && height <= kMaxImageSide &&
+         width * height <= kMaxImagePixels;
+}
 
 RgbImage make_image(int width, int height) {
   RgbImage image;
@@ -74,30 +79,40 @@ Result<RgbImage> read_netpbm(const std::string& path) {
   int width = 0, height = 0, maxval = 0;
   if (!header_number(bytes, at, width) || !header_number(bytes, at, height) || !header_number(bytes, at, maxval))
     return Error{path, 0, "malformed PGM/PPM header"};
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    return Error{path, 0, "image size " + std::to_string(width) + "x" + std::to_string(height) + " is not usable"};
+  if (!usable_image_size(width, height))
+    return Error{path, 0, "image size " + size_text(width, height) + " is outside 1.." + std::to_string(kMaxImageSide) +
+                              " per side and " + std::to_string(kMaxImagePixels >> 20) + " M pixels"};
   if (maxval <= 0 || maxval > 65535) return Error{path, 0, "maxval " + std::to_string(maxval) + " is out of range"};
   const int channels = colour ? 3 : 1;
-  const size_t samples = static_cast<size_t>(width) * height * channels;
-  std::vector<int> values(samples);
-  if (ascii) {
-    for (size_t i = 0; i < samples; ++i)
-      if (!header_number(bytes, at, values[i])) return Error{path, 0, "the pixel data is truncated or not numbers"};
-  } else {
+  const size_t pixels = static_cast<size_t>(width) * height;
+  const size_t samples = pixels * channels;
+  const size_t bytes_per_sample = maxval > 255 ? 2 : 1;
+  if (!ascii) {
     ++at;  // the single white space after maxval
-    const size_t bytes_per_sample = maxval > 255 ? 2 : 1;
     if (bytes.size() < at + samples * bytes_per_sample)
       return Error{path, 0, "the pixel data is truncated (" + std::to_string(bytes.size() - std::min(at, bytes.size())) +
                                 " bytes, " + std::to_string(samples * bytes_per_sample) + " expected)"};
-    for (size_t i = 0; i < samples; ++i)
-      values[i] = bytes_per_sample == 1 ? bytes[at + i] : (bytes[at + 2 * i] << 8) | bytes[at + 2 * i + 1];
   }
+  // sample -> round(255 * min(sample, maxval) / maxval), one division per level, not per pixel.
+  std::vector<uint8_t> to_8bit(static_cast<size_t>(maxval) + 1);
+  for (int v = 0; v <= maxval; ++v) to_8bit[v] = static_cast<uint8_t>((v * 255 + maxval / 2) / maxval);
   RgbImage image = make_image(width, height);
-  for (size_t p = 0; p < static_cast<size_t>(width) * height; ++p)
-    for (int c = 0; c < 3; ++c) {
-      const int v = values[p * channels + (colour ? c : 0)];
-      image.rgb[p * 3 + c] = static_cast<uint8_t>(std::min(255, (std::min(v, maxval) * 255 + maxval / 2) / maxval));
+  uint8_t* out = image.rgb.data();
+  for (size_t i = 0; i < samples; ++i) {
+    int v = 0;
+    if (ascii) {
+      if (!header_number(bytes, at, v)) return Error{path, 0, "the pixel data is truncated or not numbers"};
+    } else {
+      v = bytes_per_sample == 1 ? bytes[at + i] : (bytes[at + 2 * i] << 8) | bytes[at + 2 * i + 1];
     }
+    const uint8_t level = to_8bit[std::min(v, maxval)];
+    if (colour) {
+      *out++ = level;
+    } else {
+      out[0] = out[1] = out[2] = level;
+      out += 3;
+    }
+  }
   return image;
 }
 
@@ -113,6 +128,7 @@ Result<bool> write_ppm(const std::string& path, const RgbImage& image) {
 
 Result<RgbImage> read_raw_rgb565(const std::string& path, int width, int height) {
   if (width <= 0 || height <= 0) return Error{path, 0, "raw RGB565 frames need --raw-size WIDTHxHEIGHT"};
+  if (!usable_image_size(width, height)) return Error{path, 0, "raw frame size " + size_text(width, height) + " is too large"};
   auto loaded = read_bytes(path);
   if (!loaded.ok()) return loaded.error();
   const std::vector<uint8_t>& bytes = loaded.value();

@@ -23,7 +23,15 @@ struct RgbImage {
 
 RgbImage make_image(int width, int height);
 
-/// Reads binary or ASCII PGM/PPM (P2, P3, P5, P6), maxval 1..65535 (scaled to 8 bits).
+/// The largest frames accepted from files and options: sides up to 16384 pixels and at most
+/// 64 M pixels (8192 x 8192, or 16384 x 4096), 192 MB as RGB.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxImagePixels = 64LL << 20;
+/// True when width x height is a frame size within those bounds.
+bool usable_image_size(long long width, long long height);
+
+/// Reads binary or ASCII PGM/PPM (P2, P3, P5, P6), maxval 1..65535 (scaled to 8 bits with
+/// rounding, through a table: no division per pixel).
 edgetrack::Result<RgbImage> read_netpbm(const std::string& path);
 /// Writes a binary PPM (P6).
 edgetrack::Result<bool> write_ppm(const std::string& path, const RgbImage& image);

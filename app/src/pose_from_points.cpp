@@ -5,9 +5,8 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
+#include "edgetrack/number_text.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_least_squares_function.h"
 
@@ -23,22 +22,15 @@ namespace edgetrack_app {
 namespace {
 
 /// The numbers of a text file with # comments removed.
-Result<std::vector<double>> read_numbers(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path, 0, "cannot open the file"};
+/// The numbers of a points file, each checked against `range`, with their lines.
+Result<std::vector<double>> read_numbers(const std::string& path, const edgetrack::FieldRange& range) {
+  auto words = edgetrack::read_words(path);
+  if (!words.ok()) return words.error();
   std::vector<double> numbers;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    const size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    std::stringstream fields(line);
-    std::string field;
-    while (fields >> field) {
-      char* end = nullptr;
-      const double value = std::strtod(field.c_str(), &end);
-      if (end == field.c_str() || *end != '\0') return Error{path, number, "not a number: '" + field + "'"};
-      numbers.push_back(value);
-    }
+  for (const edgetrack::Word& word : words.value()) {
+    auto value = edgetrack::parse_field(word.text, range, path, word.line);
+    if (!value.ok()) return value.error();
+    numbers.push_back(value.value());
   }
   return numbers;
 }
@@ -99,22 +91,34 @@ class Reprojection : public vnl_least_squares_function {
 }  // namespace
 
 Result<std::vector<Vec3>> read_init_points(const std::string& path) {
-  auto numbers = read_numbers(path);
-  if (!numbers.ok()) return numbers.error();
-  const std::vector<double>& n = numbers.value();
-  if (n.empty()) return Error{path, 0, "empty file (expected the number of points, then X Y Z per point)"};
-  const double count = n[0];
-  if (count < 1 || count != std::floor(count) || n.size() != 1 + 3 * static_cast<size_t>(count))
-    return Error{path, 0, "expected " + std::to_string(static_cast<long>(count)) + " points of 3 numbers after the count, found " +
-                              std::to_string(n.size() - 1) + " numbers"};
-  std::vector<Vec3> points;
-  for (size_t i = 0; i < static_cast<size_t>(count); ++i)
-    points.push_back({real(n[1 + 3 * i]), real(n[2 + 3 * i]), real(n[3 + 3 * i])});
+  auto words = edgetrack::read_words(path);
+  if (!words.ok()) return words.error();
+  const std::vector<edgetrack::Word>& w = words.value();
+  if (w.empty()) return Error{path, 0, "empty file (expected the number of points, then X Y Z per point)"};
+  auto count = edgetrack::parse_whole_field(w[0].text, {"the number of points", 1, kMaxInitPoints}, path, w[0].line);
+  if (!count.ok()) return count.error();
+  const size_t n = static_cast<size_t>(count.value());
+  if (w.size() != 1 + 3 * n)
+    return Error{path, w.back().line, "expected " + std::to_string(n) + " points of 3 numbers after the count, found " +
+                                          std::to_string(w.size() - 1) + " numbers"};
+  static const char* const kAxes[3] = {"X (m)", "Y (m)", "Z (m)"};
+  std::vector<Vec3> points(n);
+  for (size_t i = 0; i < n; ++i) {
+    real xyz[3];
+    for (int k = 0; k < 3; ++k) {
+      const edgetrack::Word& word = w[1 + 3 * i + k];
+      auto value = edgetrack::parse_field(word.text, {kAxes[k], -kMaxPointCoordinate, kMaxPointCoordinate}, path,
+                                          word.line);
+      if (!value.ok()) return value.error();
+      xyz[k] = real(value.value());
+    }
+    points[i] = {xyz[0], xyz[1], xyz[2]};
+  }
   return points;
 }
 
 Result<std::vector<Vec2>> read_image_points(const std::string& path) {
-  auto numbers = read_numbers(path);
+  auto numbers = read_numbers(path, {"a pixel coordinate", -kMaxPixelCoordinate, kMaxPixelCoordinate});
   if (!numbers.ok()) return numbers.error();
   const std::vector<double>& n = numbers.value();
   if (n.empty() || n.size() % 2 != 0)

@@ -14,6 +14,12 @@
 
 namespace edgetrack_app {
 
+/// The bounds of the points files: at most 10000 points, coordinates within a kilometre, pixel
+/// positions within a million pixels.
+constexpr double kMaxInitPoints = 10000;
+constexpr double kMaxPointCoordinate = 1000;
+constexpr double kMaxPixelCoordinate = 1e6;
+
 /// Reads a ViSP .init file: the number of points, then X Y Z per point (metres), # comments.
 edgetrack::Result<std::vector<edgetrack::Vec3>> read_init_points(const std::string& path);
 /// Reads image positions, one "u v" pair (pixels) per line, # comments.

@@ -2,8 +2,11 @@
 /// Reading and writing the poses and ground-truth CSV files.
 #include "pose_table.h"
 
+#include "edgetrack/input_file.h"
+
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 using edgetrack::Error;
@@ -23,17 +26,34 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
+/// A finite number filling the whole cell.
 bool parse_double(const std::string& text, double& value) {
   char* end = nullptr;
   value = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0';
+  return end != text.c_str() && *end == '\0' && std::isfinite(value);
 }
+
+/// A frame number: digits only, 0..10^9.
+bool parse_frame(const std::string& text, int& frame) {
+  if (text.empty() || text.size() > 10) return false;
+  long long value = 0;
+  for (char c : text) {
+    if (c < '0' || c > '9') return false;
+    value = value * 10 + (c - '0');
+  }
+  if (value > 1000000000LL) return false;
+  frame = static_cast<int>(value);
+  return true;
+}
+
+std::string partial_path(const std::string& path) { return path + ".partial"; }
 
 }  // namespace
 
 Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header) {
-  std::ifstream in(path);
-  if (!in) return Error{path, 0, "cannot open the file"};
+  auto text = edgetrack::read_input_text(path);
+  if (!text.ok()) return text.error();
+  std::istringstream in(text.value());
   std::string line;
   if (!std::getline(in, line)) return Error{path, 1, "empty file (expected the header '" + header + "')"};
   if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -48,22 +68,27 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
     if (cells.size() != columns)
       return Error{path, number, std::to_string(cells.size()) + " columns, expected " + std::to_string(columns)};
     PoseRow row;
+    if (!parse_frame(cells[0], row.frame))
+      return Error{path, number, "frame is not a whole number 0..10^9: '" + cells[0] + "'"};
+    if (!rows.empty() && row.frame <= rows.back().frame)
+      return Error{path, number, "frame " + cells[0] + (row.frame == rows.back().frame ? " appears twice" : " comes after frame " + std::to_string(rows.back().frame)) + ": frames must be listed once each, in increasing order"};
     double values[8];
     const size_t numeric = tracking ? 9 : 7;
-    for (size_t i = 0; i < numeric; ++i)
-      if (!parse_double(cells[i], values[i == 8 ? 7 : i]))
-        return Error{path, number, "column " + std::to_string(i + 1) + " is not a number: '" + cells[i] + "'"};
-    row.frame = static_cast<int>(values[0]);
+    for (size_t i = 1; i < numeric; ++i)
+      if (i != 7 && !parse_double(cells[i], values[i == 8 ? 7 : i]))
+        return Error{path, number, "column " + std::to_string(i + 1) + " is not a finite number: '" + cells[i] + "'"};
     for (int i = 0; i < 3; ++i) {
       row.t[i] = values[1 + i];
       row.tu[i] = values[4 + i];
     }
     if (tracking) {
-      row.points = std::atoi(cells[7].c_str());
+      if (!parse_frame(cells[7], row.points))
+        return Error{path, number, "points is not a whole number: '" + cells[7] + "'"};
       row.ms = values[7];
-      if (cells[9] != "ok" && cells[9] != "lost")
-        return Error{path, number, "status is '" + cells[9] + "', expected ok or lost"};
+      if (cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
+        return Error{path, number, "status is '" + cells[9] + "', expected ok, uncertain or lost"};
       row.lost = cells[9] == "lost";
+      row.uncertain = cells[9] == "uncertain";
     }
     rows.push_back(row);
   }
@@ -72,8 +97,8 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
 }
 
 Result<PoseTableWriter> PoseTableWriter::open(const std::string& path, bool with_tracking) {
-  std::FILE* file = std::fopen(path.c_str(), "w");
-  if (!file) return Error{path, 0, "cannot open the file for writing"};
+  std::FILE* file = std::fopen(partial_path(path).c_str(), "w");
+  if (!file) return Error{path, 0, "cannot open the file for writing (as " + partial_path(path) + ")"};
   PoseTableWriter writer(file, path, with_tracking);
   if (std::fprintf(file, "%s\n", with_tracking ? kPosesHeader : kTruthHeader) < 0) writer.failed_ = true;
   return writer;
@@ -92,7 +117,8 @@ void PoseTableWriter::write(const PoseRow& row) {
   if (!file_) return;
   int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
                        row.tu[1], row.tu[2]);
-  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms, row.lost ? "lost" : "ok");
+  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms,
+                                           row.lost ? "lost" : row.uncertain ? "uncertain" : "ok");
   if (n >= 0) n = std::fprintf(file_, "\n");
   if (n < 0) failed_ = true;
 }
@@ -101,7 +127,9 @@ Result<bool> PoseTableWriter::close() {
   if (!file_) return Error{path_, 0, "already closed"};
   const bool ok = std::fclose(file_) == 0 && !failed_;
   file_ = nullptr;
-  if (!ok) return Error{path_, 0, "write failed"};
+  if (!ok) return Error{path_, 0, "write failed (the rows written so far stay in " + partial_path(path_) + ")"};
+  if (std::rename(partial_path(path_).c_str(), path_.c_str()) != 0)
+    return Error{path_, 0, "cannot rename " + partial_path(path_) + " to it"};
   return true;
 }
 

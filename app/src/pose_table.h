@@ -22,14 +22,18 @@ struct PoseRow {
   double tu[3] = {0, 0, 0};  ///< radians
   int points = 0;            ///< poses file only
   double ms = 0;
-  bool lost = false;
+  bool lost = false;       ///< status `lost`
+  bool uncertain = false;  ///< status `uncertain`; neither: `ok` (the tracker's status tracked)
 };
 
 /// Reads a poses or truth file; `header` is the header it must start with (extra columns after
-/// it are not allowed). Errors name the file and the line.
+/// it are not allowed). Frames are whole numbers listed once each in increasing order, and every
+/// value is finite. Errors name the file and the line.
 edgetrack::Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header);
 
-/// Writes rows as they come; poses files carry the tracking columns, truth files do not.
+/// Writes rows as they come, into `<path>.partial`; close() renames it to `path`, so a run that
+/// fails or is killed never leaves a partial file under the name of a complete one. Poses files
+/// carry the tracking columns, truth files do not.
 class PoseTableWriter {
  public:
   static edgetrack::Result<PoseTableWriter> open(const std::string& path, bool with_tracking);

@@ -9,8 +9,10 @@ using namespace edgetrack;
 
 namespace edgetrack_test {
 
-std::string golden_name(Scene scene) {
-  return scene == Scene::kCube ? "cube60_double_positions.txt" : "wood_toy_double_positions.txt";
+std::string golden_name(Scene scene, int subsample) {
+  const std::string speed = subsample > 1 ? "_fast" + std::to_string(subsample) : "";
+  const char* base = scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder";
+  return base + speed + "_double_positions.txt";
 }
 
 bool write_golden(const std::string& path, const SequenceRun& run) {

@@ -11,8 +11,12 @@
 namespace edgetrack_test {
 
 constexpr int kGoldenFrames = 60;
+/// The fast sequences (test_fast_motion.cxx): kFastFrames frames, every kFastSpeedUp-th pose.
+constexpr int kFastFrames = 48;
+constexpr int kFastSpeedUp = 5;
 
-std::string golden_name(Scene scene);
+/// The scene's golden file; `subsample` > 1 names the sped-up sequence's.
+std::string golden_name(Scene scene, int subsample = 1);
 bool write_golden(const std::string& path, const SequenceRun& run);
 /// The positions in the file, or an empty vector when it cannot be read.
 std::vector<edgetrack::Vec3> read_golden(const std::string& path);

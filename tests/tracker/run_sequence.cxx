@@ -24,14 +24,38 @@ bool hidden_by_more_than_a_pixel(const EdgeModel& model, const PinholeCamera& ca
   return true;
 }
 
+/// Replaces the frame's pixels with uniform noise or one flat grey.
+void fill(FrameContent content, uint32_t seed, Rgb565Frame& frame) {
+  uint32_t state = seed * 2654435761u + 1;
+  for (uint16_t& pixel : frame.pixels) {
+    unsigned grey = 128;
+    if (content == FrameContent::kNoise) {
+      state ^= state << 13;  // xorshift32
+      state ^= state >> 17;
+      state ^= state << 5;
+      grey = state >> 24;
+    }
+    pixel = static_cast<uint16_t>(((grey >> 3) << 11) | ((grey >> 2) << 5) | (grey >> 3));
+  }
+}
+
 }  // namespace
 
-SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const TrackerParams& params) {
+int count_status(const SequenceRun& run, TrackingStatus status) {
+  int n = 0;
+  for (const FrameResult& f : run.frames) n += f.status == status;
+  return n;
+}
+
+SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const TrackerParams& params,
+                         const SequenceSpec& spec) {
   SequenceRun run;
   const Result<EdgeModel> model = load_model(model_path(scene));
   if (!model.ok()) return run;
   const PinholeCamera camera = qvga_camera();
-  run.truth = true_poses(scene, frames);
+  run.truth = spec.poses.empty() ? true_poses(scene, frames, spec.subsample) : spec.poses;
+  if (static_cast<int>(run.truth.size()) != frames) return run;
+  const EdgeModel nothing;
   Result<Tracker> tracker = Tracker::create(model.value(), camera, run.truth[0], params);
   if (!tracker.ok()) return run;
   run.loaded = true;
@@ -40,7 +64,10 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
   const real margin = real(0.02);
   double error_sum = 0, points_sum = 0;
   for (int k = 0; k < frames; ++k) {
-    renderer.render(model.value(), run.truth[k], static_cast<uint32_t>(1000 + k), frame);
+    const FrameContent content = k < static_cast<int>(spec.content.size()) ? spec.content[k] : FrameContent::kScene;
+    renderer.render(content == FrameContent::kNoObject ? nothing : model.value(), run.truth[k],
+                    static_cast<uint32_t>(1000 + k), frame);
+    if (content == FrameContent::kNoise || content == FrameContent::kFlat) fill(content, static_cast<uint32_t>(k), frame);
     const Se3 sampling_pose = tracker.value().camera_from_model();
     const FrameResult result = tracker.value().track(frame.pixels.data());
     run.frames.push_back(result);
@@ -52,6 +79,9 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
     error_sum += error_mm;
     points_sum += result.points_sampled;
     run.outliers += result.pose.outliers;
+    std::vector<int> matched(static_cast<size_t>(primitive_count(model.value())), 0);
+    for (const EdgeMatch& m : tracker.value().matches()) matched[static_cast<size_t>(m.point.edge)] += !m.outlier;
+    run.matched_per_primitive.push_back(matched);
     if (visibility_check) {
       for (const ControlPoint& p : tracker.value().control_points())
         run.hidden_points_sampled +=

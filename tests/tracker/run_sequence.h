@@ -10,6 +10,23 @@
 
 namespace edgetrack_test {
 
+/// What a frame of a sequence shows instead of the scene, for the status tests.
+enum class FrameContent {
+  kScene,     ///< the model over the textured background
+  kNoise,     ///< uniform noise over the whole frame
+  kFlat,      ///< one flat grey
+  kNoObject   ///< the background alone, as if the object were fully covered by the same texture
+};
+
+/// A sequence: the scene's trajectory sped up `subsample` times (true_poses), and per frame
+/// what it shows (empty: the scene in every frame). `poses`, when not empty, replaces the
+/// trajectory (one pose per frame).
+struct SequenceSpec {
+  int subsample = 1;
+  std::vector<FrameContent> content;
+  std::vector<edgetrack::Se3> poses;
+};
+
 struct SequenceRun {
   bool loaded = false;
   std::vector<edgetrack::Se3> truth;
@@ -23,10 +40,16 @@ struct SequenceRun {
   int hidden_points_sampled = 0;
   int hidden_points_dropped = 0;  ///< candidates hidden in the same sense (every 4th frame), all dropped
   int outliers = 0;               ///< matches the pose step left out
+  /// Per frame, per primitive (EdgeModel numbering): the matches the pose step kept.
+  std::vector<std::vector<int>> matched_per_primitive;
 };
 
 /// Tracks `frames` frames of the scene; `visibility_check` adds the ray-casting checks.
 SequenceRun run_sequence(Scene scene, int frames, bool visibility_check,
-                         const edgetrack::TrackerParams& params = edgetrack::TrackerParams{});
+                         const edgetrack::TrackerParams& params = edgetrack::TrackerParams{},
+                         const SequenceSpec& spec = SequenceSpec{});
+
+/// Frames of the run with the given status.
+int count_status(const SequenceRun& run, edgetrack::TrackingStatus status);
 
 }  // namespace edgetrack_test

@@ -13,11 +13,18 @@ namespace edgetrack_test {
 PinholeCamera qvga_camera() { return {real(220), real(220), real(160), real(120), 320, 240}; }
 
 std::string model_path(Scene scene) {
-  return std::string(EDGETRACK_DATA_DIR) + (scene == Scene::kCube ? "/models/cube60.cao" : "/models/wood_toy.cao");
+  const char* name = scene == Scene::kCube ? "/models/cube60.cao"
+                     : scene == Scene::kWoodToy ? "/models/wood_toy.cao"
+                                                : "/models/cube60_cylinder.cao";
+  return std::string(EDGETRACK_DATA_DIR) + name;
 }
 
-std::vector<Se3> true_poses(Scene scene, int frames) {
-  return scene == Scene::kCube ? cube_trajectory(frames) : wood_toy_trajectory(frames);
+std::vector<Se3> true_poses(Scene scene, int frames, int subsample) {
+  const std::vector<Se3> path =
+      scene == Scene::kWoodToy ? wood_toy_trajectory(frames * subsample) : cube_trajectory(frames * subsample);
+  std::vector<Se3> poses;
+  for (int k = 0; k < frames; ++k) poses.push_back(path[static_cast<size_t>(k * subsample)]);
+  return poses;
 }
 
 bool bit_identical(const Se3& a, const Se3& b) {

@@ -18,10 +18,13 @@ namespace edgetrack_test {
 /// The QVGA camera of the sequences: px = py = 220, u0 = 160, v0 = 120 (the .cxx says why).
 edgetrack::PinholeCamera qvga_camera();
 
-enum class Scene { kCube, kWoodToy };
+/// kCubeCylinder: the cube with a cylinder beside it and a circle closing the cylinder's end
+/// (data/models/cube60_cylinder.cao), on the cube's trajectory.
+enum class Scene { kCube, kWoodToy, kCubeCylinder };
 
-/// The true camera_from_model of each frame.
-std::vector<edgetrack::Se3> true_poses(Scene scene, int frames);
+/// The true camera_from_model of each frame; with `subsample` k, every k-th pose of the
+/// k * frames long trajectory: the same path k times faster.
+std::vector<edgetrack::Se3> true_poses(Scene scene, int frames, int subsample = 1);
 
 /// The model file of the scene, under data/models.
 std::string model_path(Scene scene);

@@ -9,7 +9,12 @@ DECLARE(test_edge_id);
 DECLARE(test_edge_id_buffer);
 DECLARE(test_control_points);
 DECLARE(test_scene_renderer);
+DECLARE(test_scene_extras);
 DECLARE(test_pose_solver);
+DECLARE(test_status_rule);
+DECLARE(test_motion_model);
+DECLARE(test_cao_format);
+DECLARE(test_contours);
 DECLARE(test_face_visibility);
 
 void register_tests() {
@@ -20,7 +25,12 @@ void register_tests() {
   REGISTER(test_edge_id_buffer);
   REGISTER(test_control_points);
   REGISTER(test_scene_renderer);
+  REGISTER(test_scene_extras);
   REGISTER(test_pose_solver);
+  REGISTER(test_status_rule);
+  REGISTER(test_motion_model);
+  REGISTER(test_cao_format);
+  REGISTER(test_contours);
   REGISTER(test_face_visibility);
 }
 

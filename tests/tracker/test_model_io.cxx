@@ -48,7 +48,7 @@ static void test_model_io() {
     for (const Edge& e : cube.value().edges) every_edge_has_two_faces &= e.faces[0] >= 0 && e.faces[1] >= 0;
     TEST("every cube edge borders two faces", every_edge_has_two_faces, true);
     TEST_NEAR("face normals point outwards (face x+ has normal +x)", cube.value().faces[5].normal.x, 1.0, 1e-3);
-    TEST_EQUAL("face names come from name=", cube.value().faces[5].name, std::string("x+"));
+    TEST_EQUAL("face names come from name=", cube.value().faces[5].attributes.name, std::string("x+"));
   }
 
   const Result<EdgeModel> cube_obj = load_model(data + "/models/cube60.obj");
@@ -84,20 +84,6 @@ static void test_model_io() {
        roof_30.ok() && count_edges_between(roof_30.value(), 2, 3) == 0, true);
   TEST("a 10 degree ridge is tracked with a 5 degree crease angle",
        roof_5.ok() && count_edges_between(roof_5.value(), 2, 3) == 1, true);
-
-  const Result<EdgeModel> cylinder = load_model(visp + "/mbt/cube_and_cylinder.cao");
-  TEST("a .cao with a cylinder is refused", cylinder.ok(), false);
-  if (!cylinder.ok()) {
-    TEST("the refusal says cylinders are not supported", contains(cylinder.error().message, "cylinders"), true);
-    TEST_EQUAL("the refusal names the line of the cylinder count", cylinder.error().line, 27);
-    TEST("the message names the file", contains(cylinder.error().text(), "cube_and_cylinder.cao:27:"), true);
-  }
-  const std::string circle = write_file("circle.cao",
-                                        "V1\n3\n0 0 0\n1 0 0\n0 1 0\n0\n0\n1\n3 0 1 2\n0\n1\n0.5 0 1 2\n");
-  const Result<EdgeModel> circle_model = load_model(circle);
-  TEST("a .cao with a circle is refused, naming its line",
-       !circle_model.ok() && contains(circle_model.error().message, "circles") && circle_model.error().line == 11,
-       true);
 
   const std::string bad_point = write_file("bad_point.cao", "V1\n# points\n3\n0 0 0\n1 0 zero\n0 1 0\n");
   const Result<EdgeModel> bad = load_model(bad_point);

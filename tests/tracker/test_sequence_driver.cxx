@@ -4,16 +4,28 @@
 
 DECLARE(test_tracking_cube);
 DECLARE(test_tracking_wood_toy);
+DECLARE(test_tracking_cube_cylinder);
 DECLARE(test_tracker_grey);
 DECLARE(test_tracker_reset);
+DECLARE(test_fast_motion_cube);
+DECLARE(test_fast_motion_wood_toy);
+DECLARE(test_status_noise_and_flat);
+DECLARE(test_status_covered);
+DECLARE(test_status_leaving_view);
 DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
   REGISTER(test_tracking_wood_toy);
+  REGISTER(test_tracking_cube_cylinder);
   REGISTER(test_tracker_grey);
   REGISTER(test_tracker_reset);
+  REGISTER(test_fast_motion_cube);
+  REGISTER(test_fast_motion_wood_toy);
+  REGISTER(test_status_noise_and_flat);
+  REGISTER(test_status_covered);
+  REGISTER(test_status_leaving_view);
   REGISTER(test_visp_config);
   REGISTER(test_tracker_faces);
 }

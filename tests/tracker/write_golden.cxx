@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Writes the golden files of the tracking tests: the camera position (metres, model frame) the
-/// tracker finds in each frame of the two synthetic sequences. Run from a double build:
+/// tracker finds in each frame of the synthetic sequences and of the sped-up cube and wood toy. Run from a double build:
 ///   tracker_write_golden tests/tracker/golden
 /// The other builds compare their own run with these files (test_tracking.cxx).
 #include <cstdio>
@@ -14,16 +14,22 @@ int main(int argc, char* argv[]) {
     std::fprintf(stderr, "usage: %s <directory>\n", argv[0]);
     return 2;
   }
-  using edgetrack_test::Scene;
-  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {
-    const edgetrack_test::SequenceRun run = edgetrack_test::run_sequence(scene, edgetrack_test::kGoldenFrames, false);
-    const std::string path = std::string(argv[1]) + "/" + edgetrack_test::golden_name(scene);
-    if (!run.loaded || !edgetrack_test::write_golden(path, run)) {
-      std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
-      return 1;
+  using namespace edgetrack_test;
+  for (int subsample : {1, kFastSpeedUp}) {
+    for (Scene scene : {Scene::kCube, Scene::kWoodToy, Scene::kCubeCylinder}) {
+      if (subsample > 1 && scene == Scene::kCubeCylinder) continue;  // no fast golden run of it
+      SequenceSpec spec;
+      spec.subsample = subsample;
+      const SequenceRun run =
+          run_sequence(scene, subsample > 1 ? kFastFrames : kGoldenFrames, false, edgetrack::TrackerParams{}, spec);
+      const std::string path = std::string(argv[1]) + "/" + golden_name(scene, subsample);
+      if (!run.loaded || !write_golden(path, run)) {
+        std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
+        return 1;
+      }
+      std::printf("%s: %zu frames, mean position error %.3f mm\n", path.c_str(), run.frames.size(),
+                  run.mean_position_error_mm);
     }
-    std::printf("%s: %zu frames, mean position error %.3f mm\n", path.c_str(), run.frames.size(),
-                run.mean_position_error_mm);
   }
   return 0;
 }

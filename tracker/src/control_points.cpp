@@ -4,54 +4,127 @@
 
 #include <cmath>
 
+#include "edgetrack/contours.h"
+
 namespace edgetrack {
+namespace {
+
+ControlPoint make_point(int primitive, const Vec3& point_in_model, const Vec2& pixel, const Vec2& direction) {
+  ControlPoint point;
+  point.edge = primitive;
+  point.point_in_model = point_in_model;
+  point.pixel = pixel;
+  point.direction = direction;
+  point.normal = Vec2{-direction.y, direction.x};
+  return point;
+}
+
+/// The image window control points must fall in.
+struct Window {
+  real lo_x, hi_x, lo_y, hi_y;
+  bool contains(const Vec2& p) const { return p.x >= lo_x && p.x <= hi_x && p.y >= lo_y && p.y <= hi_y; }
+};
+
+/// Equation (1) on the part in view of the 3D segment a-b (model frame) of primitive `primitive`.
+void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
+                    const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
+  using std::floor;
+  Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
+  real t0, t1;
+  if (!clip_to_view(ca, cb, camera, params.clipping, t0, t1)) return;
+  if (t0 > real(0) || t1 < real(1)) {  // keep the part in view
+    const Vec3 a0 = a, ca0 = ca;
+    if (t0 > real(0)) {
+      a = a0 + t0 * (b - a0);
+      ca = ca0 + t0 * (cb - ca0);
+    }
+    if (t1 < real(1)) {
+      b = a0 + t1 * (b - a0);
+      cb = ca0 + t1 * (cb - ca0);
+    }
+  }
+  const Vec2 pa = camera.project(ca), pb = camera.project(cb);
+  const Vec2 d = pb - pa;
+  const real length = norm(d);
+  const int n = static_cast<int>(floor(length / params.step));  // equation (1)
+  if (n <= 0) return;
+  const Vec2 direction{d.x / length, d.y / length};
+  const real wa = real(1) / ca.z, wb = real(1) / cb.z;
+  const real half_part = real(1) / (2 * n);
+  for (int k = 0; k < n; ++k) {
+    const real t = (2 * k + 1) * half_part;  // the centre of part k of n
+    const Vec2 pixel = pa + t * d;
+    if (!window.contains(pixel)) continue;
+    // t runs evenly in the image; 1/Z is affine in t, and the 3D parameter follows from it.
+    const real s = t * wb / ((real(1) - t) * wa + t * wb);
+    points.push_back(make_point(primitive, a + s * (b - a), pixel, direction));
+  }
+}
+
+/// Control points every `step` pixels of the circle's projected rim polygon, each moved out to
+/// the true circle, with the direction of the projected ellipse's tangent there.
+void sample_circle(const Circle& circle, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
+                   const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
+  using std::floor;
+  Vec2 rim[kCircleSides + 1];
+  real length(0);
+  for (int s = 0; s <= kCircleSides; ++s) {
+    const Vec3 p = camera_from_model * circle.rim[s];
+    if (p.z < params.clipping.near_distance) return;  // a circle crossing the near plane is not tracked
+    rim[s] = camera.project(p);
+    if (s > 0) length = length + norm(rim[s] - rim[s - 1]);
+  }
+  const int n = static_cast<int>(floor(length / params.step));
+  if (n <= 0) return;
+  const Vec3 normal_in_camera = camera_from_model.rotation() * circle.normal;
+  const real spacing = length / real(n);
+  real target = spacing / real(2), walked(0);
+  int side = 0;
+  real side_length = norm(rim[1] - rim[0]);
+  for (int k = 0; k < n; ++k, target = target + spacing) {
+    while (side + 1 < kCircleSides && walked + side_length < target) {
+      walked = walked + side_length;
+      ++side;
+      side_length = norm(rim[side + 1] - rim[side]);
+    }
+    const real f = side_length > real(0) ? (target - walked) / side_length : real(0);
+    const Vec3 chord = circle.rim[side] + f * (circle.rim[side + 1] - circle.rim[side]);
+    // Divided by the radius first, so that the unit vector keeps every `real`'s resolution.
+    const Vec3 point = circle.centre + circle.radius * normalized((real(1) / circle.radius) * (chord - circle.centre));
+    const Vec3 p = camera_from_model * point;
+    const Vec2 pixel = camera.project(p);
+    if (!window.contains(pixel)) continue;
+    // The image tangent: the projection's derivative applied to the 3D tangent n x (p - c).
+    const Vec3 tangent = cross(normal_in_camera, camera_from_model.rotation() * (point - circle.centre));
+    const Vec2 along{camera.px * (tangent.x * p.z - p.x * tangent.z), camera.py * (tangent.y * p.z - p.y * tangent.z)};
+    const real along_length = norm(along);
+    if (!(along_length > real(0))) continue;
+    const Vec2 direction{along.x / along_length, along.y / along_length};
+    points.push_back(make_point(primitive, point, pixel, direction));
+  }
+}
+
+}  // namespace
 
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params) {
-  using std::floor;
   std::vector<ControlPoint> points;
-  const real lo_x = real(params.border), hi_x = real(camera.width - 1 - params.border);
-  const real lo_y = real(params.border), hi_y = real(camera.height - 1 - params.border);
-  for (size_t e = 0; e < model.edges.size(); ++e) {
-    Vec3 a = model.vertices[model.edges[e].a], b = model.vertices[model.edges[e].b];
-    Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
-    real t0, t1;
-    if (!clip_to_view(ca, cb, camera, params.clipping, t0, t1)) continue;
-    if (t0 > real(0) || t1 < real(1)) {  // keep the part in view
-      const Vec3 a0 = a, ca0 = ca;
-      if (t0 > real(0)) {
-        a = a0 + t0 * (b - a0);
-        ca = ca0 + t0 * (cb - ca0);
-      }
-      if (t1 < real(1)) {
-        b = a0 + t1 * (b - a0);
-        cb = ca0 + t1 * (cb - ca0);
-      }
-    }
-    const Vec2 pa = camera.project(ca), pb = camera.project(cb);
-    const Vec2 d = pb - pa;
-    const real length = norm(d);
-    const int n = static_cast<int>(floor(length / params.step));  // equation (1)
-    if (n <= 0) continue;
-    const Vec2 direction{d.x / length, d.y / length};
-    const Vec2 normal{-direction.y, direction.x};
-    const real wa = real(1) / ca.z, wb = real(1) / cb.z;
-    const real half_part = real(1) / (2 * n);
-    for (int k = 0; k < n; ++k) {
-      const real t = (2 * k + 1) * half_part;  // the centre of part k of n
-      const Vec2 pixel = pa + t * d;
-      if (pixel.x < lo_x || pixel.x > hi_x || pixel.y < lo_y || pixel.y > hi_y) continue;
-      // t runs evenly in the image; 1/Z is affine in t, and the 3D parameter follows from it.
-      const real s = t * wb / ((real(1) - t) * wa + t * wb);
-      ControlPoint point;
-      point.edge = static_cast<int>(e);
-      point.point_in_model = a + s * (b - a);
-      point.pixel = pixel;
-      point.direction = direction;
-      point.normal = normal;
-      points.push_back(point);
-    }
+  const Window window{real(params.border), real(camera.width - 1 - params.border), real(params.border),
+                      real(camera.height - 1 - params.border)};
+  for (size_t e = 0; e < model.edges.size(); ++e)
+    sample_segment(model.vertices[model.edges[e].a], model.vertices[model.edges[e].b], static_cast<int>(e), camera,
+                   camera_from_model, params, window, points);
+  const Vec3 centre = camera_centre_in_model(camera_from_model);
+  for (size_t c = 0; c < model.cylinders.size(); ++c) {
+    Vec3 lines[2][2];
+    if (!cylinder_generators(model.cylinders[c], centre, lines)) continue;
+    for (int k = 0; k < 2; ++k)
+      sample_segment(lines[k][0], lines[k][1], cylinder_primitive(model, static_cast<int>(c), k), camera,
+                     camera_from_model, params, window, points);
   }
+  for (size_t k = 0; k < model.circles.size(); ++k)
+    sample_circle(model.circles[k], circle_primitive(model, static_cast<int>(k)), camera, camera_from_model,
+                  params, window, points);
   return points;
 }
 

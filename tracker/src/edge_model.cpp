@@ -97,12 +97,127 @@ bool triangulate(const std::vector<Vec3>& corners, const Vec3& normal, std::vect
   return true;
 }
 
+/// A point at angle `angle` on the circle of `radius` around `centre` spanned by unit u and v.
+Vec3 on_circle(const Vec3& centre, const Vec3& u, const Vec3& v, const real& radius, const real& angle) {
+  using std::cos;
+  using std::sin;
+  return centre + (radius * cos(angle)) * u + (radius * sin(angle)) * v;
+}
+
+/// A unit vector perpendicular to the unit vector n.
+Vec3 perpendicular(const Vec3& n) {
+  using std::fabs;
+  const Vec3 helper = fabs(n.x) < real(0.9) ? Vec3{real(1), real(0), real(0)} : Vec3{real(0), real(1), real(0)};
+  return normalized(cross(helper, n));
+}
+
+/// Checks the cylinders, tessellates their sides (inscribed, kCylinderSides facets) and adds them.
+Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, EdgeModel& model) {
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  const real pi = real(3.14159265358979323846);
+  for (size_t c = 0; c < polygons.cylinders.size(); ++c) {
+    const CylinderRecord& record = polygons.cylinders[c];
+    const std::string label = "cylinder " + std::to_string(c);
+    if (record.axis_a < 0 || record.axis_a >= vertex_count || record.axis_b < 0 || record.axis_b >= vertex_count)
+      return Error{source, 0, label + " uses a point index outside 0.." + std::to_string(vertex_count - 1)};
+    Cylinder cylinder;
+    cylinder.axis_a = model.vertices[record.axis_a];
+    cylinder.axis_b = model.vertices[record.axis_b];
+    cylinder.radius = record.radius;
+    cylinder.attributes = record.attributes;
+    if (!(record.radius > real(0))) return Error{source, 0, label + " has no positive radius"};
+    const Vec3 axis = cylinder.axis_b - cylinder.axis_a;
+    if (norm(axis) == real(0)) return Error{source, 0, label + " has its two axis points at the same place"};
+    const Vec3 d = normalized(axis);
+    const Vec3 u = perpendicular(d), v = cross(d, u);
+    for (int k = 0; k < kCylinderSides; ++k) {
+      const real a0 = real(2 * k) * pi / real(kCylinderSides), a1 = real(2 * (k + 1)) * pi / real(kCylinderSides);
+      const Vec3 b0 = on_circle(cylinder.axis_a, u, v, record.radius, a0);
+      const Vec3 b1 = on_circle(cylinder.axis_a, u, v, record.radius, a1);
+      const Vec3 t0 = b0 + axis, t1 = b1 + axis;
+      const Vec3 outward = normalized(on_circle(Vec3{}, u, v, real(1), (a0 + a1) / real(2)));
+      const int index = static_cast<int>(c);
+      model.cylinder_surface.push_back({{b0, b1, t1}, outward, index});
+      model.cylinder_surface.push_back({{b0, t1, t0}, outward, index});
+    }
+    model.cylinders.push_back(cylinder);
+  }
+  return true;
+}
+
+/// Checks the circles, finds their planes and rims, and the cylinders they close.
+Result<bool> add_circles(const Polygons& polygons, const std::string& source, EdgeModel& model) {
+  using std::fabs;
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  const real pi = real(3.14159265358979323846);
+  for (size_t k = 0; k < polygons.circles.size(); ++k) {
+    const CircleRecord& record = polygons.circles[k];
+    const std::string label = "circle " + std::to_string(k);
+    for (int index : {record.centre, record.plane_a, record.plane_b})
+      if (index < 0 || index >= vertex_count)
+        return Error{source, 0, label + " uses a point index outside 0.." + std::to_string(vertex_count - 1)};
+    if (!(record.radius > real(0))) return Error{source, 0, label + " has no positive radius"};
+    Circle circle;
+    circle.centre = model.vertices[record.centre];
+    circle.radius = record.radius;
+    circle.attributes = record.attributes;
+    const Vec3 to_a = model.vertices[record.plane_a] - circle.centre;
+    const Vec3 to_b = model.vertices[record.plane_b] - circle.centre;
+    const Vec3 n = cross(normalized(to_a), normalized(to_b));
+    if (norm(n) < real(1e-3)) return Error{source, 0, label + ": its centre and two plane points are on one line"};
+    circle.normal = normalized(n);
+    const Vec3 u = normalized(to_a), v = cross(circle.normal, u);
+    for (int s = 0; s <= kCircleSides; ++s)
+      circle.rim.push_back(on_circle(circle.centre, u, v, record.radius, real(2 * (s % kCircleSides)) * pi / real(kCircleSides)));
+    // A circle closing a cylinder's end: the cylinder's own side never hides it (Edge-ID).
+    const real tolerance = real(1e-3) * record.radius;
+    for (size_t c = 0; c < model.cylinders.size() && circle.cap_of < 0; ++c) {
+      const Cylinder& cylinder = model.cylinders[c];
+      const Vec3 d = normalized(cylinder.axis_b - cylinder.axis_a);
+      const bool at_end = norm(circle.centre - cylinder.axis_a) < tolerance || norm(circle.centre - cylinder.axis_b) < tolerance;
+      if (at_end && fabs(cylinder.radius - record.radius) < tolerance && fabs(dot(d, circle.normal)) > real(0.999))
+        circle.cap_of = static_cast<int>(c);
+    }
+    model.circles.push_back(circle);
+  }
+  return true;
+}
+
 struct EdgeUse {
   int faces[2] = {-1, -1};
   bool same_direction = false;  ///< both faces run the edge the same way (inconsistent winding)
   int count = 0;
   int first_a = 0;
 };
+
+/// Adds the free-standing lines as tracked edges; a line that is already a face boundary gives
+/// that edge its parameters instead. `uses` holds the face boundaries by sorted end points.
+Result<bool> add_free_lines(const Polygons& polygons, const std::string& source,
+                            std::map<std::pair<int, int>, EdgeUse>& uses, EdgeModel& model) {
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+  for (size_t l = 0; l < polygons.lines.size(); ++l) {
+    const std::pair<int, int>& line = polygons.lines[l];
+    if (line.first < 0 || line.first >= vertex_count || line.second < 0 || line.second >= vertex_count)
+      return fail("a line uses a vertex out of range");
+    if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
+    const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
+                                  line.first < line.second ? line.second : line.first);
+    if (uses.count(key)) {  // already a face boundary: the line's own parameters go to that edge
+      for (Edge& edge : model.edges)
+        if (edge.a == key.first && edge.b == key.second && l < polygons.line_attributes.size())
+          edge.attributes = polygons.line_attributes[l];
+      continue;
+    }
+    uses[key].count = 0;
+    Edge edge;
+    edge.a = key.first;
+    edge.b = key.second;
+    if (l < polygons.line_attributes.size()) edge.attributes = polygons.line_attributes[l];
+    model.edges.push_back(edge);
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -131,7 +246,7 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     Face out;
     out.vertices = face;
     out.normal = normalized(area_normal);
-    if (f < polygons.face_names.size()) out.name = polygons.face_names[f];
+    if (f < polygons.face_attributes.size()) out.attributes = polygons.face_attributes[f];
     std::vector<std::array<int, 3>> pieces;
     if (!triangulate(corners, area_normal, pieces)) return fail(label + " is not a simple polygon");
     for (const auto& p : pieces)
@@ -182,23 +297,16 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     edge.faces[1] = use.count >= 2 ? use.faces[1] : -1;
     model.edges.push_back(edge);
   }
-  for (const auto& line : polygons.lines) {
-    if (line.first < 0 || line.first >= vertex_count || line.second < 0 || line.second >= vertex_count)
-      return fail("a line uses a vertex out of range");
-    if (line.first == line.second) return fail("a line joins vertex " + std::to_string(line.first) + " to itself");
-    const std::pair<int, int> key(line.first < line.second ? line.first : line.second,
-                                  line.first < line.second ? line.second : line.first);
-    if (uses.count(key)) continue;  // already a face boundary, handled above
-    uses[key].count = 0;
-    Edge edge;
-    edge.a = key.first;
-    edge.b = key.second;
-    model.edges.push_back(edge);
-  }
-  if (model.edges.empty()) return fail("the model has no edge to track");
-  if (static_cast<int>(model.edges.size()) > kMaxEdges)
-    return fail("the model has " + std::to_string(model.edges.size()) + " contour edges; Edge-ID codes at most " +
-                std::to_string(kMaxEdges));
+  const Result<bool> lines = add_free_lines(polygons, source, uses, model);
+  if (!lines.ok()) return lines.error();
+  const Result<bool> cylinders = add_cylinders(polygons, source, model);
+  if (!cylinders.ok()) return cylinders.error();
+  const Result<bool> circles = add_circles(polygons, source, model);
+  if (!circles.ok()) return circles.error();
+  if (primitive_count(model) == 0) return fail("the model has no edge, cylinder or circle to track");
+  if (primitive_count(model) > kMaxEdges)
+    return fail("the model has " + std::to_string(primitive_count(model)) +
+                " tracked primitives (edges, 2 per cylinder, circles); Edge-ID codes at most " + std::to_string(kMaxEdges));
   return model;
 }
 

@@ -3,19 +3,31 @@
 #include "edgetrack/pose_io.h"
 
 #include <cstdio>
-#include <fstream>
+
+#include "edgetrack/number_text.h"
 
 namespace edgetrack {
 
 Result<Se3> read_pos(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path, 0, "cannot open the file"};
+  auto words = read_words(path);
+  if (!words.ok()) return words.error();
+  const std::vector<Word>& w = words.value();
+  if (w.size() < 6)
+    return Error{path, w.empty() ? 0 : w.back().line,
+                 "expected 6 numbers (tx ty tz tux tuy tuz), found " + std::to_string(w.size())};
+  if (w.size() > 6) return Error{path, w[6].line, "more than 6 values: '" + w[6].text + "'"};
+  static const FieldRange kFields[6] = {{"tx (m)", -kMaxPosTranslation, kMaxPosTranslation},
+                                        {"ty (m)", -kMaxPosTranslation, kMaxPosTranslation},
+                                        {"tz (m)", -kMaxPosTranslation, kMaxPosTranslation},
+                                        {"tux (rad)", -kMaxPosRotation, kMaxPosRotation},
+                                        {"tuy (rad)", -kMaxPosRotation, kMaxPosRotation},
+                                        {"tuz (rad)", -kMaxPosRotation, kMaxPosRotation}};
   double values[6];
-  for (int i = 0; i < 6; ++i)
-    if (!(in >> values[i]))
-      return Error{path, 0, "expected 6 numbers (tx ty tz tux tuy tuz), found " + std::to_string(i)};
-  std::string extra;
-  if (in >> extra) return Error{path, 0, "more than 6 values: '" + extra + "'"};
+  for (int i = 0; i < 6; ++i) {
+    auto value = parse_field(w[i].text, kFields[i], path, w[i].line);
+    if (!value.ok()) return value.error();
+    values[i] = value.value();
+  }
   // Set-up time conversions from the file's decimal text.
   return Se3::from_theta_u({real(values[0]), real(values[1]), real(values[2])},
                            {real(values[3]), real(values[4]), real(values[5])});

@@ -195,12 +195,14 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real> distances(matches.size()), weights;
   Se3 pose;
-  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose,
-                  robust ? &distances : nullptr))
+  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose, &distances))
     return solution;
   solution.camera_from_model = pose;
   solution.solved = true;
-  if (!robust) return solution;
+  if (!robust) {
+    solution.residual_scale = real(1.4826) * median_of(distances);
+    return solution;
+  }
 
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
@@ -214,12 +216,12 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
       solution.outliers += matches[i].outlier;
     }
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    const bool last = round + 1 == params.robust_rounds;
-    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose,
-                    last ? nullptr : &distances))
+    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose, &distances))
       break;
     solution.camera_from_model = pose;
   }
+  // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
+  solution.residual_scale = real(1.4826) * median_of(distances);
   return solution;
 }
 

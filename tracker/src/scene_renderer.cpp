@@ -3,6 +3,7 @@
 #include "edgetrack/scene_renderer.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 
 #include "edgetrack/raster.h"
@@ -18,10 +19,34 @@ uint32_t next_random(uint32_t& state) {
   return state;
 }
 
+/// The face index of clutter lines in the supersampled buffer (-1 is the background).
+constexpr int16_t kClutterFace = -2;
+
 uint16_t grey_to_rgb565(int grey) {
   if (grey < 0) grey = 0;
   if (grey > 255) grey = 255;
   return static_cast<uint16_t>(((grey >> 3) << 11) | ((grey >> 2) << 5) | (grey >> 3));
+}
+
+/// True when the ray s q from the origin meets the side of the cylinder a-b of radius r for some
+/// s in (0, limit): a root of |m + s q|^2 - r^2 = 0 across the axis, within the axis' length.
+bool ray_meets_cylinder(const Vec3& a, const Vec3& b, const real& r, const Vec3& q, const real& limit) {
+  using std::sqrt;
+  const Vec3 axis = b - a;
+  const real length = norm(axis);
+  const Vec3 d = (real(1) / length) * axis;
+  const Vec3 m = -a;
+  const Vec3 m_across = m - dot(m, d) * d, q_across = q - dot(q, d) * d;
+  const real qa = dot(q_across, q_across), qb = real(2) * dot(m_across, q_across);
+  const real qc = dot(m_across, m_across) - r * r;
+  const real discriminant = qb * qb - real(4) * qa * qc;
+  if (qa == real(0) || discriminant < real(0)) return false;
+  const real root = sqrt(discriminant);
+  for (const real s : {(-qb - root) / (real(2) * qa), (-qb + root) / (real(2) * qa)}) {
+    const real along = dot(m + s * q, d);
+    if (s > real(0) && s < limit && along >= real(0) && along <= length) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -53,6 +78,36 @@ SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& styl
 
 void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
                            Rgb565Frame& frame) {
+  render(model, camera_from_model, noise_seed, SceneAdditions{}, frame);
+}
+
+void SceneRenderer::draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model) {
+  const int fw = fine_camera_.width, fh = fine_camera_.height, one = 1 << kSubpixelBits;
+  const int half_width = (3 * style_.supersample * one) / 4;  // 1.5 image pixels wide, in Q4 fine pixels
+  for (const Segment3& line : clutter) {
+    ScreenVertex a, b;
+    if (!clip_and_project_segment(fine_camera_, camera_from_model * line.a, camera_from_model * line.b, a, b)) continue;
+    const int64_t dx = b.x - a.x, dy = b.y - a.y;
+    const int steps = static_cast<int>(std::max(std::abs(dx), std::abs(dy)) / one) + 1;
+    for (int i = 0; i <= steps; ++i) {
+      // Inverse depth is linear in screen space, so it interpolates like x and y.
+      const int32_t x = static_cast<int32_t>(a.x + dx * i / steps), y = static_cast<int32_t>(a.y + dy * i / steps);
+      const int32_t w = static_cast<int32_t>(a.w + (static_cast<int64_t>(b.w) - a.w) * i / steps);
+      for (int py = (y - half_width) >> kSubpixelBits; py <= (y + half_width) >> kSubpixelBits; ++py)
+        for (int px = (x - half_width) >> kSubpixelBits; px <= (x + half_width) >> kSubpixelBits; ++px) {
+          if (px < 0 || py < 0 || px >= fw || py >= fh) continue;
+          const size_t k = static_cast<size_t>(py) * fw + px;
+          if (w > depth_[k]) {
+            depth_[k] = w;
+            face_[k] = kClutterFace;
+          }
+        }
+    }
+  }
+}
+
+void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
+                           const SceneAdditions& additions, Rgb565Frame& frame) {
   using std::fabs;
   std::fill(depth_.begin(), depth_.end(), 0);
   std::fill(face_.begin(), face_.end(), int16_t(-1));
@@ -61,27 +116,50 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
 
   // Flat shading from a light above and left of the camera.
   const Vec3 light = normalized({real(-0.3), real(-0.5), real(-1)});
+  auto lit = [&](const Vec3& normal_in_camera) {
+    const real lambert = fabs(dot(normal_in_camera, light));
+    return style_.face_low + static_cast<int>(lambert * (style_.face_high - style_.face_low));
+  };
   std::vector<int> shade(model.faces.size());
-  for (size_t f = 0; f < model.faces.size(); ++f) {
-    const real lambert = fabs(dot(camera_from_model.rotation() * model.faces[f].normal, light));
-    shade[f] = style_.face_low + static_cast<int>(lambert * (style_.face_high - style_.face_low));
-  }
+  for (size_t f = 0; f < model.faces.size(); ++f) shade[f] = lit(camera_from_model.rotation() * model.faces[f].normal);
 
+  // Cylinder facets and circle discs get shade entries after the faces'.
   const int fw = fine_camera_.width, fh = fine_camera_.height;
-  for (const Triangle& t : model.triangles) {
-    const Vec3 corners[3] = {in_camera[t.a], in_camera[t.b], in_camera[t.c]};
+  auto draw = [&](const Vec3 (&corners)[3], int shade_index, int32_t in_front) {
     ScreenVertex polygon[kMaxClippedVertices];
     const int n = clip_and_project_triangle(fine_camera_, corners, polygon);
-    const int16_t id = static_cast<int16_t>(t.face);
+    const int16_t id = static_cast<int16_t>(shade_index);
     for (int i = 1; i + 1 < n; ++i)
       fill_triangle(polygon[0], polygon[i], polygon[i + 1], fw, fh, [&](int x, int y, int32_t w) {
         const size_t k = static_cast<size_t>(y) * fw + x;
-        if (w > depth_[k]) {
+        if (w + ((w >> 12) & -in_front) > depth_[k]) {
           depth_[k] = w;
           face_[k] = id;
         }
       });
+  };
+  for (const Triangle& t : model.triangles) {
+    const Vec3 corners[3] = {in_camera[t.a], in_camera[t.b], in_camera[t.c]};
+    draw(corners, t.face, 0);
   }
+  for (const SurfaceTriangle& t : model.cylinder_surface) {
+    const Vec3 corners[3] = {camera_from_model * t.corners[0], camera_from_model * t.corners[1],
+                             camera_from_model * t.corners[2]};
+    shade.push_back(lit(camera_from_model.rotation() * t.normal));
+    draw(corners, static_cast<int>(shade.size()) - 1, 0);
+  }
+  // A circle is drawn as a darker disc, just in front of a face it lies on (a marking, or a
+  // cylinder's cap), so that its rim is an image edge.
+  for (const Circle& circle : model.circles) {
+    shade.push_back(std::max(0, lit(camera_from_model.rotation() * circle.normal) - style_.disc_darker));
+    const Vec3 centre = camera_from_model * circle.centre;
+    for (size_t s = 0; s + 1 < circle.rim.size(); ++s) {
+      const Vec3 corners[3] = {centre, camera_from_model * circle.rim[s], camera_from_model * circle.rim[s + 1]};
+      draw(corners, static_cast<int>(shade.size()) - 1, -1);
+    }
+  }
+
+  if (additions.clutter) draw_clutter(*additions.clutter, camera_from_model);
 
   frame.width = camera_.width;
   frame.height = camera_.height;
@@ -96,8 +174,9 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
       for (int sy = 0; sy < s; ++sy)
         for (int sx = 0; sx < s; ++sx) {
           const int id = face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)];
-          sum += id >= 0 ? shade[id] : bg;
+          sum += id >= 0 ? shade[id] : id == kClutterFace ? additions.clutter_grey : bg;
         }
+      if (x >= additions.band.x_begin && x < additions.band.x_end) sum = additions.occluder_grey * samples;
       const int noise = static_cast<int>(next_random(state) % static_cast<uint32_t>(noise_range)) - style_.noise;
       frame.pixels[static_cast<size_t>(y) * camera_.width + x] = grey_to_rgb565((sum + samples / 2) / samples + noise);
     }
@@ -131,6 +210,10 @@ bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const V
     const real s = dot(e2, q) / det;
     if (s > real(0) && s < limit) return false;
   }
+  for (const Cylinder& cylinder : model.cylinders)
+    if (ray_meets_cylinder(scale * (cylinder.axis_a - c), scale * (cylinder.axis_b - c), scale * cylinder.radius, p,
+                           limit))
+      return false;
   return true;
 }
 

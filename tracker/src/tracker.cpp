@@ -3,6 +3,7 @@
 #include "edgetrack/tracker.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "edgetrack/me_search_box.h"
 #include "edgetrack/tracker_params.h"
@@ -25,6 +26,20 @@ class StepClock {
   std::chrono::steady_clock::time_point last_;
 };
 
+/// The largest move of a control point along its normal from where the frame sampled it to
+/// where `pose` projects it, pixels: what the moving-edge search had to reach.
+real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose) {
+  using std::fabs;
+  real worst(0);
+  for (const ControlPoint& p : points) {
+    const Vec3 in_camera = pose * p.point_in_model;
+    if (in_camera.z <= real(0)) continue;
+    const real shift = fabs(dot(p.normal, camera.project(in_camera) - p.pixel));
+    if (shift > worst) worst = shift;
+  }
+  return worst;
+}
+
 }  // namespace
 
 const char* step_name(Step step) {
@@ -40,8 +55,8 @@ const char* step_name(Step step) {
 Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params) {
   if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
-  if (model.edges.empty()) return Error{"", 0, "the model has no edge to track"};
-  if (static_cast<int>(model.edges.size()) > kMaxEdges) return Error{"", 0, "the model has too many edges for Edge-ID"};
+  if (primitive_count(model) == 0) return Error{"", 0, "the model has no edge, cylinder or circle to track"};
+  if (primitive_count(model) > kMaxEdges) return Error{"", 0, "the model has too many primitives for Edge-ID"};
   const auto problem = check_tracker_params(params);
   if (problem) return Error{"", 0, problem->message};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
@@ -52,9 +67,11 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
     : model_(model),
       camera_(camera),
       params_(params),
+      me_(params.me),
       sampling_(sampling_params(params)),
       face_visibility_(model),
       camera_from_model_(initial),
+      motion_(initial, params.motion),
       edge_ids_(camera),
       grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
 
@@ -69,7 +86,7 @@ const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsign
   // tiles converted twice the pixels, at twice the guest instructions).
   converted = 0;
   for (const ControlPoint& point : visible_) {
-    const PixelBox box = me_search_box(point, params_.me);
+    const PixelBox box = me_search_box(point, me_);
     converted += vpImageConvert::RGB565ToGrey(rgb565, grey_, box.top, box.left, box.bottom, box.right);
   }
   return grey_;
@@ -79,11 +96,15 @@ bool Tracker::reset(const Se3& camera_from_model) {
   if (camera_from_model.translation().z <= real(0)) return false;
   camera_from_model_ = camera_from_model;
   face_visibility_.reset();
+  motion_.reset(camera_from_model);
   return true;
 }
 
 FrameResult Tracker::track(const uint16_t* rgb565) {
   FrameResult result;
+  const std::uint64_t saturations = fixedpoint::saturation_count();
+  const Se3 predicted = camera_from_model_;
+  me_.setRange(motion_.search_range(params_.me.getRange()));
   StepClock clock;
   begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
@@ -99,18 +120,47 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, params_.me);
+  matches_ = search_moving_edges(grey, visible_, me_);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
   result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
-  camera_from_model_ = result.pose.camera_from_model;
-  result.camera_from_model = camera_from_model_;
   result.points_sampled = static_cast<int>(visible_.size());
   result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
+  conclude(predicted, saturations, result);
   return result;
+}
+
+void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameResult& result) {
+  FrameMeasures& m = result.measures;
+  m.visible = result.points_sampled;
+  m.matched = static_cast<int>(matches_.size());
+  m.kept = result.points_matched;
+  m.solved = result.pose.solved;
+  m.matched_share = m.visible > 0 ? real(m.kept) / real(m.visible) : real(0);
+  m.inlier_share = m.matched > 0 ? real(m.kept) / real(m.matched) : real(0);
+  m.residual_scale = result.pose.residual_scale;
+  const Se3& solved = result.pose.camera_from_model;
+  m.correction_px = largest_normal_shift(visible_, camera_, solved);
+  const Se3 change = solved * predicted.inverse();
+  m.translation_change_mm = real(1000) * norm(solved.translation() - predicted.translation());
+  m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
+  m.range = me_.getRange();
+  m.saturations = fixedpoint::saturation_count() - saturations;
+  m.after_loss = motion_.lost_last_frame();
+  const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);
+  result.status = judged.status;
+  result.reason = judged.reason;
+  if (result.status == TrackingStatus::kLost) {
+    result.camera_from_model = predicted;
+    motion_.lose(model_, camera_);
+  } else {
+    result.camera_from_model = solved;
+    motion_.trust(solved, model_, camera_, params_.me.getRange());
+  }
+  camera_from_model_ = motion_.prediction();
 }
 
 }  // namespace edgetrack

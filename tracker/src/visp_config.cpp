@@ -23,6 +23,9 @@ class Reading {
   Reading(const std::string& path, const TrackerConfig& start) : path_(path), config_(start) {}
 
   Result<bool> root(const XmlElement& root) {
+    // ViSP reads the root's children only; a file whose root is the camera block itself (as
+    // edgetrack's older camera files) would keep ViSP's default camera, so it is read as one.
+    if (root.name == "camera") return camera(root);
     for (const XmlElement& block : root.children) {
       Result<bool> read = true;
       if (block.name == "camera") read = camera(block);

@@ -3,8 +3,8 @@
 #include "edgetrack/xml_document.h"
 
 #include <cstring>
-#include <fstream>
-#include <sstream>
+
+#include "edgetrack/input_file.h"
 
 namespace edgetrack {
 namespace {
@@ -177,11 +177,9 @@ Result<XmlElement> parse_xml(const std::string& xml, const std::string& source) 
 }
 
 Result<XmlElement> read_xml_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path, 0, "cannot open the file"};
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_xml(buffer.str(), path);
+  auto text = read_input_text(path);
+  if (!text.ok()) return text.error();
+  return parse_xml(text.value(), path);
 }
 
 }  // namespace edgetrack

@@ -127,9 +127,14 @@ void vpMeSite::getSearchBox(const vpMe* me, int& top, int& left, int& bottom, in
 }
 
 void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_contraste) {
+  track(I, me, test_contraste, me->getRange());
+}
+
+void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_contraste,
+                     unsigned int search_range) {
   using std::cos;
   using std::sin;
-  const int range = static_cast<int>(me->getRange());
+  const int range = static_cast<int>(search_range);
   const int size = static_cast<int>(me->getMaskSize());
   const int half = (size - 1) >> 1;
   const int margin = half + me->getStrip();

@@ -23,11 +23,12 @@ less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < b) }'; }
 # check_poses FILE ROWS MIN_POINTS: the poses file has ROWS rows, none lost, and on average at
 # least MIN_POINTS matched points per frame.
 check_poses() {
-  local rows lost points
+  local rows lost uncertain points
   rows=$(($(wc -l <"$1") - 1))
-  lost=$(awk -F, 'NR > 1 && $10 != "ok"' "$1" | wc -l)
+  lost=$(awk -F, 'NR > 1 && $10 == "lost"' "$1" | wc -l)
+  uncertain=$(awk -F, 'NR > 1 && $10 == "uncertain"' "$1" | wc -l)
   points=$(awk -F, 'NR > 1 { s += $8; n++ } END { printf "%.1f", s / n }' "$1")
-  echo "$1: $rows frames, $lost lost, $points points per frame"
+  echo "$1: $rows frames, $uncertain uncertain, $lost lost, $points points per frame"
   [ "$rows" -eq "$2" ] || fail "expected $2 frames"
   [ "$lost" -eq 0 ] || fail "frames lost"
   less "$(($3 - 1)).999" "$points" || fail "fewer than $3 points per frame"

@@ -43,9 +43,36 @@ static void test_frame_source() {
   if (listed.ok()) {
     Frame frame;
     TEST("--first 1 --last 1 of a directory gives one frame", listed.value()->next(frame).value(), true);
-    TEST_EQUAL("the second file in name order", int(frame.image.rgb[0]), 2);
+    TEST_EQUAL("the frame numbered 1 in its name (f001.ppm)", int(frame.image.rgb[0]), 1);
+    TEST_EQUAL("its index is the number in its name", frame.index, 1);
     TEST("and then ends", listed.value()->next(frame).value(), false);
   }
+  // Names without a number at their end: frames are numbered by their place in name order.
+  const std::string plain = std::string(APP_TEST_TMP) + "/plain_names";
+  std::filesystem::create_directories(plain);
+  for (const char* stem : {"alpha", "beta", "gamma"}) {
+    RgbImage image = make_image(2, 2);
+    image.rgb[0] = static_cast<uint8_t>(stem[0]);
+    write_ppm(plain + "/" + stem + ".ppm", image);
+  }
+  options = SourceOptions{};
+  options.images = plain;
+  options.first = 1;
+  auto positional = open_frame_source(options);
+  TEST("a directory of unnumbered names opens", positional.ok(), true);
+  if (positional.ok()) {
+    Frame frame;
+    TEST("--first 1 gives a frame", positional.value()->next(frame).value(), true);
+    TEST_EQUAL("the second name in order (beta)", int(frame.image.rgb[0]), int('b'));
+    TEST_EQUAL("numbered by its place", frame.index, 1);
+  }
+  options = SourceOptions{};
+  options.images = dir;
+  options.first = 3;
+  options.last = 2;
+  auto reversed = open_frame_source(options);
+  TEST("first after last is refused", reversed.ok(), false);
+  TEST("saying so", reversed.error().text().find("--first 3 is after --last 2") != std::string::npos, true);
   options = SourceOptions{};
   options.images = dir + "/none%03d.ppm";
   auto empty = open_frame_source(options);

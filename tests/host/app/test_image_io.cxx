@@ -62,6 +62,29 @@ static void test_image_io() {
   TEST_EQUAL("downscale halves the width", half.width, 2);
   TEST_EQUAL("downscale averages a block (0, 10, 10, 20 -> 10)", int(half.pixel(0, 0)[0]), 10);
   TEST_EQUAL("downscale keeps a flat block", int(half.pixel(1, 0)[0]), 100);
+
+  // 16-bit samples scale through the table exactly as round(255 v / maxval).
+  const int maxval = 1000;
+  std::string sixteen = "P5\n3 1\n1000\n";
+  for (int v : {0, 501, 1000}) sixteen += std::string{static_cast<char>(v >> 8), static_cast<char>(v & 0xff)};
+  write_text(temp_path("sixteen.pgm"), sixteen);
+  auto deep = read_netpbm(temp_path("sixteen.pgm"));
+  TEST("a 16-bit PGM reads", deep.ok(), true);
+  if (deep.ok()) {
+    TEST_EQUAL("maxval 1000 scales 501 to round(255 * 501 / 1000) = 128", int(deep.value().pixel(1, 0)[0]),
+               (501 * 255 + maxval / 2) / maxval);
+    TEST_EQUAL("and 1000 to 255", int(deep.value().pixel(2, 0)[0]), 255);
+  }
+  write_text(temp_path("wide.pgm"), "P5\n16385 1\n255\n");
+  auto wide = read_netpbm(temp_path("wide.pgm"));
+  TEST("a side over 16384 is refused before allocating", wide.ok(), false);
+  TEST("naming the size", wide.error().message.find("16385x1 is outside") != std::string::npos, true);
+  TEST("usable_image_size takes 16384 x 4096", usable_image_size(16384, 4096), true);
+  TEST("but not 16384 x 4097 (over 64 M pixels)", usable_image_size(16384, 4097), false);
+  TEST("nor a zero side", usable_image_size(0, 10), false);
+  auto directory = read_netpbm(APP_TEST_TMP);
+  TEST("a directory is not read as an image", directory.ok(), false);
+  TEST("and says so", directory.error().message.find("is a directory") != std::string::npos, true);
 }
 
 TESTMAIN(test_image_io)

@@ -161,12 +161,19 @@ case $name in
     env -u DISPLAY "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm" \
       --last 19 --quiet --init "$mbt/cube.init" --init-points "$work/clicks.txt" --poses "$work/from_clicks.csv" >/dev/null ||
       fail "rerun from the saved clicks failed"
-    # Not bit-exact: the .pos holds thetaU in decimal, and the rotation rebuilt from it differs in
-    # its last bits; S40.23 carries that through 20 frames (measured 0.003 mm, 0.001 deg).
+    # Not bit-exact: the .pos holds the pose in decimal, and the pose read back differs from the
+    # clicked one by up to half a unit of the real's resolution, which 20 frames of tracking carry
+    # on (measured: S40.23 0.003 mm, 0.001 deg; S47.16, 2^-16 m and rad, 0.12 mm, 0.043 deg). The
+    # bounds are those of the resolution: 128 times coarser in S47.16 than in S40.23.
+    real=$(sed -n 's/.*real = \([a-z0-9_]*\).*/\1/p' "$work/track.out" | head -n 1)
+    case $real in
+      s47_16) bound_mm=0.3 bound_deg=0.15 ;;  # 2^-16 = 1.5e-5
+      *) bound_mm=0.02 bound_deg=0.01 ;;      # double, float, s40_23 (2^-23 = 1.2e-7)
+    esac
     for rerun in from_pos from_clicks; do
       read -r mm deg < <(largest_difference "$work/clicked.csv" "$work/$rerun.csv")
-      echo "$rerun: largest difference to the clicked run $mm mm, $deg deg"
-      less "$mm" 0.02 && less "$deg" 0.01 || fail "the $rerun rerun does not repeat the clicked run"
+      echo "$rerun: largest difference to the clicked run $mm mm, $deg deg (real $real: within $bound_mm mm, $bound_deg deg)"
+      less "$mm" "$bound_mm" && less "$deg" "$bound_deg" || fail "the $rerun rerun does not repeat the clicked run"
     done ;;
   *)
     fail "unknown case" ;;

@@ -3,13 +3,27 @@
 #include "testlib/testlib_register.h"
 
 DECLARE(test_image_convert);
+DECLARE(test_image_point);
+DECLARE(test_math);
+DECLARE(test_matrix);
+DECLARE(test_me_ellipse);
+DECLARE(test_me_line);
 DECLARE(test_me_masks);
 DECLARE(test_me_site);
+DECLARE(test_robust);
+DECLARE(test_transformations);
 
 void register_tests() {
   REGISTER(test_image_convert);
+  REGISTER(test_image_point);
+  REGISTER(test_math);
+  REGISTER(test_matrix);
+  REGISTER(test_me_ellipse);
+  REGISTER(test_me_line);
   REGISTER(test_me_masks);
   REGISTER(test_me_site);
+  REGISTER(test_robust);
+  REGISTER(test_transformations);
 }
 
 DEFINE_MAIN

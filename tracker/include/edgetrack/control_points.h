@@ -15,7 +15,7 @@
 namespace edgetrack {
 
 struct ControlPoint {
-  int edge = 0;          ///< index into EdgeModel::edges
+  int edge = 0;          ///< the primitive's number (EdgeModel): an edge, a cylinder silhouette or a circle
   Vec3 point_in_model;   ///< the 3D point on the edge
   Vec2 pixel;            ///< where it projects with the sampling pose
   Vec2 direction;        ///< unit direction of the projected edge
@@ -31,10 +31,15 @@ struct SamplingParams {
 };
 
 /// Samples the part of every edge that params.clipping keeps (at least the part 1 cm in front
-/// of the camera): n = floor(projected length / step) points at the centres of n equal parts of
-/// the projected segment, each lifted back to the 3D edge with the perspective-correct
-/// parameter. Points within params.border of the image border are dropped. Visibility is not
-/// checked here.
+/// of the camera): n = floor(projected length / step) points at the
+/// centres of n equal parts of the projected segment, each lifted back to the 3D edge with the
+/// perspective-correct parameter. Each cylinder's two silhouette generator lines at this pose
+/// (contours.h) are sampled the same way: a fixed point on the current generator is right to
+/// first order for the moving silhouette, since the surface there is tangent to the viewing
+/// ray, so a small move of the touching point along the surface leaves its image unchanged.
+/// Circles are sampled every step pixels along their projected rim (ViSP steps by degrees
+/// instead), each point on the true circle with the normal of the projected ellipse there.
+/// Points within params.border of the image border are dropped. Visibility is not checked here.
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params);
 

@@ -70,7 +70,12 @@ class FaceVisibility {
   void reset();
 
   bool face_visible(int face) const { return face_visible_[static_cast<size_t>(face)] != 0; }
-  bool edge_tracked(int edge) const { return edge_tracked_[static_cast<size_t>(edge)] != 0; }
+  /// Whether primitive `edge` is tracked: an edge by the rule above; a cylinder's generator or a
+  /// circle (the primitives numbered after the edges) always, as ViSP's polygons without an
+  /// orientation are.
+  bool edge_tracked(int edge) const {
+    return static_cast<size_t>(edge) >= edge_tracked_.size() || edge_tracked_[static_cast<size_t>(edge)] != 0;
+  }
   /// Removes, in place, the control points of edges not tracked.
   void keep_tracked(std::vector<ControlPoint>& points) const;
 

@@ -9,8 +9,12 @@
 
 namespace edgetrack {
 
-/// Reads a ViSP .cao model (V1 or V2): points, lines, faces from lines, faces from points.
-/// Cylinders, circles and load() includes are refused with an error naming the file and line.
+/// Reads a ViSP .cao model (V1 or V2) as vpMbTracker::loadCAOModel does: load("part.cao",
+/// t=[..], tu=[..]) includes (relative to the including file, each part's indices local to it,
+/// its points placed by t and tu), points, lines, faces from lines, faces from points,
+/// cylinders, circles and their name=, useLod=, minLineLengthThreshold= and
+/// minPolygonAreaThreshold= parameters. Errors name the file and line; a missing include or
+/// a cycle also shows the chain of load() lines (file:line of each).
 Result<Polygons> read_cao(const std::string& path);
 
 /// Reads the v and f records of a Wavefront .obj (f accepts v, v/vt, v//vn, v/vt/vn and negative

@@ -9,7 +9,13 @@
 
 namespace edgetrack {
 
-/// Reads camera_from_model from a .pos file (six numbers separated by white space).
+/// The ranges a .pos file's values must lie in: translations within a kilometre, thetaU
+/// components within two turns (4 pi rad; an angle needs at most pi).
+constexpr double kMaxPosTranslation = 1000;
+constexpr double kMaxPosRotation = 12.566370614359172;
+
+/// Reads camera_from_model from a .pos file (six numbers separated by white space, `#` comments);
+/// a value that is not a finite number inside its range is refused with its line.
 Result<Se3> read_pos(const std::string& path);
 /// Writes camera_from_model as ViSP does: one number per line, tx ty tz tux tuy tuz.
 /// Returns an Error when the file cannot be written.

@@ -58,6 +58,9 @@ struct PoseSolution {
   int evaluations = 0;
   int iterations = 0;  ///< Jacobian evaluations (MINPACK's iterations), both solves
   int outliers = 0;    ///< matches given weight 0 in the last robust solve
+  /// 1.4826 * median |delta| over all matches at the returned pose, pixels: the robust scale
+  /// of the residuals (the standard deviation for normal residuals), for the tracking status.
+  real residual_scale{0};
   bool solved = false;  ///< false when there were too few points or LM reported a failure
 };
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The test-image renderer: a model drawn flat-shaded over a textured background with noise, as
-/// an RGB565 frame, with the portable rasteriser, so tracking tests with known ground truth run
+/// an RGB565 frame (faces, tessellated cylinder sides, circles as discs), with the portable rasteriser, so tracking tests with known ground truth run
 /// everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
 #pragma once
 
@@ -9,6 +9,7 @@
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
@@ -28,6 +29,7 @@ struct SceneStyle {
   int texture_cell = 12;      ///< pixels between the texture's random grey values
   int face_low = 150;         ///< face grey: face_low + (face_high - face_low) * |cos(light, normal)|
   int face_high = 240;
+  int disc_darker = 70;       ///< a circle's disc is this much darker than a face lit the same way
   uint32_t texture_seed = 1;  ///< the background is the same in every frame
 };
 
@@ -37,17 +39,23 @@ class SceneRenderer {
 
   /// Draws the model at camera_from_model; `noise_seed` picks the frame's noise.
   void render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed, Rgb565Frame& frame);
+  /// The same with `additions` (scene_extras.h): clutter lines hidden where the model is in front
+  /// of them, 1.5 pixels wide, and the occluder's columns over everything.
+  void render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed, const SceneAdditions& additions,
+              Rgb565Frame& frame);
 
  private:
+  /// Draws the lines into the supersampled depth and face buffers as face kClutterFace.
+  void draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model);
   PinholeCamera camera_;
   PinholeCamera fine_camera_;  ///< the camera at the supersampled size
   SceneStyle style_;
   std::vector<uint8_t> background_;  ///< grey texture, one value per pixel
   std::vector<int32_t> depth_;       ///< supersampled inverse depth
-  std::vector<int16_t> face_;        ///< supersampled face index, -1 for background
+  std::vector<int16_t> face_;        ///< supersampled shade index (faces, then facets and discs), -1 for background
 };
 
-/// Ground truth: true when no face of the model lies on the segment from the camera centre to
+/// Ground truth: true when no face or cylinder side of the model lies on the segment from the camera centre to
 /// the point, except within `margin` (a fraction of the point's distance) in front of it, so a
 /// point on its own faces counts as visible. Exact ray casting, independent of the rasteriser.
 bool point_visible(const EdgeModel& model, const Se3& camera_from_model, const Vec3& point_in_model,

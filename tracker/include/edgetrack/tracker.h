@@ -11,11 +11,13 @@
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/face_visibility.h"
+#include "edgetrack/motion_model.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/pose_solver.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/tracking_status.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
 
@@ -32,13 +34,16 @@ enum class GreyScaling {
 struct TrackerParams {
   /// The moving edges with upstream's meanings, and the one home of every <ecm> setting: range,
   /// threshold, mask size and number, mu1/mu2 and the sample step that spaces the control
-  /// points. mu1/mu2 are not used: sites are re-sampled every frame, so no previous contrast
-  /// exists to test them on.
+  /// points. The range is the configured one: each frame searches it or wider
+  /// (MotionModel::search_range). mu1/mu2 are not used: sites are re-sampled every frame, so no
+  /// previous contrast exists to test them on.
   vpMe me;
   FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
   int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
   PoseParams pose;
   GreyScaling grey = GreyScaling::kOnDemand;
+  MotionParams motion;  ///< prediction between frames and the range that follows it
+  StatusParams status;  ///< the tracked / uncertain / lost rule
 };
 
 /// Draws the Edge-ID image the visibility test reads. The tracker's default is the portable
@@ -64,9 +69,15 @@ class StepObserver {
   virtual void end(Step step) = 0;
 };
 
-/// What one frame did: its pose, the step times (host clock, nanoseconds) and the counts.
+/// What one frame did: its pose and status, the step times (host clock, nanoseconds) and the
+/// counts.
 struct FrameResult {
+  /// The solved pose; on a lost frame, the prediction the frame started from (the last trusted
+  /// pose moved on by the damped velocity), which is also where the next frame starts.
   Se3 camera_from_model;
+  TrackingStatus status = TrackingStatus::kLost;
+  StatusReason reason = StatusReason::kPoseFailed;
+  FrameMeasures measures;  ///< what the status rule read
   int64_t step_ns[kStepCount] = {0, 0, 0, 0};
   int points_sampled = 0;  ///< visible control points
   int points_matched = 0;  ///< of those, the ones the moving edges found and the pose kept
@@ -90,11 +101,13 @@ class Tracker {
   /// outlive the tracker or be reset first.
   void set_step_observer(StepObserver* observer) { step_observer_ = observer; }
 
+  /// The pose the next frame starts from (the prediction after the last frame).
   const Se3& camera_from_model() const { return camera_from_model_; }
-  /// Continues from `camera_from_model` at the next frame (after a lost frame, or a new
-  /// initialisation); keeps the buffers, the parameters and the Edge-ID source, and starts the
-  /// faces' visibility afresh (all hidden, as a new tracker's). False, and
-  /// nothing changes, when the pose puts the model behind the camera.
+  /// Continues from `camera_from_model`, at rest, at the next frame (a new initialisation; lost
+  /// frames need none: the tracker predicts and searches wider by itself); keeps the buffers,
+  /// the parameters and the Edge-ID source, and starts the faces' visibility afresh (all
+  /// hidden, as a new tracker's). False, and nothing changes, when the pose puts the model
+  /// behind the camera.
   bool reset(const Se3& camera_from_model);
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
@@ -114,13 +127,17 @@ class Tracker {
   void end(Step step) {
     if (step_observer_) step_observer_->end(step);
   }
+  /// The status measures and rule, then the prediction for the next frame.
+  void conclude(const Se3& predicted, std::uint64_t saturations, FrameResult& result);
 
   EdgeModel model_;
   PinholeCamera camera_;
   TrackerParams params_;
+  vpMe me_;                  ///< params_.me with this frame's search range
   SamplingParams sampling_;  ///< from params_: the sample step of params_.me, the border, the clipping
   FaceVisibility face_visibility_;
   Se3 camera_from_model_;
+  MotionModel motion_;
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
   StepObserver* step_observer_ = nullptr;

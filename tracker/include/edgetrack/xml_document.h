@@ -21,7 +21,7 @@ struct XmlElement {
 /// second root, text outside the root) is an Error naming `source` and the line.
 Result<XmlElement> parse_xml(const std::string& xml, const std::string& source);
 
-/// Reads and parses the file at `path`.
+/// Reads (read_input_text: a device or an oversized file is refused by name) and parses the file at `path`.
 Result<XmlElement> read_xml_file(const std::string& path);
 
 }  // namespace edgetrack

@@ -86,6 +86,9 @@ class vpMeSite {
   /// above the threshold wins. The winner becomes the site (state NO_SUPPRESSION, weight 1,
   /// convlt = its conv); otherwise the site stays and its state says why (CONSTRAST, THRESHOLD).
   void track(const vpImage<unsigned char>& I, const vpMe* me, bool test_contraste = true);
+  /// New: the same search over +-search_range instead of me's range. The trackers use it where
+  /// upstream temporarily changes the shared vpMe's range (initial and extremity searches).
+  void track(const vpImage<unsigned char>& I, const vpMe* me, bool test_contraste, unsigned int search_range);
 
   /// Pixels track() will read: rows [top, bottom), columns [left, right), not clipped.
   void getSearchBox(const vpMe* me, int& top, int& left, int& bottom, int& right) const;
@@ -99,6 +102,7 @@ class vpMeSite {
   real get_jfloat() const { return jfloat; }
   void setState(const vpMeSiteState& flag) { state = flag; }
   vpMeSiteState getState() const { return state; }
+  int getSign() const { return mask_sign; }
   void setWeight(const real& w) { weight = w; }
   real getWeight() const { return weight; }
 

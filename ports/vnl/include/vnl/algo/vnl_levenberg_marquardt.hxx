@@ -157,34 +157,34 @@ template <class T>
 void vnl_levenberg_marquardt_of<T>::diagnose_outcome(std::ostream& s) const {
   const char* what = "unknown info code from lmder";
   switch (this->failure_code_) {
-    case this->ERROR_FAILURE:
+    case vnl_nonlinear_minimizer_of<T>::ERROR_FAILURE:
       what = "failure in the least-squares function";
       break;
-    case this->ERROR_DODGY_INPUT:
+    case vnl_nonlinear_minimizer_of<T>::ERROR_DODGY_INPUT:
       what = "dodgy input";
       break;
-    case this->CONVERGED_FTOL:
+    case vnl_nonlinear_minimizer_of<T>::CONVERGED_FTOL:
       what = "converged to ftol";
       break;
-    case this->CONVERGED_XTOL:
+    case vnl_nonlinear_minimizer_of<T>::CONVERGED_XTOL:
       what = "converged to xtol";
       break;
-    case this->CONVERGED_XFTOL:
+    case vnl_nonlinear_minimizer_of<T>::CONVERGED_XFTOL:
       what = "converged nicely";
       break;
-    case this->CONVERGED_GTOL:
+    case vnl_nonlinear_minimizer_of<T>::CONVERGED_GTOL:
       what = "converged via gtol";
       break;
-    case this->TOO_MANY_ITERATIONS:
+    case vnl_nonlinear_minimizer_of<T>::TOO_MANY_ITERATIONS:
       what = "too many iterations";
       break;
-    case this->FAILED_FTOL_TOO_SMALL:
+    case vnl_nonlinear_minimizer_of<T>::FAILED_FTOL_TOO_SMALL:
       what = "ftol is too small; no further reduction of the sum of squares is possible";
       break;
-    case this->FAILED_XTOL_TOO_SMALL:
+    case vnl_nonlinear_minimizer_of<T>::FAILED_XTOL_TOO_SMALL:
       what = "xtol is too small; no further improvement of x is possible";
       break;
-    case this->FAILED_GTOL_TOO_SMALL:
+    case vnl_nonlinear_minimizer_of<T>::FAILED_GTOL_TOO_SMALL:
       what = "gtol is too small; fx is orthogonal to the Jacobian to machine precision";
       break;
     default:

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// `edgetrack compare`'s side of the pipe to `edgetrack-visp-mbt` (visp_worker_protocol.h): starts
+/// the child with its settings, hands it one frame at a time and reads its answer.
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "edgetrack/result.h"
+#include "edgetrack/se3.h"
+#include "image_io.h"
+#include "visp_worker_protocol.h"
+
+namespace edgetrack_app {
+
+class VispMbtProcess {
+ public:
+  /// Starts `worker` on the XML and the model from camera_from_model; frames will be `downscale`
+  /// times smaller than the ones the XML's camera describes. OMP_NUM_THREADS=1: one core each.
+  static edgetrack::Result<std::unique_ptr<VispMbtProcess>> start(const std::string& worker, const std::string& xml,
+                                                                  const std::string& model,
+                                                                  const edgetrack::Se3& camera_from_model, int downscale);
+  ~VispMbtProcess();
+  VispMbtProcess(const VispMbtProcess&) = delete;
+  VispMbtProcess& operator=(const VispMbtProcess&) = delete;
+
+  /// ViSP tracks `image`; an Error (with what the child said on standard error) when it ended.
+  edgetrack::Result<VispFrameReply> track(const RgbImage& image);
+
+ private:
+  VispMbtProcess(pid_t pid, std::FILE* to_child, std::FILE* from_child) : pid_(pid), to_(to_child), from_(from_child) {}
+  pid_t pid_;
+  std::FILE* to_;
+  std::FILE* from_;
+};
+
+}  // namespace edgetrack_app

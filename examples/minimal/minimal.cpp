@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The smallest program on the installed edgetrack package: tracks a model through numbered PGM
+/// frames and prints the pose and the result of each frame.
+/// usage: minimal MODEL CAMERA.xml INIT.pos 'FRAMES%04d.pgm' [FIRST [LAST]]
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "edgetrack/model_io.h"
+#include "edgetrack/visp_config.h"
+#include "edgetrack/pose_io.h"
+#include "edgetrack/tracker.h"
+
+/// Frame `index` of a binary 8-bit PGM sequence, packed into RGB565 (the tracker's layout).
+static bool read_frame(const char* pattern, int index, int& width, int& height, std::vector<uint16_t>& rgb565) {
+  char path[4096];
+  std::snprintf(path, sizeof path, pattern, index);
+  std::ifstream in(path, std::ios::binary);
+  std::string magic;
+  int maxval = 0;
+  in >> magic >> std::ws;
+  while (in.peek() == '#') in.ignore(1 << 20, '\n');
+  if (magic != "P5" || !(in >> width >> height >> maxval) || maxval != 255 || in.get() == EOF) return false;
+  std::vector<unsigned char> grey(static_cast<size_t>(width) * height);
+  if (!in.read(reinterpret_cast<char*>(grey.data()), grey.size())) return false;
+  rgb565.resize(grey.size());
+  for (size_t i = 0; i < grey.size(); ++i) rgb565[i] = ((grey[i] >> 3) << 11) | ((grey[i] >> 2) << 5) | (grey[i] >> 3);
+  return true;
+}
+
+int main(int argc, char** argv) {
+  if (argc < 5) return std::fprintf(stderr, "usage: minimal MODEL CAMERA.xml INIT.pos 'FRAMES%%04d.pgm' [FIRST [LAST]]\n"), 2;
+  const int first = argc > 5 ? std::atoi(argv[5]) : 0, last = argc > 6 ? std::atoi(argv[6]) : 1 << 30;
+  int width = 0, height = 0;
+  std::vector<uint16_t> frame;
+  if (!read_frame(argv[4], first, width, height, frame)) return std::fprintf(stderr, "minimal: no 8-bit PGM frame %d\n", first), 1;
+
+  auto model = edgetrack::load_model(argv[1]);
+  edgetrack::TrackerConfig config;  // the camera and settings of a ViSP XML, as loadConfigFile reads it
+  auto read = edgetrack::apply_visp_config(argv[2], config);
+  auto initial = edgetrack::read_pos(argv[3]);
+  for (const edgetrack::Error* e : {&model.error(), &read.error(), &initial.error()})
+    if (!e->message.empty()) return std::fprintf(stderr, "minimal: %s\n", e->text().c_str()), 1;
+  if (config.camera.width == 0) config.camera.width = width;
+  if (config.camera.height == 0) config.camera.height = height;
+  auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
+  if (!tracker.ok()) return std::fprintf(stderr, "minimal: %s\n", tracker.error().text().c_str()), 1;
+
+  for (int index = first; index <= last && read_frame(argv[4], index, width, height, frame); ++index) {
+    const edgetrack::FrameResult r = tracker.value().track(frame.data());
+    const edgetrack::Vec3 t = r.camera_from_model.translation(), tu = r.camera_from_model.theta_u();
+    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s\n", index, double(t.x), double(t.y),
+                double(t.z), double(tu.x), double(tu.y), double(tu.z), r.points_matched, r.points_sampled,
+                r.pose.solved ? "solved" : "not-solved");
+  }
+  return 0;
+}

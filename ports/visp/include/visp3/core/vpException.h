@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors ViSP's visp3/core/vpException.h: the exception the ported classes throw where
+/// upstream throws (a tracker that cannot go on), with upstream's codes and message.
+#pragma once
+
+#include <exception>
+#include <string>
+
+class vpException : public std::exception {
+ public:
+  enum generalExceptionEnum {
+    memoryAllocationError,
+    memoryFreeError,
+    functionNotImplementedError,
+    ioError,
+    cannotUseConstructorError,
+    notImplementedError,
+    divideByZeroError,
+    dimensionError,
+    fatalError,
+    badValue,
+    notInitialized
+  };
+
+  vpException(int code, const std::string& message) : code_(code), message_(message) {}
+  int getCode() const { return code_; }
+  const std::string& getStringMessage() const { return message_; }
+  const char* getMessage() const { return message_.c_str(); }
+  const char* what() const noexcept override { return message_.c_str(); }
+
+ private:
+  int code_;
+  std::string message_;
+};

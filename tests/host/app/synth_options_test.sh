@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The evaluation options of `edgetrack synth`, one case per call: synth_options_test.sh EDGETRACK
+# TMPDIR CASE. What synth measures and prints (motion, covered share, clutter offset) must be
+# what was asked for; bad values are refused with one line.
+set -u
+edgetrack=$1
+work=$2/$3
+name=$3
+rm -rf "$work" && mkdir -p "$work"
+
+# fail, expect_error, less, check_poses
+source "$(dirname "$0")/cli_common.sh"
+
+synth() { "$edgetrack" synth --frames 10 --supersample 1 "$@"; }
+
+case $name in
+  synth_speed_scales_motion)
+    synth --out "$work/slow" >"$work/slow.txt" || fail "synth failed"
+    synth --out "$work/fast" --speed 2.5 >"$work/fast.txt" || fail "synth --speed failed"
+    slow=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$work/slow.txt")
+    fast=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$work/fast.txt")
+    echo "largest motion: $slow px/frame, with --speed 2.5: $fast px/frame"
+    ratio=$(awk -v a="$slow" -v b="$fast" 'BEGIN { printf "%.3f", b / a }')
+    less 2.3 "$ratio" && less "$ratio" 2.7 || fail "motion ratio $ratio, expected about 2.5"
+    [ "$(head -n 2 "$work/fast/truth.csv" | tail -n 1)" = "$(head -n 2 "$work/slow/truth.csv" | tail -n 1)" ] ||
+      fail "the fast path does not start where the slow one does"
+    [ "$(wc -l <"$work/fast/truth.csv")" -eq 11 ] || fail "expected 10 truth rows" ;;
+  synth_cover_measured)
+    synth --out "$work/seq" --cover 0.3 | tee "$work/out.txt" || fail "synth --cover failed"
+    read -r mean low high <<<"$(sed -n 's/.*covers \([0-9.]*\) % .*(\([0-9.]*\) to \([0-9.]*\) %).*/\1 \2 \3/p' "$work/out.txt")"
+    less 29.99 "$low" && less "$high" 32 || fail "covered share $low..$high %, expected 30 to 32 %"
+    less "$low" "$mean" || [ "$low" = "$mean" ] || fail "mean below the lowest" ;;
+  synth_clutter_beside_edges)
+    synth --out "$work/plain" >/dev/null || fail "synth failed"
+    synth --out "$work/seq" --clutter 3 | tee "$work/out.txt" || fail "synth --clutter failed"
+    read -r lines px <<<"$(sed -n 's/.*: \([0-9]*\) clutter lines .* \([0-9.]*\) px off them.*/\1 \2/p' "$work/out.txt")"
+    [ "$lines" = 12 ] || fail "expected one line per cube edge (12), got $lines"
+    less 1 "$px" && less "$px" 5 || fail "clutter $px px off the edges, expected a few"
+    cmp -s "$work/plain/frames/frame0000.ppm" "$work/seq/frames/frame0000.ppm" && fail "the clutter is not drawn"
+    cmp -s "$work/plain/truth.csv" "$work/seq/truth.csv" || fail "the clutter changed the truth"
+    echo "ok: clutter drawn, truth unchanged" ;;
+  error_synth_bad_cover)
+    expect_error "--cover must be a share" "$edgetrack" synth --out "$work/seq" --cover 1.5 ;;
+  error_synth_bad_speed)
+    expect_error "--speed must be 1..16" "$edgetrack" synth --out "$work/seq" --speed 0.5 ;;
+  *) fail "unknown case" ;;
+esac

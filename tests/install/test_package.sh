@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The package as a user gets it, either from `cmake --install` into a scratch prefix (mode
+# prefix) or from the .deb files CPack makes, unpacked with dpkg-deb -x (mode deb). Then, in
+# fresh build trees: examples/minimal through find_package(edgetrack) and through pkg-config,
+# run on the first frames of ViSP's mbt/cube (under the emulator for ARM) and held to the
+# installed `edgetrack track` on the same frames. Mode prefix also builds examples/ar_overlay
+# (host), programs written for upstream VXL and ViSP (tests/install/upstream_api), and checks
+# find_package with a `real` component.
+# usage: test_package.sh prefix|deb BUILD SOURCE WORK VERSION REAL VISP_IMAGES CXX_COMMAND DEB_ARCH
+#        [TOOLCHAIN EMULATOR]   (env EDGETRACK_CONSUMER_FLAGS: extra flags, e.g. sanitizers)
+set -euo pipefail
+mode=$1 build=$2 source=$3 work=$4 version=$5 real=$6 visp=$7 cxx=$8 arch=$9
+toolchain=${10:-} emulator=${11:-}
+flags=${EDGETRACK_CONSUMER_FLAGS:-}
+fail() { echo "FAIL: $*" >&2; exit 1; }
+run() { $emulator "$@"; }  # word splitting of the emulator command is intended
+
+rm -rf "$work" && mkdir -p "$work"
+case $mode in
+  prefix)
+    cmake --install "$build" --prefix "$work/root" >"$work/install.log" || fail "cmake --install failed"
+    prefix=$work/root ;;
+  deb)
+    (cd "$build" && cpack -G DEB -B "$work/debs" >"$work/cpack.log" 2>&1) || { cat "$work/cpack.log"; fail "cpack failed"; }
+    for package in edgetrack libedgetrack-dev; do
+      deb=$(ls "$work"/debs/${package}_"$version"_*.deb 2>/dev/null) || fail "no $package .deb in $work/debs"
+      dpkg-deb -f "$deb" Package Version Architecture Depends | sed "s/^/$package: /"
+      [ "$(dpkg-deb -f "$deb" Architecture)" = "$arch" ] || fail "$deb: Architecture is not $arch"
+      [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "$deb: Version is not $version"
+      dpkg-deb -x "$deb" "$work/root"
+    done
+    if [ -z "$toolchain" ]; then
+      # The host tools link OpenCV and OSMesa dynamically: dpkg-shlibdeps must have named them.
+      depends=$(dpkg-deb -f "$work"/debs/edgetrack_*.deb Depends)
+      for library in libc6 libstdc++6 libopencv-core libosmesa6; do
+        grep -q "$library" <<<"$depends" || fail "edgetrack.deb Depends lacks $library: $depends"
+      done
+    fi
+    prefix=$work/root/usr ;;
+  *) fail "unknown mode $mode" ;;
+esac
+
+# What the package holds, and where: drop-in headers only under include/edgetrack/ports.
+for file in bin/edgetrack share/edgetrack/models/cube60.cao include/edgetrack/tracker.h \
+            include/edgetrack/ports/vnl/vnl_vector.h include/edgetrack/ports/visp3/me/vpMe.h \
+            include/edgetrack/ports/real/real_config.h lib/libedgetrack_tracker.a lib/pkgconfig/edgetrack.pc \
+            lib/cmake/edgetrack/edgetrack-config.cmake lib/cmake/edgetrack/edgetrack-config-version.cmake; do
+  [ -e "$prefix/$file" ] || fail "$prefix/$file is not installed"
+done
+for dir in vnl vcl visp3 real netlib testlib; do
+  [ ! -e "$prefix/include/$dir" ] || fail "$prefix/include/$dir would collide with an upstream install"
+done
+reported=$(run "$prefix/bin/edgetrack" --version)
+[ "$reported" = "edgetrack $version (real = $real)" ] || fail "edgetrack --version says '$reported'"
+
+configure() {  # configure <source dir> <build dir> [cmake args]
+  local src=$1 dir=$2; shift 2
+  # Through the environment, so the toolchain file's own flags (CMAKE_*_FLAGS_INIT) still apply.
+  CXXFLAGS="$flags" LDFLAGS="$flags" cmake -S "$src" -B "$dir" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" \
+    -DCMAKE_BUILD_TYPE=Release ${toolchain:+-DCMAKE_TOOLCHAIN_FILE="$toolchain"} \
+    -DCMAKE_CXX_COMPILER_LAUNCHER="${EDGETRACK_CONSUMER_LAUNCHER:-}" "$@"
+}
+configure "$source/examples/minimal" "$work/minimal" >"$work/minimal.configure.log" 2>&1 ||
+  { cat "$work/minimal.configure.log"; fail "examples/minimal does not configure against $prefix"; }
+grep -q "edgetrack $version (real = $real) from $prefix/lib/cmake/edgetrack" "$work/minimal.configure.log" ||
+  fail "examples/minimal did not find the package in $prefix"
+cmake --build "$work/minimal" >"$work/minimal.build.log" 2>&1 || { cat "$work/minimal.build.log"; fail "examples/minimal does not build"; }
+if [ -n "$toolchain" ]; then
+  # Built as the toolchain file says: ARMv5TE soft-float, static (no program interpreter).
+  "$source/toolchains/check-soft-float.sh" "$work/minimal" || fail "minimal is not an ARMv5TE soft-float program"
+  ! arm-linux-gnueabi-readelf -l "$work/minimal/minimal" | grep -q INTERP || fail "minimal is not static"
+fi
+
+# The same program through pkg-config, with the build's own compiler command.
+pc_flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs edgetrack)
+[ "$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --variable=real edgetrack)" = "$real" ] || fail "edgetrack.pc: real is not $real"
+# shellcheck disable=SC2086
+${EDGETRACK_CONSUMER_LAUNCHER:-} $cxx $flags "$source/examples/minimal/minimal.cpp" $pc_flags -o "$work/minimal_pc" || fail "minimal does not build with pkg-config's flags"
+
+# Five frames of the real cube sequence: every pose solved, most points matched, and the pose
+# the installed command line finds for each frame with the same (default) settings.
+# The camera only (cube.xml's <camera>): the command line would also apply the file's <ecm> and
+# <face> settings, which minimal leaves at the library's defaults.
+mbt=$visp/mbt
+last=4
+camera=$work/camera.xml
+{ echo '<?xml version="1.0"?>'; echo '<conf>'; sed -n '/<camera>/,/<\/camera>/p' "$mbt/cube.xml"; echo '</conf>'; } >"$camera"
+grep -q '<px>' "$camera" || fail "no <camera> in $mbt/cube.xml"
+for program in "$work/minimal/minimal" "$work/minimal_pc"; do
+  run "$program" "$mbt/cube.cao" "$camera" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" 0 $last >"$program.out" ||
+    fail "$program failed"
+done
+cat "$work/minimal/minimal.out"
+cmp -s "$work/minimal/minimal.out" "$work/minimal_pc.out" || fail "the pkg-config build prints other results"
+run "$prefix/bin/edgetrack" track --model "$mbt/cube.cao" --camera "$camera" --init-pose "$mbt/cube.0.pos" \
+    --images "$mbt/cube/image%04d.pgm" --last $last --quiet --poses "$work/track.csv" >/dev/null || fail "edgetrack track failed"
+awk -v frames=$((last + 1)) '
+  FNR == NR { if (FNR > 1) { for (i = 2; i <= 7; i++) pose[$1, i] = $i } ; next }
+  {
+    n++
+    if ($1 != "frame" || $2 != n - 1) { print "line " n ": not frame " n - 1 ": " $0; bad++; next }
+    if ($NF != "solved") { print "frame " $2 ": pose not solved"; bad++ }
+    split($12, m, "/"); if (m[1] < 0.8 * m[2] || m[2] < 30) { print "frame " $2 ": matched " $12; bad++ }
+    for (i = 2; i <= 7; i++) {
+      mine = $(i < 5 ? i + 2 : i + 3); d = mine - pose[$2, i]
+      if (d > 1e-5 || d < -1e-5) { print "frame " $2 ": coordinate " i - 1 " is " mine ", edgetrack track says " pose[$2, i]; bad++ }
+    }
+  }
+  END { if (n != frames) { print n " frames printed, expected " frames; bad++ } ; exit bad > 0 }
+' FS=, "$work/track.csv" FS=' ' "$work/minimal/minimal.out" || fail "minimal disagrees with edgetrack track"
+
+# Host: the AR example (OpenCV) on the same frames, read by OpenCV from an image pattern, tracks
+# as minimal does and writes one overlay image per frame.
+if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
+  configure "$source/examples/ar_overlay" "$work/ar_overlay" >"$work/ar_overlay.configure.log" 2>&1 &&
+    cmake --build "$work/ar_overlay" >"$work/ar_overlay.build.log" 2>&1 ||
+    { cat "$work/ar_overlay.configure.log" "$work/ar_overlay.build.log"; fail "examples/ar_overlay does not build"; }
+  mkdir -p "$work/frames" "$work/overlay"
+  for ((i = 0; i <= last; i++)); do ln -s "$mbt/cube/$(printf 'image%04d.pgm' $i)" "$work/frames/"; done
+  "$work/ar_overlay/ar_overlay" "$mbt/cube.cao" "$camera" "$mbt/cube.0.pos" "$work/frames/image%04d.pgm" \
+    "$work/overlay/overlay%04d.png" >"$work/ar_overlay.out" || fail "ar_overlay failed"
+  cmp -s "$work/minimal/minimal.out" "$work/ar_overlay.out" || { diff "$work/minimal/minimal.out" "$work/ar_overlay.out"; fail "ar_overlay tracks otherwise than minimal"; }
+  [ "$(ls "$work"/overlay/overlay*.png | wc -l)" -eq $((last + 1)) ] || fail "ar_overlay did not write $((last + 1)) overlay images"
+fi
+
+# Programs written for upstream VXL and ViSP build unchanged on edgetrack::vnl_algo / visp_me.
+if [ "$mode" = prefix ]; then
+  configure "$source/tests/install/upstream_api" "$work/upstream_api" >"$work/upstream_api.log" 2>&1 &&
+    cmake --build "$work/upstream_api" >>"$work/upstream_api.log" 2>&1 ||
+    { cat "$work/upstream_api.log"; fail "the upstream-API programs do not build"; }
+  run "$work/upstream_api/visp_me_upstream" || fail "visp_me_upstream failed"
+  if [ "$real" = double ]; then run "$work/upstream_api/vnl_upstream" || fail "vnl_upstream failed"; fi
+fi
+
+# A consumer may require the package's `real`; another one is refused with a clear message.
+# (The .deb files hold the same config file.)
+if [ "$mode" = deb ]; then
+  echo "package (deb) in $prefix: minimal built with find_package and pkg-config, agrees with edgetrack track on $((last + 1)) frames"
+  exit 0
+fi
+configure "$source/tests/install/needs_real" "$work/needs_same" -DNEEDED_REAL="$real" >"$work/needs_same.log" 2>&1 ||
+  { cat "$work/needs_same.log"; fail "find_package(edgetrack COMPONENTS $real) failed"; }
+other=$([ "$real" = s40_23 ] && echo double || echo s40_23)
+if configure "$source/tests/install/needs_real" "$work/needs_other" -DNEEDED_REAL=$other >"$work/needs_other.log" 2>&1; then
+  fail "find_package(edgetrack COMPONENTS $other) accepted a $real package"
+fi
+# CMake wraps the message: compare it with the lines joined.
+tr -s ' \n' ' ' <"$work/needs_other.log" | grep -q "needs real = $other, but the edgetrack in .* was built with real = $real" ||
+  { cat "$work/needs_other.log"; fail "no clear message for the wrong real"; }
+echo "package (prefix) in $prefix: minimal built with find_package and pkg-config, agrees with edgetrack track on $((last + 1)) frames; ar_overlay (host) and the upstream-API programs build and run; the real component is checked"

@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The allocation test's driver: a separate executable because it replaces operator new.
+#include "testlib/testlib_register.h"
+
+DECLARE(test_tracker_allocations);
+
+void register_tests() { REGISTER(test_tracker_allocations); }
+
+DEFINE_MAIN

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracking status of a frame: tracked, uncertain or lost, the reason, and the measures the
+/// rule reads (docs/ARCHITECTURE.md, "Tracking status").
+#pragma once
+
+#include <cstdint>
+
+#include "real/real.h"
+
+namespace edgetrack {
+
+enum class TrackingStatus { kTracked = 0, kUncertain = 1, kLost = 2 };
+
+/// Why a frame is not tracked (kNone when it is); the first rule that applies names it.
+enum class StatusReason {
+  kNone = 0,
+  kTooFewVisible,     ///< lost: fewer visible control points than the pose step needs (object gone)
+  kPoseFailed,        ///< lost: too few matches for the pose step, or its solve failed
+  kChanceResiduals,   ///< lost: the residuals are spread as matches at chance over the range
+  kFewMatched,        ///< uncertain: under half the visible control points matched and kept
+  kManyOutliers,      ///< uncertain: the robust solve gave half or more of the matches no weight
+  kLooseFit,          ///< uncertain: the robust residual scale is above a tracked frame's
+  kNotReacquired,     ///< lost: after a lost frame, only a frame that would be tracked counts as found again
+  kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
+  kSaturated          ///< uncertain: fixed-point results saturated during the frame
+};
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kSaturated) + 1;
+
+const char* status_name(TrackingStatus status);
+const char* reason_name(StatusReason reason);
+
+/// What the status rule reads, all from one frame.
+struct FrameMeasures {
+  int visible = 0;          ///< visible control points
+  int matched = 0;          ///< of those, the ones the moving edges found
+  int kept = 0;             ///< of those, the ones the robust pose solve kept (nonzero weight)
+  bool solved = false;      ///< the pose step solved (PoseSolution::solved)
+  real matched_share{0};    ///< kept / visible
+  real inlier_share{0};     ///< kept / matched
+  real residual_scale{0};   ///< px, 1.4826 * median |distance| of the matches at the final pose
+  real correction_px{0};    ///< px, largest move of a control point along its normal, prediction to solved pose
+  real translation_change_mm{0};  ///< solved pose against the prediction
+  real rotation_change_deg{0};
+  unsigned range = 0;       ///< the moving-edge range this frame searched, px
+  bool after_loss = false;  ///< the previous frame was lost
+  std::uint64_t saturations = 0;  ///< fixed-point saturations counted during the frame (0 in float builds)
+};
+
+/// The rule's thresholds, each with what it stands for.
+struct StatusParams {
+  /// Robust scale of a tracked frame: edge localisation and model error keep it within a pixel.
+  real tracked_scale_px = real(1);
+  /// Lost when the scale exceeds lost_range_share * range and lost_scale_floor_px: matches at
+  /// chance over +-range have |distance| spread evenly over [0, range], so with a share p of
+  /// them on the model's edges the median is range (1/2 - p) / (1 - p); at p = 1/4 that is
+  /// range / 3, a scale of 0.49 range. The floor keeps tracked frames (up to ~1 px) apart from
+  /// it when the range is small.
+  real lost_range_share = real(0.6);
+  real lost_scale_floor_px = real(1.5);
+  real min_matched_share = real(0.5);  ///< below: uncertain
+  real min_inlier_share = real(0.5);   ///< below: uncertain (the median scale breaks down at half)
+};
+
+struct FrameStatus {
+  TrackingStatus status = TrackingStatus::kLost;
+  StatusReason reason = StatusReason::kPoseFailed;
+};
+
+/// The status rule: lost when there is nothing to track, the pose could not be solved, or the
+/// residuals look like chance; uncertain when the pose rests on a minority of the model, fits
+/// loosely, moved farther than the search reaches, or fixed point saturated; tracked otherwise.
+/// After a lost frame an uncertain one stays lost: the prediction it started from is weak, and
+/// a wider search on clutter finds fits that are loose but not at chance.
+/// `min_points` is the pose step's minimum (PoseParams::min_points).
+FrameStatus judge_frame(const FrameMeasures& measures, const StatusParams& params, int min_points);
+
+}  // namespace edgetrack

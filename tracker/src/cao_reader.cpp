@@ -1,0 +1,454 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// ViSP's .cao format as vpMbTracker::loadCAOModel reads it (docs/FORMATS.md): load() includes,
+/// points, lines, faces, cylinders, circles and their key=value parameters.
+#include <cmath>
+#include <utility>
+
+#include "edgetrack/model_io.h"
+#include "edgetrack/se3.h"
+#include "text_lines.h"
+
+namespace edgetrack {
+namespace {
+
+/// Where a load() was read: the including file and its line.
+struct IncludeStep {
+  std::string file;
+  int line = 0;
+};
+
+/// "a.cao:3 -> b.cao:7 -> c.cao": each load() on the way to `last`.
+std::string chain_text(const std::vector<IncludeStep>& chain, const std::string& last) {
+  std::string text;
+  for (const IncludeStep& step : chain) text += step.file + ":" + std::to_string(step.line) + " -> ";
+  return text + last;
+}
+
+std::string parent_directory(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+/// Removes "." and "dir/.." parts, so that one file has one name for the cycle test.
+std::string normalized_path(const std::string& path) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  const bool absolute = !path.empty() && path[0] == '/';
+  while (start <= path.size()) {
+    const size_t end = path.find('/', start);
+    const std::string part = path.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (part == "..") {
+      if (!parts.empty() && parts.back() != "..") parts.pop_back();
+      else if (!absolute) parts.push_back(part);
+    } else if (!part.empty() && part != ".") {
+      parts.push_back(part);
+    }
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  std::string out = absolute ? "/" : "";
+  for (size_t i = 0; i < parts.size(); ++i) out += (i ? "/" : "") + parts[i];
+  return out;
+}
+
+/// "[a;b;c]" after a load() parameter's prefix; `angles` accepts a "deg" or "rad" suffix per value.
+bool parse_triple(std::string text, bool angles, Vec3& out) {
+  if (text.empty() || text.back() != ']') return false;
+  text.pop_back();
+  real values[3];
+  size_t start = 0;
+  for (int k = 0; k < 3; ++k) {
+    const size_t end = text.find(';', start);
+    if ((k < 2) == (end == std::string::npos)) return false;
+    std::string value = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    while (!value.empty() && value.front() == ' ') value.erase(0, 1);
+    while (!value.empty() && value.back() == ' ') value.pop_back();
+    bool degrees = false;
+    if (angles && value.size() > 3 && (value.compare(value.size() - 3, 3, "deg") == 0 ||
+                                       value.compare(value.size() - 3, 3, "rad") == 0)) {
+      degrees = value.compare(value.size() - 3, 3, "deg") == 0;
+      value.erase(value.size() - 3);
+    }
+    if (!parse_real(value, values[k])) return false;
+    if (degrees) values[k] = values[k] * real(3.14159265358979323846 / 180);
+    start = end + 1;
+  }
+  out = {values[0], values[1], values[2]};
+  return true;
+}
+
+/// A load("path", t=[x;y;z], tu=[a;b;c]) line: the path and the included part's placement.
+bool parse_load(const std::string& text, std::string& path, Se3& placement) {
+  const size_t open = text.find('('), close = text.find(')');
+  if (open == std::string::npos || close == std::string::npos || close < open) return false;
+  std::vector<std::string> params;
+  std::string inside = text.substr(open + 1, close - open - 1);
+  for (size_t start = 0;;) {
+    const size_t comma = inside.find(',', start);
+    std::string param = inside.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    while (!param.empty() && (param.front() == ' ' || param.front() == '\t')) param.erase(0, 1);
+    while (!param.empty() && (param.back() == ' ' || param.back() == '\t')) param.pop_back();
+    params.push_back(param);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (params[0].size() < 3 || params[0].front() != '"' || params[0].back() != '"') return false;
+  path = params[0].substr(1, params[0].size() - 2);
+  for (char& c : path)
+    if (c == '\\') c = '/';
+  Vec3 t, tu;
+  for (size_t i = 1; i < params.size(); ++i) {
+    const std::string& p = params[i];
+    if (p.compare(0, 3, "t=[") == 0) {
+      if (!parse_triple(p.substr(3), false, t)) return false;
+    } else if (p.compare(0, 4, "tu=[") == 0) {
+      if (!parse_triple(p.substr(4), true, tu)) return false;
+    } else {
+      return false;
+    }
+  }
+  placement = Se3::from_theta_u(t, tu);
+  return true;
+}
+
+/// The key=value parameters after a record's numbers, read as ViSP does: from the first token
+/// after the numbers up to the first token that is not a known parameter; "quoted" names may
+/// hold spaces.
+bool parse_attributes(const TextLine& line, size_t first, PrimitiveAttributes& out, std::string& problem) {
+  for (size_t i = first; i < line.tokens.size(); ++i) {
+    const std::string& token = line.tokens[i];
+    const size_t eq = token.find('=');
+    if (eq == std::string::npos) return true;
+    const std::string key = token.substr(0, eq);
+    std::string value = token.substr(eq + 1);
+    if (key == "name") {
+      if (value.size() > 1 && value.front() == '"') {
+        value.erase(0, 1);
+        while (value.find('"') == std::string::npos && i + 1 < line.tokens.size()) value += " " + line.tokens[++i];
+        value = value.substr(0, value.find('"'));
+      }
+      out.name = value;
+    } else if (key == "useLod") {
+      if (value != "true" && value != "false" && value != "1" && value != "0") {
+        problem = "useLod= takes true, false, 1 or 0, not '" + value + "'";
+        return false;
+      }
+      out.use_lod = value == "true" || value == "1";
+    } else if (key == "minLineLengthThreshold" || key == "minPolygonAreaThreshold") {
+      real number(0);
+      if (!parse_real(value, number)) {
+        problem = key + "= takes a number, not '" + value + "'";
+        return false;
+      }
+      (key == "minLineLengthThreshold" ? out.min_line_length : out.min_polygon_area) = number;
+    } else {
+      return true;  // ViSP stops at the first word that is not one of its parameters
+    }
+  }
+  return true;
+}
+
+/// Orders segments given in any orientation into one closed loop of vertices.
+bool chain_loop(std::vector<std::pair<int, int>> segments, std::vector<int>& loop) {
+  if (segments.size() < 3) return false;
+  loop.push_back(segments[0].first);
+  int tail = segments[0].second;
+  segments.erase(segments.begin());
+  while (!segments.empty()) {
+    bool found = false;
+    for (size_t i = 0; i < segments.size() && !found; ++i) {
+      if (segments[i].first == tail || segments[i].second == tail) {
+        loop.push_back(tail);
+        tail = segments[i].first == tail ? segments[i].second : segments[i].first;
+        segments.erase(segments.begin() + static_cast<std::ptrdiff_t>(i));
+        found = true;
+      }
+    }
+    if (!found) return false;
+  }
+  return tail == loop[0];
+}
+
+/// Appends `part` to `into`, moving its point indices past the points `into` already has.
+void append_part(const Polygons& part, Polygons& into) {
+  const int offset = static_cast<int>(into.vertices.size());
+  into.vertices.insert(into.vertices.end(), part.vertices.begin(), part.vertices.end());
+  for (std::vector<int> face : part.faces) {
+    for (int& v : face) v += offset;
+    into.faces.push_back(face);
+  }
+  into.face_attributes.insert(into.face_attributes.end(), part.face_attributes.begin(), part.face_attributes.end());
+  for (const auto& line : part.lines) into.lines.emplace_back(line.first + offset, line.second + offset);
+  into.line_attributes.insert(into.line_attributes.end(), part.line_attributes.begin(), part.line_attributes.end());
+  for (CylinderRecord c : part.cylinders) {
+    c.axis_a += offset;
+    c.axis_b += offset;
+    into.cylinders.push_back(c);
+  }
+  for (CircleRecord c : part.circles) {
+    c.centre += offset;
+    c.plane_a += offset;
+    c.plane_b += offset;
+    into.circles.push_back(c);
+  }
+}
+
+class CaoLoader;
+
+/// Reads one .cao file's records in order, keeping the position for error messages. Point
+/// indices are local to the file; load() includes are read first and merged before its own.
+class CaoFileReader {
+ public:
+  CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file)
+      : path_(std::move(path)), lines_(std::move(lines)), model_from_file_(model_from_file) {}
+
+  Result<Polygons> read(CaoLoader& loader, std::vector<IncludeStep>& chain);
+
+ private:
+  bool read_points(int version, Polygons& out);
+  bool read_lines(std::vector<std::pair<int, int>>& lines, std::vector<PrimitiveAttributes>& attributes);
+  bool read_faces_from_lines(const std::vector<std::pair<int, int>>& lines, std::vector<bool>& used, Polygons& out);
+  bool read_faces_from_points(Polygons& out);
+  bool read_cylinders(Polygons& out);
+  bool read_circles(Polygons& out);
+
+  bool fail(const TextLine& line, const std::string& message) {
+    error_ = Error{path_, line.number, message};
+    return false;
+  }
+  const TextLine* next(const std::string& what) {
+    if (pos_ >= lines_.size()) {
+      error_ = Error{path_, lines_.empty() ? 0 : lines_.back().number, "file ends where " + what + " was expected"};
+      return nullptr;
+    }
+    return &lines_[pos_++];
+  }
+  bool read_count(const std::string& section, long& count) {
+    const TextLine* line = next("the number of " + section);
+    if (!line) return false;
+    if (!parse_int(line->tokens[0], count) || count < 0 || count > 100000)
+      return fail(*line, "expected the number of " + section + ", found '" + line->tokens[0] + "'");
+    return true;
+  }
+  /// A count line, then that many records, each read by read_record(line).
+  template <class ReadRecord>
+  bool read_section(const std::string& section, const std::string& record, ReadRecord read_record) {
+    long count = 0;
+    if (!read_count(section, count)) return false;
+    for (long k = 0; k < count; ++k) {
+      const TextLine* line = next(record);
+      if (!line || !read_record(*line)) return false;
+    }
+    return true;
+  }
+  /// "n i_1 ... i_n [parameters]", each index in [0, limit).
+  bool read_indexed(const TextLine& line, long limit, const std::string& what, std::vector<long>& indices,
+                    PrimitiveAttributes& attributes) {
+    long n = 0;
+    if (!parse_int(line.tokens[0], n) || n < 2 || static_cast<size_t>(n) + 1 > line.tokens.size())
+      return fail(line, "expected: n " + what + "_1 ... " + what + "_n");
+    for (long i = 1; i <= n; ++i) {
+      long index = 0;
+      if (!parse_int(line.tokens[i], index)) return fail(line, "expected a " + what + " index, found '" + line.tokens[i] + "'");
+      if (index < 0 || index >= limit)
+        return fail(line, "a " + what + " index " + std::to_string(index) + " outside 0.." + std::to_string(limit - 1));
+      indices.push_back(index);
+    }
+    return attributes_of(line, static_cast<size_t>(n) + 1, attributes);
+  }
+  bool attributes_of(const TextLine& line, size_t first, PrimitiveAttributes& attributes) {
+    std::string problem;
+    return parse_attributes(line, first, attributes, problem) || fail(line, problem);
+  }
+  bool point_index(const TextLine& line, size_t token, long& index) {
+    if (token >= line.tokens.size() || !parse_int(line.tokens[token], index)) return false;
+    return index >= 0 && index < points_;
+  }
+
+  std::string path_;
+  std::vector<TextLine> lines_;
+  Se3 model_from_file_;
+  size_t pos_ = 0;
+  long points_ = 0;
+  Error error_;
+};
+
+/// Loads a file and its includes: the chain of load() lines being read (for cycles and
+/// messages) and every file loaded so far (ViSP loads a file once per model).
+class CaoLoader {
+ public:
+  Result<Polygons> load(const std::string& path, const Se3& model_from_file, std::vector<IncludeStep>& chain) {
+    const std::string name = normalized_path(path);
+    std::vector<TextLine> lines;
+    auto read = read_text_lines(path, lines);
+    if (!read.ok()) {
+      if (chain.empty()) return read.error();
+      return Error{chain.back().file, chain.back().line,
+                   "cannot read the included file " + path + ": " + read.error().message +
+                       " (include chain: " + chain_text(chain, path) + ")"};
+    }
+    loaded_.push_back(name);
+    ancestors_.push_back(name);
+    Result<Polygons> result = CaoFileReader(path, std::move(lines), model_from_file).read(*this, chain);
+    ancestors_.pop_back();
+    return result;
+  }
+  bool is_ancestor(const std::string& path) const { return contains(ancestors_, normalized_path(path)); }
+  bool was_loaded(const std::string& path) const { return contains(loaded_, normalized_path(path)); }
+
+ private:
+  static bool contains(const std::vector<std::string>& names, const std::string& name) {
+    for (const std::string& n : names)
+      if (n == name) return true;
+    return false;
+  }
+  std::vector<std::string> loaded_, ancestors_;
+};
+
+Result<Polygons> CaoFileReader::read(CaoLoader& loader, std::vector<IncludeStep>& chain) {
+  Polygons out;
+  int version = 1;
+  const std::string& head = lines_.empty() ? std::string() : lines_[0].tokens[0];
+  if (head.size() == 2 && head[0] == 'V' && head[1] >= '0' && head[1] <= '9') {
+    version = head[1] - '0';
+    ++pos_;
+  }
+  bool included = false;
+  while (pos_ < lines_.size() && (lines_[pos_].tokens[0][0] == 'l' || lines_[pos_].tokens[0][0] == 'L')) {
+    const TextLine& line = lines_[pos_++];
+    std::string relative;
+    Se3 placement;
+    if (line.tokens[0].compare(0, 4, "load") != 0 || !parse_load(line.text, relative, placement))
+      return Error{path_, line.number, "expected load(\"file.cao\") with optional t=[x;y;z] and tu=[a;b;c]"};
+    const std::string path = relative[0] == '/' ? relative : parent_directory(path_) + relative;
+    if (loader.is_ancestor(path))
+      return Error{path_, line.number, "load() makes a cycle: " + chain_text(chain, path_ + ":" + std::to_string(line.number) + " -> " + path)};
+    if (loader.was_loaded(path)) continue;  // as ViSP: a file already in the model is not loaded again
+    chain.push_back({path_, line.number});
+    Result<Polygons> part = loader.load(path, model_from_file_ * placement, chain);
+    chain.pop_back();
+    if (!part.ok()) return part.error();
+    append_part(part.value(), out);
+    included = true;
+  }
+
+  Polygons own;
+  if (!read_points(version, own)) return error_;
+  if (points_ == 0 && !included) return Error{path_, lines_[pos_ - 1].number, "the file defines no 3D point"};
+  std::vector<std::pair<int, int>> lines;
+  std::vector<PrimitiveAttributes> line_attributes;
+  if (!read_lines(lines, line_attributes)) return error_;
+  std::vector<bool> used(lines.size(), false);
+  if (!read_faces_from_lines(lines, used, own)) return error_;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (!used[i]) {
+      own.lines.push_back(lines[i]);
+      own.line_attributes.push_back(line_attributes[i]);
+    }
+  if (!read_faces_from_points(own)) return error_;
+  // Older files stop after the faces; otherwise the cylinder and circle counts follow.
+  if (pos_ < lines_.size() && !read_cylinders(own)) return error_;
+  if (pos_ < lines_.size() && !read_circles(own)) return error_;
+  if (pos_ < lines_.size()) return Error{path_, lines_[pos_].number, "unexpected content after the circles section"};
+  append_part(own, out);
+  return out;
+}
+
+bool CaoFileReader::read_points(int version, Polygons& out) {
+  if (!read_count("3D points", points_)) return false;
+  const size_t needed = version == 2 ? 5 : 3;
+  for (long k = 0; k < points_; ++k) {
+    const TextLine* line = next("a 3D point");
+    if (!line) return false;
+    Vec3 p;
+    if (line->tokens.size() < needed || !parse_real(line->tokens[0], p.x) || !parse_real(line->tokens[1], p.y) ||
+        !parse_real(line->tokens[2], p.z))
+      return fail(*line, "expected a 3D point: X Y Z" + std::string(version == 2 ? " i j" : ""));
+    out.vertices.push_back(model_from_file_ * p);
+  }
+  return true;
+}
+
+bool CaoFileReader::read_lines(std::vector<std::pair<int, int>>& lines, std::vector<PrimitiveAttributes>& attributes) {
+  return read_section("3D lines", "a 3D line", [&](const TextLine& line) {
+    long a = 0, b = 0;
+    if (!point_index(line, 0, a) || !point_index(line, 1, b))
+      return fail(line, "expected a 3D line: two point indices in 0.." + std::to_string(points_ - 1));
+    PrimitiveAttributes attribute;
+    if (!attributes_of(line, 2, attribute)) return false;
+    lines.emplace_back(static_cast<int>(a), static_cast<int>(b));
+    attributes.push_back(attribute);
+    return true;
+  });
+}
+
+bool CaoFileReader::read_faces_from_lines(const std::vector<std::pair<int, int>>& lines, std::vector<bool>& used,
+                                          Polygons& out) {
+  return read_section("faces from lines", "a face from lines", [&](const TextLine& line) {
+    std::vector<long> indices;
+    PrimitiveAttributes attributes;
+    if (!read_indexed(line, static_cast<long>(lines.size()), "line", indices, attributes)) return false;
+    std::vector<std::pair<int, int>> segments;
+    for (long index : indices) {
+      segments.push_back(lines[index]);
+      used[index] = true;
+    }
+    std::vector<int> loop;
+    if (!chain_loop(segments, loop)) return fail(line, "the face's lines do not form one closed loop");
+    out.faces.push_back(loop);
+    out.face_attributes.push_back(attributes);
+    return true;
+  });
+}
+
+bool CaoFileReader::read_faces_from_points(Polygons& out) {
+  return read_section("faces from points", "a face from points", [&](const TextLine& line) {
+    std::vector<long> indices;
+    PrimitiveAttributes attributes;
+    if (!read_indexed(line, points_, "point", indices, attributes)) return false;
+    out.faces.emplace_back(indices.begin(), indices.end());
+    out.face_attributes.push_back(attributes);
+    return true;
+  });
+}
+
+bool CaoFileReader::read_cylinders(Polygons& out) {
+  return read_section("3D cylinders", "a 3D cylinder", [&](const TextLine& line) {
+    long a = 0, b = 0;
+    CylinderRecord record;
+    if (!point_index(line, 0, a) || !point_index(line, 1, b) || line.tokens.size() < 3 ||
+        !parse_real(line.tokens[2], record.radius) || !(record.radius > real(0)))
+      return fail(line, "expected a cylinder: two axis point indices in 0.." + std::to_string(points_ - 1) +
+                            " and a positive radius");
+    record.axis_a = static_cast<int>(a);
+    record.axis_b = static_cast<int>(b);
+    out.cylinders.push_back(record);
+    return attributes_of(line, 3, out.cylinders.back().attributes);
+  });
+}
+
+bool CaoFileReader::read_circles(Polygons& out) {
+  return read_section("3D circles", "a 3D circle", [&](const TextLine& line) {
+    long c = 0, a = 0, b = 0;
+    CircleRecord record;
+    if (!parse_real(line.tokens[0], record.radius) || !(record.radius > real(0)) || !point_index(line, 1, c) ||
+        !point_index(line, 2, a) || !point_index(line, 3, b))
+      return fail(line, "expected a circle: a positive radius, then the centre and two more points of its plane, "
+                        "as indices in 0.." + std::to_string(points_ - 1));
+    record.centre = static_cast<int>(c);
+    record.plane_a = static_cast<int>(a);
+    record.plane_b = static_cast<int>(b);
+    out.circles.push_back(record);
+    return attributes_of(line, 4, out.circles.back().attributes);
+  });
+}
+
+}  // namespace
+
+Result<Polygons> read_cao(const std::string& path) {
+  CaoLoader loader;
+  std::vector<IncludeStep> chain;
+  return loader.load(path, Se3(), chain);
+}
+
+}  // namespace edgetrack

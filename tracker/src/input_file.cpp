@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Bounded reading of input files.
+#include "edgetrack/input_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+namespace edgetrack {
+namespace {
+
+/// An Error when `path` is not a regular file of at most max_bytes; its size otherwise.
+Result<std::size_t> checked_size(const std::string& path, std::size_t max_bytes) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) {
+    const std::string why = error && error != std::errc::no_such_file_or_directory ? ": " + error.message() : "";
+    return Error{path, 0, "no such file" + why};
+  }
+  if (std::filesystem::is_directory(status)) return Error{path, 0, "is a directory, not a file"};
+  if (!std::filesystem::is_regular_file(status)) return Error{path, 0, "is not a regular file (a device or a pipe?)"};
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) return Error{path, 0, "cannot read its size: " + error.message()};
+  if (size > max_bytes)
+    return Error{path, 0, "is " + std::to_string(size) + " bytes, more than the " + std::to_string(max_bytes) +
+                              " an input of this kind may have"};
+  return static_cast<std::size_t>(size);
+}
+
+template <class Bytes>
+Result<Bytes> read_whole(const std::string& path, std::size_t max_bytes) {
+  auto size = checked_size(path, max_bytes);
+  if (!size.ok()) return size.error();
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return Error{path, 0, "cannot open the file"};
+  Bytes bytes(size.value(), 0);
+  const std::size_t got = bytes.empty() ? 0 : std::fread(&bytes[0], 1, bytes.size(), file);
+  // One more byte read shows a file that grew after its size was taken.
+  const bool grew = std::fgetc(file) != EOF;
+  const bool failed = std::ferror(file) != 0;
+  std::fclose(file);
+  if (failed || got != bytes.size()) return Error{path, 0, "read failed"};
+  if (grew) return Error{path, 0, "the file changed while it was read"};
+  return bytes;
+}
+
+}  // namespace
+
+Result<std::vector<uint8_t>> read_input_file(const std::string& path, std::size_t max_bytes) {
+  return read_whole<std::vector<uint8_t>>(path, max_bytes);
+}
+
+Result<std::string> read_input_text(const std::string& path, std::size_t max_bytes) {
+  return read_whole<std::string>(path, max_bytes);
+}
+
+}  // namespace edgetrack

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracking status rule.
+#include "edgetrack/tracking_status.h"
+
+namespace edgetrack {
+
+const char* status_name(TrackingStatus status) {
+  switch (status) {
+    case TrackingStatus::kTracked: return "tracked";
+    case TrackingStatus::kUncertain: return "uncertain";
+    case TrackingStatus::kLost: return "lost";
+  }
+  return "?";
+}
+
+const char* reason_name(StatusReason reason) {
+  switch (reason) {
+    case StatusReason::kNone: return "none";
+    case StatusReason::kTooFewVisible: return "too few visible control points";
+    case StatusReason::kPoseFailed: return "pose not solved";
+    case StatusReason::kChanceResiduals: return "residuals at chance level";
+    case StatusReason::kFewMatched: return "under half the visible points matched";
+    case StatusReason::kManyOutliers: return "half or more of the matches outliers";
+    case StatusReason::kLooseFit: return "residual scale above a tracked frame's";
+    case StatusReason::kNotReacquired: return "not found again after a loss";
+    case StatusReason::kLargeCorrection: return "pose moved farther than the search range";
+    case StatusReason::kSaturated: return "fixed-point saturation";
+  }
+  return "?";
+}
+
+FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points) {
+  const auto lost = [](StatusReason reason) { return FrameStatus{TrackingStatus::kLost, reason}; };
+  const auto uncertain = [&m](StatusReason reason) {
+    return m.after_loss ? FrameStatus{TrackingStatus::kLost, StatusReason::kNotReacquired}
+                        : FrameStatus{TrackingStatus::kUncertain, reason};
+  };
+  if (m.visible < min_points) return lost(StatusReason::kTooFewVisible);
+  if (!m.solved || m.kept < min_points) return lost(StatusReason::kPoseFailed);
+  real lost_scale = params.lost_range_share * real(static_cast<int>(m.range));
+  if (lost_scale < params.lost_scale_floor_px) lost_scale = params.lost_scale_floor_px;
+  if (m.residual_scale > lost_scale) return lost(StatusReason::kChanceResiduals);
+  if (m.matched_share < params.min_matched_share) return uncertain(StatusReason::kFewMatched);
+  if (m.inlier_share < params.min_inlier_share) return uncertain(StatusReason::kManyOutliers);
+  if (m.residual_scale > params.tracked_scale_px) return uncertain(StatusReason::kLooseFit);
+  if (m.correction_px > real(static_cast<int>(m.range))) return uncertain(StatusReason::kLargeCorrection);
+  if (m.saturations > 0) return uncertain(StatusReason::kSaturated);
+  return {TrackingStatus::kTracked, StatusReason::kNone};
+}
+
+}  // namespace edgetrack
