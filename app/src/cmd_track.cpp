@@ -113,6 +113,8 @@ int track_main(int argc, char** argv) {
       {"--overlay", true, "write overlay frames (wireframe and cone) into this directory"},
       {"--video", true, "write the overlay as a video (host)"},
       {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
+      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 3): the strongest edge along the "
+                             "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -136,9 +138,13 @@ int track_main(int argc, char** argv) {
   auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);
   auto factor = a.integer("--downscale", 1);
   auto raw = a.size("--raw-size", source_options.raw_width, source_options.raw_height);
-  for (const Error* bad : {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error()})
+  auto hypotheses = a.integer("--hypotheses", edgetrack::TrackerParams{}.hypotheses);
+  for (const Error* bad :
+       {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error(), &hypotheses.error()})
     if (!bad->message.empty()) return report("track", *bad) + 1;
   if (factor.value() < 1 || factor.value() > 8) return report("track", {"", 0, "--downscale must be 1..8"}) + 1;
+  if (hypotheses.value() < 1 || hypotheses.value() > edgetrack::kMaxHypotheses)
+    return report("track", {"", 0, "--hypotheses must be 1.." + std::to_string(edgetrack::kMaxHypotheses)}) + 1;
   source_options.first = first.value();
   source_options.last = last.value();
   source_options.camera_device = device.value();
@@ -149,6 +155,7 @@ int track_main(int argc, char** argv) {
   auto config = read_configuration(a.text("--camera"), a.text("--config"));
   if (!config.ok()) return report("track", config.error());
   edgetrack::TrackerParams params = config.value().config.params;
+  params.hypotheses = hypotheses.value();
   downscale_settings(params, factor.value());  // in pixels of the input frames
   auto source = open_frame_source(source_options);
   if (!source.ok()) return report("track", source.error());

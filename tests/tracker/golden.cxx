@@ -9,8 +9,9 @@ using namespace edgetrack;
 
 namespace edgetrack_test {
 
-std::string golden_name(Scene scene, int subsample) {
-  const std::string speed = subsample > 1 ? "_fast" + std::to_string(subsample) : "";
+std::string golden_name(Scene scene, int subsample, int hypotheses) {
+  std::string speed = subsample > 1 ? "_fast" + std::to_string(subsample) : "";
+  if (hypotheses != edgetrack::TrackerParams{}.hypotheses) speed += "_k" + std::to_string(hypotheses);
   const char* base = scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder";
   return base + speed + "_double_positions.txt";
 }

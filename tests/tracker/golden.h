@@ -15,8 +15,9 @@ constexpr int kGoldenFrames = 60;
 constexpr int kFastFrames = 48;
 constexpr int kFastSpeedUp = 5;
 
-/// The scene's golden file; `subsample` > 1 names the sped-up sequence's.
-std::string golden_name(Scene scene, int subsample = 1);
+/// The scene's golden file; `subsample` > 1 names the sped-up sequence's, `hypotheses` = 1 the
+/// single-hypothesis run's (edge hypotheses per control point, TrackerParams).
+std::string golden_name(Scene scene, int subsample = 1, int hypotheses = edgetrack::TrackerParams{}.hypotheses);
 bool write_golden(const std::string& path, const SequenceRun& run);
 /// The positions in the file, or an empty vector when it cannot be read.
 std::vector<edgetrack::Vec3> read_golden(const std::string& path);

@@ -3,7 +3,8 @@
 /// analytic Jacobian recovers the true pose from a start 1 degree and 3 mm off; with 10 % of the
 /// matches moved 3 pixels off, the Tukey-weighted robust solves flag them and still recovers the
 /// pose, which the paper's plain solve does not; robust rounds of one LM step each land where
-/// rounds run to convergence do.
+/// rounds run to convergence do; given the true edge as a second hypothesis, the robust rounds
+/// choose it.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -52,7 +53,12 @@ static void test_pose_solver() {
   ids.render(cube, start);
   const std::vector<ControlPoint> points = keep_visible(sample_control_points(cube, camera, start, {}), ids);
   std::vector<EdgeMatch> matches;
-  for (const ControlPoint& p : points) matches.push_back({p, camera.project(truth * p.point_in_model), false});
+  for (const ControlPoint& p : points) {
+    EdgeMatch m;
+    m.point = p;
+    m.found = camera.project(truth * p.point_in_model);
+    matches.push_back(m);
+  }
   TEST("there are about 80 visible control points", matches.size() >= 60 && matches.size() <= 100, true);
   const PoseParams params;
   std::vector<EdgeMatch> clean = matches;
@@ -97,6 +103,24 @@ static void test_pose_solver() {
        true);
   TEST_NEAR("and give the same pose (mm)", position_error_mm(robust.camera_from_model, full.camera_from_model), 0,
             tol_mm);
+  // The same moved matches keeping the true edge as a second hypothesis: the robust rounds
+  // choose it, so no match is left out and the pose comes back.
+  std::vector<EdgeMatch> two_hypotheses = spoiled;
+  for (size_t i = 0; i < two_hypotheses.size(); i += 10) {
+    two_hypotheses[i].alternatives[0] = matches[i].found;
+    two_hypotheses[i].alternative_count = 1;
+  }
+  const PoseSolution chosen = solve_pose(two_hypotheses, camera, start, params);
+  int chose_true = 0, chose_other = 0;
+  for (size_t i = 0; i < two_hypotheses.size(); ++i) {
+    if (i % 10 == 0) chose_true += two_hypotheses[i].chosen == 1;
+    else chose_other += two_hypotheses[i].chosen != 0;
+  }
+  TEST_EQUAL("with the true edge as a second hypothesis, every moved match uses it", chose_true, moved);
+  TEST_EQUAL("and every other match keeps its only one", chose_other, 0);
+  TEST_EQUAL("no match is left out", chosen.outliers, 0);
+  TEST_NEAR("the pose from the nearest hypotheses is right (mm)", position_error_mm(chosen.camera_from_model, truth),
+            0, 10 * tol_mm);
   PoseParams plain = params;
   plain.tukey_c = real(0);
   std::vector<EdgeMatch> spoiled_again = spoiled;

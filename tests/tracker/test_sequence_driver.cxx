@@ -14,6 +14,7 @@ DECLARE(test_status_covered);
 DECLARE(test_status_leaving_view);
 DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
+DECLARE(test_hypotheses);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -28,6 +29,7 @@ void register_tests() {
   REGISTER(test_status_leaving_view);
   REGISTER(test_visp_config);
   REGISTER(test_tracker_faces);
+  REGISTER(test_hypotheses);
 }
 
 DEFINE_MAIN

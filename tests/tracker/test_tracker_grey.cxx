@@ -21,8 +21,11 @@ bool same_matches(const std::vector<EdgeMatch>& a, const std::vector<EdgeMatch>&
   for (size_t k = 0; k < a.size(); ++k) {
     const EdgeMatch &x = a[k], &y = b[k];
     if (x.point.edge != y.point.edge || x.point.pixel.x != y.point.pixel.x || x.point.pixel.y != y.point.pixel.y ||
-        x.found.x != y.found.x || x.found.y != y.found.y || x.outlier != y.outlier)
+        x.found.x != y.found.x || x.found.y != y.found.y || x.outlier != y.outlier ||
+        x.alternative_count != y.alternative_count || x.chosen != y.chosen)
       return false;
+    for (int h = 0; h < x.alternative_count; ++h)
+      if (x.alternatives[h].x != y.alternatives[h].x || x.alternatives[h].y != y.alternatives[h].y) return false;
   }
   return true;
 }

@@ -58,12 +58,121 @@ real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
   return real(u);
 }
 
+/// The sub-pixel edge point near the site's pixel (site.i, site.j), which the caller has set.
+/// The site keeps a whole pixel of its path, and which pixel that is (which row, for a mostly
+/// vertical edge) flips with a rounding-size move of the control point. So the edge is located
+/// on the three lines of the axis nearest to the normal around that pixel (a ridge each), and
+/// the match is where the control point's normal line crosses the polyline through those
+/// ridges: a continuous function of the control point.
+Vec2 refined_edge_point(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point) {
+  using std::fabs;
+  const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
+  const int u_site = along_x ? site.get_j() : site.get_i(), v_site = along_x ? site.get_i() : site.get_j();
+  const AxisLikelihood likelihood(site, grey, me, along_x);
+  const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
+  const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
+  static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
+  real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
+  int peak[3];
+  for (int k = 0; k < 3; ++k) {
+    ridge[k] = ridge_on_line(likelihood, u_site, v_site + k - 1, peak[k]);
+    side[k] = nu * (real(v_site + k - 1) - v0) - nv * (ridge[k] - u0);
+  }
+  real u = ridge[1], v = real(v_site);
+  // Both neighbours must show the same edge (at least half the peak) for the polyline.
+  if (2 * peak[0] >= peak[1] && 2 * peak[2] >= peak[1]) {
+    // side grows with v along a straight edge (d side / dv = 1 / nu): take the segment on
+    // the side of the middle line where side changes sign. Where it does not (lines that
+    // show different edges), the crossing is clamped to the segment's ends, which keeps the
+    // match next to the site's pixel and still continuous.
+    const int k = (side[1] > real(0)) == (nu > real(0)) ? 0 : 1;
+    const real span = side[k] - side[k + 1];
+    if (span != real(0)) {
+      real t = side[k] / span;
+      if (t < real(0)) t = real(0);
+      if (t > real(1)) t = real(1);
+      u = ridge[k] + t * (ridge[k + 1] - ridge[k]);
+      v = real(v_site + k - 1) + t;
+    }
+  }
+  return along_x ? Vec2{u, v} : Vec2{v, u};
+}
+
+/// A local maximum of the likelihood on a site's search path, at a whole pixel.
+struct PathPeak {
+  int likelihood = 0;
+  int i = 0;
+  int j = 0;
+};
+
+/// The strongest local maxima (at most `capacity`, strongest first, ties in path order) of the
+/// likelihood |2 conv| above the threshold on the site's search path: the 2 range + 1
+/// candidates pixel + k normal, |k| <= range, truncated to whole pixels, as vpMeSite::track
+/// visits them but with the unit normal in place of (cos alpha, sin alpha), which saves a sine
+/// and a cosine per point and differs by rounding only. A path end counts as a maximum when
+/// its one neighbour is lower, as the site's search keeps an end. Returns the count.
+int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+               PathPeak* peaks, int capacity) {
+  const int range = static_cast<int>(me.getRange());
+  const real threshold = me.getThreshold();
+  auto likelihood_at = [&](int k, int& i, int& j) {
+    i = static_cast<int>(point.pixel.y + k * point.normal.y);
+    j = static_cast<int>(point.pixel.x + k * point.normal.x);
+    site.i = i;
+    site.j = j;
+    const int conv = static_cast<int>(site.convolution(grey, &me));
+    return conv < 0 ? -2 * conv : 2 * conv;
+  };
+  int count = 0;
+  int i = 0, j = 0, next_i = 0, next_j = 0;
+  int before = -1, current = likelihood_at(-range, i, j);
+  for (int k = -range; k <= range; ++k) {
+    const int after = k < range ? likelihood_at(k + 1, next_i, next_j) : -1;
+    if (current > before && current >= after && real(current) > threshold) {
+      int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
+      while (at > 0 && peaks[at - 1].likelihood < current) {
+        if (at < capacity) peaks[at] = peaks[at - 1];
+        --at;
+      }
+      if (at < capacity) peaks[at] = {current, i, j};
+    }
+    before = current;
+    current = after;
+    i = next_i;
+    j = next_j;
+  }
+  return count;
+}
+
+/// Adds the weaker local maxima of the site's path as alternatives of `match` (up to
+/// hypotheses - 1), each refined as the strongest is. Only maxima of at least half the
+/// strongest likelihood compete (weaker ones are mostly noise and background texture, which
+/// the pose step would otherwise fit), and a maximum whose refined point lies within a pixel
+/// (along the normal) of one already kept is the same edge reached again.
+void add_alternatives(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, int hypotheses,
+                      EdgeMatch& match) {
+  using std::fabs;
+  PathPeak peaks[kMaxHypotheses + 1];
+  const int strongest_i = site.get_i(), strongest_j = site.get_j();
+  const int count = path_peaks(site, grey, me, match.point, peaks, hypotheses + 1);
+  for (int p = 0; p < count && match.alternative_count < hypotheses - 1; ++p) {
+    if (2 * peaks[p].likelihood < peaks[0].likelihood) break;  // too weak to compete
+    if (peaks[p].i == strongest_i && peaks[p].j == strongest_j) continue;
+    site.i = peaks[p].i;
+    site.j = peaks[p].j;
+    const Vec2 q = refined_edge_point(site, grey, me, match.point);
+    bool known = fabs(dot(match.point.normal, q - match.found)) < real(1);
+    for (int a = 0; a < match.alternative_count && !known; ++a)
+      known = fabs(dot(match.point.normal, q - match.alternatives[a])) < real(1);
+    if (!known) match.alternatives[match.alternative_count++] = q;
+  }
+}
+
 }  // namespace
 
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me) {
+                                           const vpMe& me, int hypotheses) {
   using std::atan2;
-  using std::fabs;
   std::vector<EdgeMatch> matches;
   matches.reserve(points.size());
   for (const ControlPoint& point : points) {
@@ -71,42 +180,16 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
     site.init(point.pixel.y, point.pixel.x, atan2(point.normal.y, point.normal.x));
     site.track(grey, &me, false);
     if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
-    // The site keeps a whole pixel of its path, and which pixel that is (which row, for a
-    // mostly vertical edge) flips with a rounding-size move of the control point. So the edge
-    // is located on the three lines of the axis nearest to the normal around that pixel (a
-    // ridge each), and the match is where the control point's normal line crosses the
-    // polyline through those ridges: a continuous function of the control point.
-    const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
-    const AxisLikelihood likelihood(site, grey, me, along_x);
-    const int u_site = along_x ? site.get_j() : site.get_i(), v_site = along_x ? site.get_i() : site.get_j();
-    const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
-    const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
-    static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
-    real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
-    int peak[3];
-    for (int k = 0; k < 3; ++k) {
-      ridge[k] = ridge_on_line(likelihood, u_site, v_site + k - 1, peak[k]);
-      side[k] = nu * (real(v_site + k - 1) - v0) - nv * (ridge[k] - u0);
+    const int strongest_i = site.get_i(), strongest_j = site.get_j();
+    matches.emplace_back();
+    EdgeMatch& match = matches.back();
+    match.point = point;
+    match.found = refined_edge_point(site, grey, me, point);
+    if (hypotheses > 1) {
+      site.i = strongest_i;
+      site.j = strongest_j;
+      add_alternatives(site, grey, me, hypotheses, match);
     }
-    real u = ridge[1], v = real(v_site);
-    // Both neighbours must show the same edge (at least half the peak) for the polyline.
-    if (2 * peak[0] >= peak[1] && 2 * peak[2] >= peak[1]) {
-      // side grows with v along a straight edge (d side / dv = 1 / nu): take the segment on
-      // the side of the middle line where side changes sign. Where it does not (lines that
-      // show different edges), the crossing is clamped to the segment's ends, which keeps the
-      // match next to the site's pixel and still continuous.
-      const int k = (side[1] > real(0)) == (nu > real(0)) ? 0 : 1;
-      const real span = side[k] - side[k + 1];
-      if (span != real(0)) {
-        real t = side[k] / span;
-        if (t < real(0)) t = real(0);
-        if (t > real(1)) t = real(1);
-        u = ridge[k] + t * (ridge[k + 1] - ridge[k]);
-        v = real(v_site + k - 1) + t;
-      }
-    }
-    const Vec2 found = along_x ? Vec2{u, v} : Vec2{v, u};
-    matches.push_back({point, found, false});
   }
   return matches;
 }

@@ -52,7 +52,7 @@ class PointToLineResiduals : public vnl_least_squares_function {
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
       const Vec2& n = m.point.normal;
       unweighted_[i] = {n.x * camera.px, n.y * camera.py,
-                        n.x * (camera.u0 - m.found.x) + n.y * (camera.v0 - m.found.y)};
+                        n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
       coefficients_[i] = weights.empty() ? unweighted_[i] : weights[i] * unweighted_[i];
     }
   }
@@ -106,14 +106,13 @@ class PointToLineResiduals : public vnl_least_squares_function {
     }
   }
 
-  /// The unweighted distances |delta_i| at x, for the next round's weights.
-  void distances(const vnl_vector<real>& x, std::vector<real>& out) {
-    using std::fabs;
+  /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
+  void signed_distances(const vnl_vector<real>& x, std::vector<real>& out) {
     if (!evaluated_at(x)) {
       vnl_vector<real> fx(get_number_of_residuals());
       f(x, fx);
     }
-    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = fabs(dot(unweighted_[i], moved_[i]) / moved_[i].z);
+    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = dot(unweighted_[i], moved_[i]) / moved_[i].z;
   }
 
   Se3 pose(const vnl_vector<real>& x) const {
@@ -156,7 +155,7 @@ bool keeps_best_estimate(int code) {
 
 /// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
 /// residual evaluations; adds its counts to `solution`. With `distances`, also the unweighted
-/// point-to-line distances at the new pose.
+/// signed point-to-line distances at the new pose.
 bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
                 const Se3& start, const PoseParams& params, int max_evaluations, PoseSolution& solution, Se3& pose,
                 std::vector<real>* distances) {
@@ -174,24 +173,58 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   solution.end_rms = lm.get_end_error();
   if (!(ok || keeps_best_estimate(lm.get_failure_code())) || residuals.failure) return false;
   pose = residuals.pose(x);
-  if (distances) residuals.distances(x, *distances);
+  if (distances) residuals.signed_distances(x, *distances);
   return !residuals.failure;
 }
 
+/// The median of |values| (the distances may be signed).
 real median_of(std::vector<real> values) {
+  using std::fabs;
+  for (real& v : values) v = fabs(v);
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   return values[mid];
+}
+
+/// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
+/// match's used() point) were measured; `distances` become the signed distances to the chosen
+/// ones. The lines through the hypotheses are parallel (one normal), so
+/// delta_h = delta + n . (used - h): no projection per hypothesis.
+void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+  using std::fabs;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    EdgeMatch& m = matches[i];
+    if (m.alternative_count == 0) continue;
+    const Vec2 used = m.used();
+    const real delta = distances[i];
+    real nearest = delta;
+    for (int h = 0; h <= m.alternative_count; ++h) {
+      const real d = delta + dot(m.point.normal, used - (h == 0 ? m.found : m.alternatives[h - 1]));
+      if (fabs(d) < fabs(nearest)) {
+        nearest = d;
+        m.chosen = h;
+      }
+    }
+    distances[i] = nearest;
+  }
+}
+
+/// The signed distances to each match's strongest edge (`found`), from those to its used() one.
+void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+  for (size_t i = 0; i < matches.size(); ++i)
+    if (matches[i].chosen != 0) distances[i] = distances[i] + dot(matches[i].point.normal, matches[i].used() - matches[i].found);
 }
 
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params) {
+  using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   if (matches.size() < needed) return solution;
+  for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real> distances(matches.size()), weights;
   Se3 pose;
@@ -206,11 +239,12 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
 
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
+    choose_nearest_hypotheses(matches, distances);
     real c = params.tukey_c * real(1.4826) * median_of(distances);
     if (c < params.tukey_floor) c = params.tukey_floor;
     solution.outliers = 0;
     for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
-      const real u = distances[i] / c;
+      const real u = fabs(distances[i]) / c;
       matches[i].outlier = u >= real(1);
       weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
       solution.outliers += matches[i].outlier;
@@ -221,6 +255,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     solution.camera_from_model = pose;
   }
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
+  // The scale reads the strongest edges: on an image unrelated to the model the nearest of
+  // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
+  to_strongest(matches, distances);
   solution.residual_scale = real(1.4826) * median_of(distances);
   return solution;
 }

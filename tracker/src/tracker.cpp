@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "edgetrack/me_search_box.h"
 #include "edgetrack/tracker_params.h"
@@ -120,7 +121,7 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, me_);
+  matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

@@ -64,6 +64,9 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
   if (faces.min_polygon_area < real(0))
     return problem("lod/min_polygon_area_threshold", "at least 0 square pixels",
                    static_cast<double>(faces.min_polygon_area));
+  if (params.hypotheses < 1 || params.hypotheses > kMaxHypotheses)
+    return SettingProblem{"", "the number of edge hypotheses must be 1 to " + std::to_string(kMaxHypotheses) + ", not " +
+                                  number(params.hypotheses)};
   if (params.border < 0) return SettingProblem{"", "the image border must be at least 0 pixels, not " + number(params.border)};
   return std::nullopt;
 }

@@ -48,12 +48,13 @@ int main(int argc, char* argv[]) {
 
   const std::string windows = argc > 3 ? argv[3] : "frame", grey = argc > 4 ? argv[4] : "on-demand";
   if ((windows != "frame" && windows != "steps") || (grey != "on-demand" && grey != "whole")) {
-    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole]\n");
+    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses]\n");
     return 2;
   }
   const bool per_step = windows == "steps", whole = grey == "whole";
   TrackerParams params;
   params.grey = whole ? GreyScaling::kWholeFrame : GreyScaling::kOnDemand;
+  if (argc > 5) params.hypotheses = std::atoi(argv[5]);
   Result<Tracker> tracker = Tracker::create(model.value(), camera, truth[0], params);
   if (!tracker.ok()) {
     std::fprintf(stderr, "%s\n", tracker.error().text().c_str());
@@ -63,11 +64,11 @@ int main(int argc, char* argv[]) {
   if (per_step) tracker.value().set_step_observer(&count_each_step);
   std::printf(
       "# real=%s scene=%s frames=%d grey=%s windows=%s camera=%dx%d px=%g py=%g robust_rounds=%d "
-      "robust_evaluations=%d\n",
+      "robust_evaluations=%d hypotheses=%d\n",
               real_name(), scene == Scene::kCube ? "cube" : "toy", frames, grey.c_str(),
               per_step ? "4 per frame (visible edges, grey, ME, pose)" : "1 per frame", camera.width, camera.height,
               static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds,
-              params.pose.robust_evaluations);
+              params.pose.robust_evaluations, params.hypotheses);
   std::printf(
       "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels\n");
   for (int k = 0; k < frames; ++k) {

@@ -146,7 +146,10 @@ case $name in
   mbt_cube_and_cylinder_all_frames)
     # ViSP's cube_and_cylinder.cao on its mbt/cube sequence (the tube beside the cube is in view
     # in every frame): no frame lost, the silhouettes add their points, and the cube stays where
-    # the cube-only model puts it (measured: 3.7 px at most, frame 190; overlays checked by eye).
+    # the cube-only model puts it (measured: 3.7 px at most, frame 190, with one edge hypothesis;
+    # 6.0 px, frame 192, with the default three, where a face is seen edge-on and the printed
+    # inner edges compete; the cube-only overlays of frame 192 with one and three both sit on the
+    # cube; overlays checked by eye).
     track_cube --init-pose "$mbt/cube.0.pos" --last 217 --config "$mbt/cube.xml" --poses "$work/cube.csv" ||
       fail "track cube.cao failed"
     "$edgetrack" track --model "$mbt/cube_and_cylinder.cao" --camera "$mbt/cube.xml" --config "$mbt/cube.xml" \
@@ -158,7 +161,7 @@ case $name in
     less 30 "$more" || fail "the cylinder's silhouettes add fewer than 30 points per frame"
     read -r worst at <<<"$(vertex_offset "$work/cube.csv" "$work/both.csv")"
     echo "largest mean corner offset with the cylinder vs the cube alone: $worst px at frame $at"
-    less "$worst" 6.0 || fail "the cylinder moves the cube's pose by 6 px or more (frame $at)" ;;
+    less "$worst" 7.0 || fail "the cylinder moves the cube's pose by 7 px or more (frame $at)" ;;
   mbt_cube_config_applied)
     # cube.xml alone applies all its blocks (ViSP's loadConfigFile): its step 4 samples about 2.5
     # times the points of a camera-only file (ViSP's default step 10), and the run stays with
@@ -192,6 +195,24 @@ case $name in
     lost=$(awk -F, 'NR > 1 && $10 == "lost" && $8 == 0' "$work/blind.csv" | wc -l)
     echo "threshold 1e8: $lost of 40 frames lost with no point matched"
     [ "$lost" -eq 40 ] || fail "the edge threshold of --config is not applied" ;;
+  mbt_cube_hypotheses)
+    # All 218 frames with cube.xml (its face angles and clipping take out edges seen almost
+    # edge-on, hence 85 points), one edge hypothesis against three: the cube's
+    # printed inner edges give many control points a second edge within the range; with three
+    # the pose step keeps more points as inliers, loses no frame, and puts the corners within
+    # 8 px (640x480) of the single-hypothesis pose in every frame (measured: 1.8 px in double at
+    # frame 185; there is no ground truth to say which is nearer).
+    for k in 1 3; do
+      track_cube --init-pose "$mbt/cube.0.pos" --config "$mbt/cube.xml" --last 217 --hypotheses $k \
+        --poses "$work/k$k.csv" || fail "track --hypotheses $k failed"
+      check_poses "$work/k$k.csv" 218 85
+    done
+    inliers() { awk -F, 'NR > 1 { s += $8; n++ } END { printf "%.1f", s / n }' "$1"; }
+    one=$(inliers "$work/k1.csv") three=$(inliers "$work/k3.csv")
+    read -r worst at <<<"$(vertex_offset "$work/k1.csv" "$work/k3.csv")"
+    echo "points kept per frame: $one with 1 hypothesis, $three with 3; largest mean corner offset $worst px at frame $at"
+    less "$one" "$three" || fail "3 hypotheses keep no more points than 1"
+    less "$worst" 8.0 || fail "3 hypotheses move the pose by 8 px or more (frame $at)" ;;
   error_bad_config)
     sed 's:<size>5<:<size>1<:' "$mbt/cube.xml" >"$work/bad.xml"
     expect_error "$work/bad.xml:5: <ecm><mask><size> must be 3..15 pixels, not 1" \

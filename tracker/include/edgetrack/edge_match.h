@@ -6,10 +6,20 @@
 
 namespace edgetrack {
 
+/// The most edge hypotheses a control point keeps (moving_edges.h), `found` included.
+constexpr int kMaxHypotheses = 4;
+
 struct EdgeMatch {
   ControlPoint point;
-  Vec2 found;            ///< the image edge point q_i, pixels
+  Vec2 found;            ///< the image edge point q_i: the strongest edge along the normal, pixels
   bool outlier = false;  ///< set by the pose step when it gave the match no weight (ViSP's M_ESTIMATOR)
+  /// Other local maxima of the moving-edge likelihood along the normal, weaker ones later.
+  Vec2 alternatives[kMaxHypotheses - 1];
+  int alternative_count = 0;
+  /// The hypothesis the pose step's last robust round used: 0 is `found`, a + 1 alternatives[a].
+  int chosen = 0;
+
+  const Vec2& used() const { return chosen == 0 ? found : alternatives[chosen - 1]; }
 };
 
 }  // namespace edgetrack

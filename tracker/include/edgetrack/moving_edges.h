@@ -33,7 +33,16 @@ constexpr int kRefinementReachAcross = 1;
 /// which jumps when a rounding-size move of the control point changes the truncated path, this
 /// moves continuously with the control point, so double and fixed-point builds agree. Returns
 /// only the matched points (state NO_SUPPRESSION).
+///
+/// With `hypotheses` > 1 (at most kMaxHypotheses; Wuest et al.'s multiple-hypothesis edge
+/// tracking, ViSP 3.7's vpMeSite::trackMultipleHypotheses), each match also keeps up to
+/// hypotheses - 1 alternatives: the next strongest local maxima of the likelihood along the
+/// site's path that pass the threshold and reach half the strongest one's likelihood, each
+/// refined as above, a pixel or more apart along the normal. (ViSP keeps the strongest
+/// candidates of the path, which are mostly the neighbours of one peak.) The pose step chooses
+/// among them (EdgeMatch::chosen); `found` is the strongest, so hypotheses = 1 is the
+/// single-hypothesis search.
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me);
+                                           const vpMe& me, int hypotheses = 1);
 
 }  // namespace edgetrack

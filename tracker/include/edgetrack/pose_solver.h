@@ -58,8 +58,9 @@ struct PoseSolution {
   int evaluations = 0;
   int iterations = 0;  ///< Jacobian evaluations (MINPACK's iterations), both solves
   int outliers = 0;    ///< matches given weight 0 in the last robust solve
-  /// 1.4826 * median |delta| over all matches at the returned pose, pixels: the robust scale
-  /// of the residuals (the standard deviation for normal residuals), for the tracking status.
+  /// 1.4826 * median |delta| over all matches at the returned pose, to each match's strongest
+  /// edge (`found`), pixels: the robust scale of the residuals (the standard deviation for
+  /// normal residuals), for the tracking status.
   real residual_scale{0};
   bool solved = false;  ///< false when there were too few points or LM reported a failure
 };
@@ -70,6 +71,13 @@ struct PoseSolution {
 /// `start`, so x = 0 is the start and the rotation needs no constraint. LM sees v and the
 /// camera-frame points in millimetres, where S40.23's products stay in their fast range.
 /// Matches given weight 0 by the last robust solve are returned with `outlier` set.
+/// Matches with alternatives (several edge hypotheses, moving_edges.h): the first solve uses
+/// each match's `found` (its strongest edge, so a wrong hypothesis pulls it no more than with
+/// one hypothesis); before each robust round, each match takes the hypothesis nearest to the
+/// projection at the previous solve's pose, and its weight follows that distance. Choosing per
+/// round, not per LM evaluation, keeps the residuals a smooth function within each solve, as
+/// MINPACK's trust region assumes; a robust round is one LM step, so the choice follows every
+/// step after the first solve. Each match's `chosen` says which hypothesis the last round used.
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params);
 

@@ -41,6 +41,10 @@ struct TrackerParams {
   FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
   int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
   PoseParams pose;
+  /// Edge hypotheses each control point keeps (1 to kMaxHypotheses): the strongest edge along
+  /// its normal and the next local maxima of the likelihood; the pose step uses the one nearest
+  /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match.
+  int hypotheses = 3;
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it
   StatusParams status;  ///< the tracked / uncertain / lost rule
