@@ -38,7 +38,7 @@ std::string data_dir();
 edgetrack::Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
                                        const std::string& source);
 
-/// Writes the camera as a ViSP-style XML file with its image size (read_visp_camera_xml reads it).
+/// Writes the camera as a ViSP-style XML file with its image size (read_camera in configuration.h reads it).
 edgetrack::Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera);
 
 }  // namespace edgetrack_app
