@@ -113,7 +113,7 @@ int track_main(int argc, char** argv) {
       {"--overlay", true, "write overlay frames (wireframe and cone) into this directory"},
       {"--video", true, "write the overlay as a video (host)"},
       {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
-      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 3): the strongest edge along the "
+      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
