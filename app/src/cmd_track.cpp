@@ -201,6 +201,10 @@ int track_main(int argc, char** argv) {
       std::error_code error;
       std::filesystem::create_directories(overlay_dir, error);
       if (error) return report("track", {overlay_dir, 0, "cannot create the directory: " + error.message()});
+      // Removed when the run ends well: a directory of frames that still holds it is incomplete.
+      auto marked = write_text_file(overlay_dir + "/" + kIncompleteMarker,
+                                    "edgetrack track is writing these frames, or stopped before the end\n");
+      if (!marked.ok()) return report("track", marked.error());
     }
     auto made = make_overlay(camera);
     if (!made.ok()) return report("track", made.error());
@@ -279,6 +283,7 @@ int track_main(int argc, char** argv) {
     auto closed = video->close();
     if (!closed.ok()) return report("track", closed.error());
   }
+  if (!overlay_dir.empty()) std::remove((overlay_dir + "/" + kIncompleteMarker).c_str());
   print_notes(config.value().notes);  // after a run that went through: an error stays one line
   print_table1(totals);
   return 0;

@@ -31,6 +31,11 @@ std::vector<Command> comparison_commands();
 /// Prints "edgetrack <command>: <error>" to stderr and returns the exit status for a failure.
 int report(const std::string& command, const edgetrack::Error& error);
 
+/// The file `track --overlay DIR` keeps in DIR while the run is not complete.
+constexpr const char* kIncompleteMarker = "INCOMPLETE";
+/// Writes `text` to `path`, or an Error naming it.
+edgetrack::Result<bool> write_text_file(const std::string& path, const std::string& text);
+
 /// The data folder of the source tree (data/), for default models.
 std::string data_dir();
 
