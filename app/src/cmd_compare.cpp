@@ -9,13 +9,13 @@
 
 #include "args.h"
 #include "commands.h"
+#include "configuration.h"
 #include "downscaled_tracking.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
 #include "evaluation.h"
 #include "frame_source.h"
-#include "me_config.h"
 #include "pose_table.h"
 #include "visp_mbt_process.h"
 
@@ -47,17 +47,17 @@ struct Setup {
   int factor = 1;
 };
 
-/// Our tracker's camera and settings from the XML that ViSP's loadConfigFile reads: <camera>,
-/// and <ecm> when present (without it both trackers keep their own defaults). The one place to
-/// change when the single ViSP XML reader replaces these two.
+/// Our tracker's camera and settings from the XML that ViSP's loadConfigFile reads (the same
+/// reader as track's --camera); the image size from the file or else width x height.
 Result<bool> ours_from_visp_xml(const std::string& xml, int width, int height, PinholeCamera& camera,
                                 edgetrack::TrackerParams& params) {
-  auto read = edgetrack::read_visp_camera_xml(xml, width, height);
+  auto read = read_configuration(xml, "");
   if (!read.ok()) return read.error();
-  camera = read.value();
-  auto ecm = read_ecm_config(xml);
-  if (!ecm.ok()) return ecm.error().message.rfind("no <ecm>", 0) == 0 ? Result<bool>(true) : ecm.error();
-  return apply_ecm_config(ecm.value(), xml, params);
+  camera = read.value().config.camera;
+  if (camera.width == 0) camera.width = width;
+  if (camera.height == 0) camera.height = height;
+  params = read.value().config.params;
+  return true;
 }
 
 /// Whether our tracker lost the frame, as its status says.

@@ -7,6 +7,7 @@
 
 #include "args.h"
 #include "commands.h"
+#include "configuration.h"
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/model_io.h"
@@ -43,7 +44,7 @@ int edgeid_main(int argc, char** argv) {
   if (!size.ok()) return report("edgeid", size.error()) + 1;
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("edgeid", model.error());
-  auto camera = edgetrack::read_visp_camera_xml(a.text("--camera"), width, height);
+  auto camera = read_camera(a.text("--camera"), width, height);
   if (!camera.ok()) return report("edgeid", camera.error());
   auto rows = read_pose_table(a.text("--poses"), kPosesHeader);
   if (!rows.ok()) rows = read_pose_table(a.text("--poses"), kTruthHeader);

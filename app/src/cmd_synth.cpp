@@ -11,6 +11,7 @@
 
 #include "args.h"
 #include "commands.h"
+#include "configuration.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/scene_extras.h"
@@ -120,7 +121,7 @@ Result<SynthOptions> read_options(const Args& a) {
     int width = 320, height = 240;
     auto size = a.size("--size", width, height);
     if (!size.ok()) return size.error();
-    auto read = edgetrack::read_visp_camera_xml(a.text("--camera"), width, height);
+    auto read = read_camera(a.text("--camera"), width, height);
     if (!read.ok()) return read.error();
     o.camera = read.value();
   }

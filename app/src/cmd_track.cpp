@@ -11,13 +11,13 @@
 #include "args.h"
 #include "click_init.h"
 #include "commands.h"
+#include "configuration.h"
 #include "downscaled_tracking.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
 #include "frame_source.h"
 #include "host_io.h"
-#include "me_config.h"
 #include "overlay.h"
 #include "pose_from_points.h"
 #include "pose_table.h"
@@ -34,7 +34,7 @@ namespace {
 const char* const kSynopsis =
     "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt | --init-click I.init "
     "[--save-clicks P.txt] [--save-pose P.pos]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
-    "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config ME.xml]";
+    "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config X.xml]";
 
 /// Per-step totals over a run, for the Table 1 summary.
 struct RunTotals {
@@ -95,7 +95,7 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
 int track_main(int argc, char** argv) {
   const std::vector<OptionSpec> specs = {
       {"--model", true, "model, ViSP .cao or Wavefront .obj (metres)"},
-      {"--camera", true, "ViSP XML with a <camera> block (px, py, u0, v0)"},
+      {"--camera", true, "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)"},
       {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
       {"--init", true, "ViSP .init file of 3D points, with --init-points: initial pose from points"},
       {"--init-points", true, "image positions of the .init points, one 'u v' line each (pixels)"},
@@ -112,9 +112,8 @@ int track_main(int argc, char** argv) {
       {"--poses", true, "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status)"},
       {"--overlay", true, "write overlay frames (wireframe and cone) into this directory"},
       {"--video", true, "write the overlay as a video (host)"},
-      {"--config", true, "ViSP XML whose <ecm> block sets the moving-edge threshold, mask size and number, range and "
-                         "sample step (mu1/mu2 are read, not used: no contrast is kept between frames)"},
-      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 3): the strongest edge along the "
+      {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
+      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
@@ -153,37 +152,31 @@ int track_main(int argc, char** argv) {
   // Inputs, each checked with a message naming its file.
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("track", model.error());
-  edgetrack::TrackerParams params;
+  auto config = read_configuration(a.text("--camera"), a.text("--config"));
+  if (!config.ok()) return report("track", config.error());
+  edgetrack::TrackerParams params = config.value().config.params;
   params.hypotheses = hypotheses.value();
-  if (a.has("--config")) {
-    auto ecm = read_ecm_config(a.text("--config"));
-    if (!ecm.ok()) return report("track", ecm.error());
-    auto applied = apply_ecm_config(ecm.value(), a.text("--config"), params);
-    if (!applied.ok()) return report("track", applied.error());
-    if (ecm.value().mu1 >= 0 || ecm.value().mu2 >= 0)
-      std::fprintf(stderr, "note: %s: <mu1>/<mu2> are not used: sites are re-sampled every frame, so there is no "
-                   "previous contrast to compare with\n", a.text("--config").c_str());
-  }
-  downscale_settings(params, factor.value());  // the defaults or <ecm>, in pixels of the input frames
+  downscale_settings(params, factor.value());  // in pixels of the input frames
   auto source = open_frame_source(source_options);
   if (!source.ok()) return report("track", source.error());
   Frame frame;
   auto got = source.value()->next(frame);
   if (!got.ok()) return report("track", got.error());
   const int full_width = frame.image.width, full_height = frame.image.height;
-  auto camera_read = edgetrack::read_visp_camera_xml(a.text("--camera"), full_width, full_height);
-  if (!camera_read.ok()) return report("track", camera_read.error());
-  if (camera_read.value().width != full_width || camera_read.value().height != full_height)
+  PinholeCamera full_camera = config.value().config.camera;
+  if (full_camera.width == 0) full_camera.width = full_width;
+  if (full_camera.height == 0) full_camera.height = full_height;
+  if (full_camera.width != full_width || full_camera.height != full_height)
     return report("track", {frame.name, 0,
                             "image size " + std::to_string(full_width) + "x" + std::to_string(full_height) +
-                                " does not match the camera's " + std::to_string(camera_read.value().width) + "x" +
-                                std::to_string(camera_read.value().height) + " (" + a.text("--camera") + ")"});
-  const PinholeCamera camera = downscaled(camera_read.value(), factor.value());
+                                " does not match the camera's " + std::to_string(full_camera.width) + "x" +
+                                std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
+  const PinholeCamera camera = downscaled(full_camera, factor.value());
   const std::string init_source =
       from_points ? a.text("--init-points") : clicked ? a.text("--init-click") : a.text("--init-pose");
-  auto initial = from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), camera_read.value())
+  auto initial = from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
                  : clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
-                                                  frame.image, camera_read.value(), model.value())
+                                                  frame.image, full_camera, model.value())
                              : edgetrack::read_pos(a.text("--init-pose"));
   if (!initial.ok()) return report("track", initial.error());
   auto in_front = check_in_front(model.value(), initial.value(), init_source);
@@ -208,6 +201,10 @@ int track_main(int argc, char** argv) {
       std::error_code error;
       std::filesystem::create_directories(overlay_dir, error);
       if (error) return report("track", {overlay_dir, 0, "cannot create the directory: " + error.message()});
+      // Removed when the run ends well: a directory of frames that still holds it is incomplete.
+      auto marked = write_text_file(overlay_dir + "/" + kIncompleteMarker,
+                                    "edgetrack track is writing these frames, or stopped before the end\n");
+      if (!marked.ok()) return report("track", marked.error());
     }
     auto made = make_overlay(camera);
     if (!made.ok()) return report("track", made.error());
@@ -286,6 +283,8 @@ int track_main(int argc, char** argv) {
     auto closed = video->close();
     if (!closed.ok()) return report("track", closed.error());
   }
+  if (!overlay_dir.empty()) std::remove((overlay_dir + "/" + kIncompleteMarker).c_str());
+  print_notes(config.value().notes);  // after a run that went through: an error stays one line
   print_table1(totals);
   return 0;
 }

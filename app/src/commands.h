@@ -31,6 +31,11 @@ std::vector<Command> comparison_commands();
 /// Prints "edgetrack <command>: <error>" to stderr and returns the exit status for a failure.
 int report(const std::string& command, const edgetrack::Error& error);
 
+/// The file `track --overlay DIR` keeps in DIR while the run is not complete.
+constexpr const char* kIncompleteMarker = "INCOMPLETE";
+/// Writes `text` to `path`, or an Error naming it.
+edgetrack::Result<bool> write_text_file(const std::string& path, const std::string& text);
+
 /// The data folder of the source tree (data/), for default models.
 std::string data_dir();
 
@@ -38,7 +43,7 @@ std::string data_dir();
 edgetrack::Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
                                        const std::string& source);
 
-/// Writes the camera as a ViSP-style XML file with its image size (read_visp_camera_xml reads it).
+/// Writes the camera as a ViSP-style XML file with its image size (read_camera in configuration.h reads it).
 edgetrack::Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera);
 
 }  // namespace edgetrack_app

@@ -41,6 +41,15 @@ Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::
   return true;
 }
 
+Result<bool> write_text_file(const std::string& path, const std::string& text) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return Error{path, 0, "cannot open the file for writing"};
+  bool ok = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  ok = (std::fclose(file) == 0) && ok;
+  if (!ok) return Error{path, 0, "write failed"};
+  return true;
+}
+
 Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera) {
   std::FILE* file = std::fopen(path.c_str(), "w");
   if (!file) return Error{path, 0, "cannot open the file for writing"};

@@ -11,9 +11,10 @@ namespace edgetrack_app {
 /// The camera for a frame `factor` times smaller: the same rays land at (u + 0.5) / factor - 0.5.
 edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int factor);
 
-/// The sample step and the range are pixels of the input frames, like the camera: scaled with
-/// it, the smaller frames get the same control points on the object and a search that reaches no
-/// farther into the scene (rounded down, at least 1 pixel).
+/// The sample step, the range and the level-of-detail length are pixels of the input frames,
+/// like the camera: scaled with it (the area by factor^2), the smaller frames get the same
+/// control points on the object and a search that reaches no farther into the scene (the range
+/// rounded down, at least 1 pixel).
 void downscale_settings(edgetrack::TrackerParams& params, int factor);
 
 }  // namespace edgetrack_app

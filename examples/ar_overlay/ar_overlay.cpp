@@ -16,7 +16,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "edgetrack/model_io.h"
-#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/visp_config.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
 
@@ -100,13 +100,17 @@ int main(int argc, char** argv) {
   if (!capture.isOpened() || !capture.read(bgr) || bgr.type() != CV_8UC3) return fail(source + ": no colour frame to read");
 
   auto model = edgetrack::load_model(argv[1]);
-  auto camera = edgetrack::read_visp_camera_xml(argv[2], bgr.cols, bgr.rows);
+  edgetrack::TrackerConfig config;  // the camera and settings of a ViSP XML, as loadConfigFile reads it
+  auto read = edgetrack::apply_visp_config(argv[2], config);
   auto initial = edgetrack::read_pos(argv[3]);
-  for (const edgetrack::Error* e : {&model.error(), &camera.error(), &initial.error()})
+  for (const edgetrack::Error* e : {&model.error(), &read.error(), &initial.error()})
     if (!e->message.empty()) return fail(e->text());
-  auto tracker = edgetrack::Tracker::create(model.value(), camera.value(), initial.value(), edgetrack::TrackerParams{});
+  if (config.camera.width == 0) config.camera.width = bgr.cols;
+  if (config.camera.height == 0) config.camera.height = bgr.rows;
+  const edgetrack::PinholeCamera& camera = config.camera;
+  auto tracker = edgetrack::Tracker::create(model.value(), camera, initial.value(), config.params);
   if (!tracker.ok()) return fail(tracker.error().text());
-  const Cone cone = cone_on_top_face(model.value(), View(initial.value(), camera.value()));
+  const Cone cone = cone_on_top_face(model.value(), View(initial.value(), camera));
   cv::VideoWriter video;
   const bool images = argc > 5 && std::string(argv[5]).find('%') != std::string::npos;
   if (argc > 5 && !(images ? video.open(argv[5], cv::CAP_IMAGES, 0, 15, bgr.size())
@@ -120,7 +124,7 @@ int main(int argc, char** argv) {
       rgb565[i] = uint16_t(((p[2] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[0] >> 3));
     }
     const edgetrack::FrameResult r = tracker.value().track(rgb565.data());
-    const View view(r.camera_from_model, camera.value());
+    const View view(r.camera_from_model, camera);
     for (const edgetrack::Edge& e : model.value().edges)
       cv::line(bgr, view.pixel(to_cv(model.value().vertices[e.a])), view.pixel(to_cv(model.value().vertices[e.b])),
                cv::Scalar(0, 255, 0), 1, cv::LINE_AA);

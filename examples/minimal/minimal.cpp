@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "edgetrack/model_io.h"
-#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/visp_config.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
 
@@ -38,11 +38,14 @@ int main(int argc, char** argv) {
   if (!read_frame(argv[4], first, width, height, frame)) return std::fprintf(stderr, "minimal: no 8-bit PGM frame %d\n", first), 1;
 
   auto model = edgetrack::load_model(argv[1]);
-  auto camera = edgetrack::read_visp_camera_xml(argv[2], width, height);
+  edgetrack::TrackerConfig config;  // the camera and settings of a ViSP XML, as loadConfigFile reads it
+  auto read = edgetrack::apply_visp_config(argv[2], config);
   auto initial = edgetrack::read_pos(argv[3]);
-  for (const edgetrack::Error* e : {&model.error(), &camera.error(), &initial.error()})
+  for (const edgetrack::Error* e : {&model.error(), &read.error(), &initial.error()})
     if (!e->message.empty()) return std::fprintf(stderr, "minimal: %s\n", e->text().c_str()), 1;
-  auto tracker = edgetrack::Tracker::create(model.value(), camera.value(), initial.value(), edgetrack::TrackerParams{});
+  if (config.camera.width == 0) config.camera.width = width;
+  if (config.camera.height == 0) config.camera.height = height;
+  auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
   if (!tracker.ok()) return std::fprintf(stderr, "minimal: %s\n", tracker.error().text().c_str()), 1;
 
   for (int index = first; index <= last && read_frame(argv[4], index, width, height, frame); ++index) {

@@ -15,8 +15,11 @@ constexpr int kGoldenFrames = 60;
 constexpr int kFastFrames = 48;
 constexpr int kFastSpeedUp = 5;
 
-/// The scene's golden file; `subsample` > 1 names the sped-up sequence's, `hypotheses` = 1 the
-/// single-hypothesis run's (edge hypotheses per control point, TrackerParams).
+/// The edge hypotheses of the golden runs besides the default single one.
+constexpr int kMultipleHypotheses = 3;
+
+/// The scene's golden file; `subsample` > 1 names the sped-up sequence's, `hypotheses` other
+/// than the default (TrackerParams) that run's.
 std::string golden_name(Scene scene, int subsample = 1, int hypotheses = edgetrack::TrackerParams{}.hypotheses);
 bool write_golden(const std::string& path, const SequenceRun& run);
 /// The positions in the file, or an empty vector when it cannot be read.

@@ -12,6 +12,8 @@ DECLARE(test_fast_motion_wood_toy);
 DECLARE(test_status_noise_and_flat);
 DECLARE(test_status_covered);
 DECLARE(test_status_leaving_view);
+DECLARE(test_visp_config);
+DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
 
 void register_tests() {
@@ -25,6 +27,8 @@ void register_tests() {
   REGISTER(test_status_noise_and_flat);
   REGISTER(test_status_covered);
   REGISTER(test_status_leaving_view);
+  REGISTER(test_visp_config);
+  REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
 }
 

@@ -5,7 +5,7 @@
 /// beside it and a circle on the cylinder's end within 1 mm (both silhouettes and the circle
 /// matched in every frame), reports no frame lost, never samples a hidden edge, and each `real`
 /// stays near the double run stored in tests/tracker/golden (S40.23 within 0.1 mm in every frame),
-/// with the default edge hypotheses and, cube and toy, with one.
+/// with the default single edge hypothesis and, cube and toy, with three.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -29,14 +29,13 @@ void report(const SequenceRun& run) {
               run.mean_position_error_mm, run.mean_points_sampled, double(matched) / run.frames.size(), outliers);
 }
 
-/// The single-hypothesis tracker (the paper's) against its golden file, which predates multiple
-/// hypotheses: hypotheses = 1 reproduces it.
-void compare_single_hypothesis_with_golden(Scene scene) {
-  TrackerParams single;
-  single.hypotheses = 1;
-  const SequenceRun run = run_sequence(scene, kGoldenFrames, false, single);
-  TEST("the single-hypothesis run runs", run.loaded, true);
-  if (run.loaded) compare_with_golden(golden_name(scene, 1, 1), run);
+/// The tracker with three edge hypotheses per control point against its own golden file.
+void compare_multiple_hypotheses_with_golden(Scene scene) {
+  TrackerParams multiple;
+  multiple.hypotheses = kMultipleHypotheses;
+  const SequenceRun run = run_sequence(scene, kGoldenFrames, false, multiple);
+  TEST("the multiple-hypothesis run runs", run.loaded, true);
+  if (run.loaded) compare_with_golden(golden_name(scene, 1, kMultipleHypotheses), run);
 }
 
 }  // namespace
@@ -62,7 +61,7 @@ static void test_tracking_cube() {
   TEST_NEAR("mean camera position error on the cube is below 1 mm", run.mean_position_error_mm, 0, 1.0);
   TEST_EQUAL("no frame is reported lost", count_status(run, TrackingStatus::kLost), 0);
   compare_with_golden(golden_name(Scene::kCube), run);
-  compare_single_hypothesis_with_golden(Scene::kCube);
+  compare_multiple_hypotheses_with_golden(Scene::kCube);
 }
 
 static void test_tracking_wood_toy() {
@@ -76,7 +75,7 @@ static void test_tracking_wood_toy() {
   TEST_NEAR("mean camera position error on the wood toy is below 2 mm", run.mean_position_error_mm, 0, 2.0);
   TEST_EQUAL("no frame is reported lost", count_status(run, TrackingStatus::kLost), 0);
   compare_with_golden(golden_name(Scene::kWoodToy), run);
-  compare_single_hypothesis_with_golden(Scene::kWoodToy);
+  compare_multiple_hypotheses_with_golden(Scene::kWoodToy);
 }
 
 /// Cylinder silhouettes and a circle tracked with the cube: every frame solved, silhouette and

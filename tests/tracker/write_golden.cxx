@@ -32,11 +32,11 @@ int main(int argc, char* argv[]) {
                   run.mean_position_error_mm);
     }
   }
-  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {  // the single-hypothesis runs
-    edgetrack::TrackerParams single;
-    single.hypotheses = 1;
-    const SequenceRun run = run_sequence(scene, kGoldenFrames, false, single);
-    const std::string path = std::string(argv[1]) + "/" + golden_name(scene, 1, 1);
+  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {  // the multiple-hypothesis runs
+    edgetrack::TrackerParams multiple;
+    multiple.hypotheses = kMultipleHypotheses;
+    const SequenceRun run = run_sequence(scene, kGoldenFrames, false, multiple);
+    const std::string path = std::string(argv[1]) + "/" + golden_name(scene, 1, kMultipleHypotheses);
     if (!run.loaded || !write_golden(path, run)) {
       std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
       return 1;

@@ -9,9 +9,6 @@
 namespace edgetrack {
 namespace {
 
-/// Only the part of an edge at least this far in front of the camera is sampled (metres).
-const real kNear = real(0.01);
-
 ControlPoint make_point(int primitive, const Vec3& point_in_model, const Vec2& pixel, const Vec2& direction) {
   ControlPoint point;
   point.edge = primitive;
@@ -28,26 +25,28 @@ struct Window {
   bool contains(const Vec2& p) const { return p.x >= lo_x && p.x <= hi_x && p.y >= lo_y && p.y <= hi_y; }
 };
 
-/// Equation (1) on the 3D segment a-b (model frame) of primitive `primitive`.
+/// Equation (1) on the part in view of the 3D segment a-b (model frame) of primitive `primitive`.
 void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
-                    const real& step, const Window& window, std::vector<ControlPoint>& points) {
+                    const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
   using std::floor;
   Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
-  if (ca.z < kNear && cb.z < kNear) return;
-  if (ca.z < kNear || cb.z < kNear) {  // keep the part in front of the near plane
-    const real s = (kNear - ca.z) / (cb.z - ca.z);
-    if (ca.z < kNear) {
-      a = a + s * (b - a);
-      ca = ca + s * (cb - ca);
-    } else {
-      b = a + s * (b - a);
-      cb = ca + s * (cb - ca);
+  real t0, t1;
+  if (!clip_to_view(ca, cb, camera, params.clipping, t0, t1)) return;
+  if (t0 > real(0) || t1 < real(1)) {  // keep the part in view
+    const Vec3 a0 = a, ca0 = ca;
+    if (t0 > real(0)) {
+      a = a0 + t0 * (b - a0);
+      ca = ca0 + t0 * (cb - ca0);
+    }
+    if (t1 < real(1)) {
+      b = a0 + t1 * (b - a0);
+      cb = ca0 + t1 * (cb - ca0);
     }
   }
   const Vec2 pa = camera.project(ca), pb = camera.project(cb);
   const Vec2 d = pb - pa;
   const real length = norm(d);
-  const int n = static_cast<int>(floor(length / step));  // equation (1)
+  const int n = static_cast<int>(floor(length / params.step));  // equation (1)
   if (n <= 0) return;
   const Vec2 direction{d.x / length, d.y / length};
   const real wa = real(1) / ca.z, wb = real(1) / cb.z;
@@ -65,17 +64,17 @@ void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, 
 /// Control points every `step` pixels of the circle's projected rim polygon, each moved out to
 /// the true circle, with the direction of the projected ellipse's tangent there.
 void sample_circle(const Circle& circle, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
-                   const real& step, const Window& window, std::vector<ControlPoint>& points) {
+                   const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
   using std::floor;
   Vec2 rim[kCircleSides + 1];
   real length(0);
   for (int s = 0; s <= kCircleSides; ++s) {
     const Vec3 p = camera_from_model * circle.rim[s];
-    if (p.z < kNear) return;  // a circle crossing the near plane is not tracked
+    if (p.z < params.clipping.near_distance) return;  // a circle crossing the near plane is not tracked
     rim[s] = camera.project(p);
     if (s > 0) length = length + norm(rim[s] - rim[s - 1]);
   }
-  const int n = static_cast<int>(floor(length / step));
+  const int n = static_cast<int>(floor(length / params.step));
   if (n <= 0) return;
   const Vec3 normal_in_camera = camera_from_model.rotation() * circle.normal;
   const real spacing = length / real(n);
@@ -117,18 +116,18 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
                       real(camera.height - 1 - params.border)};
   for (size_t e = 0; e < model.edges.size(); ++e)
     sample_segment(model.vertices[model.edges[e].a], model.vertices[model.edges[e].b], static_cast<int>(e), camera,
-                   camera_from_model, params.step, window, points);
+                   camera_from_model, params, window, points);
   const Vec3 centre = camera_centre_in_model(camera_from_model);
   for (size_t c = 0; c < model.cylinders.size(); ++c) {
     Vec3 lines[2][2];
     if (!cylinder_generators(model.cylinders[c], centre, lines)) continue;
     for (int k = 0; k < 2; ++k)
       sample_segment(lines[k][0], lines[k][1], cylinder_primitive(model, static_cast<int>(c), k), camera,
-                     camera_from_model, params.step, window, points);
+                     camera_from_model, params, window, points);
   }
   for (size_t k = 0; k < model.circles.size(); ++k)
     sample_circle(model.circles[k], circle_primitive(model, static_cast<int>(k)), camera, camera_from_model,
-                  params.step, window, points);
+                  params, window, points);
   return points;
 }
 

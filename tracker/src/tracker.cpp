@@ -7,6 +7,7 @@
 #include <string>
 
 #include "edgetrack/me_search_box.h"
+#include "edgetrack/tracker_params.h"
 #include "visp3/core/vpImageConvert.h"
 
 namespace edgetrack {
@@ -57,10 +58,8 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
   if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
   if (primitive_count(model) == 0) return Error{"", 0, "the model has no edge, cylinder or circle to track"};
   if (primitive_count(model) > kMaxEdges) return Error{"", 0, "the model has too many primitives for Edge-ID"};
-  if (params.sampling.step <= real(0)) return Error{"", 0, "the sampling step must be positive"};
-  if (params.me.getRange() == 0) return Error{"", 0, "the moving-edge range must be at least 1 pixel"};
-  if (params.hypotheses < 1 || params.hypotheses > kMaxHypotheses)
-    return Error{"", 0, "the number of edge hypotheses must be 1 to " + std::to_string(kMaxHypotheses)};
+  const auto problem = check_tracker_params(params);
+  if (problem) return Error{"", 0, problem->message};
   if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
   return Tracker(model, camera, initial, params);
 }
@@ -70,12 +69,12 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
       camera_(camera),
       params_(params),
       me_(params.me),
+      sampling_(sampling_params(params)),
+      face_visibility_(model),
       camera_from_model_(initial),
       motion_(initial, params.motion),
       edge_ids_(camera),
-      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {
-  me_.setSampleStep(params.sampling.step);
-}
+      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
 
 const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsigned int& converted) {
   if (params_.grey == GreyScaling::kWholeFrame) {
@@ -97,6 +96,7 @@ const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsign
 bool Tracker::reset(const Se3& camera_from_model) {
   if (camera_from_model.translation().z <= real(0)) return false;
   camera_from_model_ = camera_from_model;
+  face_visibility_.reset();
   motion_.reset(camera_from_model);
   return true;
 }
@@ -110,7 +110,10 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
   else edge_ids_.render(model_, camera_from_model_);
-  visible_ = keep_visible(sample_control_points(model_, camera_, camera_from_model_, params_.sampling), edge_ids_);
+  face_visibility_.update(model_, camera_, camera_from_model_, params_.faces);
+  std::vector<ControlPoint> sampled = sample_control_points(model_, camera_, camera_from_model_, sampling_);
+  face_visibility_.keep_tracked(sampled);
+  visible_ = keep_visible(sampled, edge_ids_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);

@@ -64,9 +64,14 @@ case $name in
     expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
       --video "$work/overlay.mp4"
     [ ! -e "$work/overlay.mp4" ] || fail "a failed run left overlay.mp4"
+    expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
+      --overlay "$work/frames"
+    [ -e "$work/frames/INCOMPLETE" ] || fail "a failed run's overlay directory does not say it is incomplete"
     [ -s "$work/overlay.partial.mp4" ] || fail "no overlay.partial.mp4"
-    track --images "$work/seq/image%04d.pgm" --last 2 --video "$work/done.mp4" || fail "track --video failed"
+    track --images "$work/seq/image%04d.pgm" --last 2 --video "$work/done.mp4" --overlay "$work/done" ||
+      fail "track --video failed"
     [ -s "$work/done.mp4" ] && [ ! -e "$work/done.partial.mp4" ] || fail "a complete run did not name its video"
+    [ ! -e "$work/done/INCOMPLETE" ] && [ -e "$work/done/overlay0002.png" ] || fail "a complete overlay directory is marked"
     echo "ok: a video is named only when complete" ;;
   video_refusal_is_one_line)
     expect_error "a video is written as .mp4, .avi, .mkv or .mov, not '.xyz'" track --images "$mbt/cube/image%04d.pgm" \

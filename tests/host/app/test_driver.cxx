@@ -5,7 +5,6 @@ DECLARE(test_image_io);
 DECLARE(test_pose_table);
 DECLARE(test_frame_source);
 DECLARE(test_pose_from_points);
-DECLARE(test_me_config);
 DECLARE(test_guarded);
 
 void register_tests() {
@@ -13,7 +12,6 @@ void register_tests() {
   REGISTER(test_pose_table);
   REGISTER(test_frame_source);
   REGISTER(test_pose_from_points);
-  REGISTER(test_me_config);
   REGISTER(test_guarded);
 }
 

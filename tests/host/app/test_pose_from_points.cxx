@@ -4,6 +4,7 @@
 // points in one plane and too few points are refused.
 #include <cmath>
 
+#include "configuration.h"
 #include "edgetrack/pose_io.h"
 #include "pose_from_points.h"
 #include "testlib/testlib_test.h"
@@ -28,7 +29,7 @@ static void test_pose_from_points() {
   auto points = read_init_points(mbt + "/cube.init");
   TEST("cube.init reads", points.ok(), true);
   auto truth = edgetrack::read_pos(mbt + "/cube.0.pos");
-  auto camera = edgetrack::read_visp_camera_xml(mbt + "/cube.xml", 640, 480);
+  auto camera = edgetrack_app::read_camera(mbt + "/cube.xml", 640, 480);
   if (!points.ok() || !truth.ok() || !camera.ok()) return;
   TEST_EQUAL("cube.init has 4 points", points.value().size(), size_t(4));
   std::vector<Vec2> pixels;

@@ -10,11 +10,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "configuration.h"
 #include "commands.h"
 #include "edgetrack/control_points.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
+#include "edgetrack/tracker_params.h"
 #include "frame_source.h"
 #include "gl_renderer.h"
 #include "testlib/testlib_test.h"
@@ -67,7 +69,7 @@ Figures compare(const edgetrack::EdgeModel& model, const PinholeCamera& camera, 
     soft.render(model, start);
     const edgetrack::EdgeIdBuffer& gl = gl_tracker.value().edge_ids();
     long points = 0, agree = 0;
-    for (const edgetrack::ControlPoint& p : edgetrack::sample_control_points(model, camera, start, params.sampling)) {
+    for (const edgetrack::ControlPoint& p : edgetrack::sample_control_points(model, camera, start, edgetrack::sampling_params(params))) {
       const bool g = gl.shows(p.edge, p.pixel, p.direction);
       ++points;
       f.gl_visible += g;
@@ -123,7 +125,7 @@ void check(const char* name, const Figures& f, int frames, double worst_frame, d
 void real_mbt_cube() {
   const std::string mbt = "/usr/share/visp-images-data/ViSP-images/mbt";
   auto model = edgetrack::load_model(mbt + "/cube.cao");
-  auto camera = edgetrack::read_visp_camera_xml(mbt + "/cube.xml", 640, 480);
+  auto camera = edgetrack_app::read_camera(mbt + "/cube.xml", 640, 480);
   auto initial = edgetrack::read_pos(mbt + "/cube.0.pos");
   SourceOptions options;
   options.images = mbt + "/cube/image%04d.pgm";

@@ -8,6 +8,7 @@
 
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
+#include "edgetrack/face_visibility.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/se3.h"
 
@@ -21,12 +22,16 @@ struct ControlPoint {
   Vec2 normal;           ///< unit normal of the projected edge: direction turned by +90 degrees
 };
 
+/// The sampling step's inputs. The tracker builds them from its settings (TrackerParams); they
+/// are not settings of their own.
 struct SamplingParams {
-  real step = real(10);  ///< pixels between control points (the paper's 10)
-  int border = 10;       ///< points nearer the image border than this (pixels) are dropped
+  real step = real(10);    ///< pixels between control points (the paper's 10)
+  int border = 10;         ///< points nearer the image border than this (pixels) are dropped
+  ViewClipping clipping;   ///< the part of each edge that is sampled
 };
 
-/// Samples every edge in front of the camera: n = floor(projected length / step) points at the
+/// Samples the part of every edge that params.clipping keeps (at least the part 1 cm in front
+/// of the camera): n = floor(projected length / step) points at the
 /// centres of n equal parts of the projected segment, each lifted back to the 3D edge with the
 /// perspective-correct parameter. Each cylinder's two silhouette generator lines at this pose
 /// (contours.h) are sampled the same way: a fixed point on the current generator is right to

@@ -3,10 +3,7 @@
 /// u = u0 + px * X / Z, v = v0 + py * Y / Z, pixel centres at integer (u, v).
 #pragma once
 
-#include <string>
-
 #include "edgetrack/geometry.h"
-#include "edgetrack/result.h"
 
 namespace edgetrack {
 
@@ -29,11 +26,5 @@ struct PinholeCamera {
   /// The same camera for an image `factor` times larger (a supersampled render).
   PinholeCamera scaled(int factor) const;
 };
-
-/// Reads px, py, u0 and v0 from the <camera> element of a ViSP XML file (the mbt tracker's
-/// configuration, as in mbt/cube.xml, or vpXmlParserCamera's file). ViSP's mbt block holds no
-/// image size, so `width` and `height` are given; <image_width>/<image_height> inside <camera>,
-/// when present, override them.
-Result<PinholeCamera> read_visp_camera_xml(const std::string& path, int width, int height);
 
 }  // namespace edgetrack

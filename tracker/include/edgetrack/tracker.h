@@ -10,6 +10,7 @@
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
+#include "edgetrack/face_visibility.h"
 #include "edgetrack/motion_model.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pinhole_camera.h"
@@ -28,18 +29,25 @@ enum class GreyScaling {
   kWholeFrame  ///< every pixel, as the paper does
 };
 
+/// The tracker's settings, each in one place; check_tracker_params (tracker_params.h) holds their
+/// limits, and the configuration reader (visp_config.h) fills them from a ViSP XML file.
 struct TrackerParams {
-  SamplingParams sampling;
-  PoseParams pose;
-  /// Moving-edge settings with upstream's meanings (range, threshold, mask size and number).
-  /// The range is the configured one: each frame searches it or wider (MotionModel::search_range).
-  /// Its sample step is not used: sampling.step spaces the control points. mu1/mu2 are not
-  /// used either: sites are re-sampled every frame, so no previous contrast exists to test.
+  /// The moving edges with upstream's meanings, and the one home of every <ecm> setting: range,
+  /// threshold, mask size and number, mu1/mu2 and the sample step that spaces the control
+  /// points. The range is the configured one: each frame searches it or wider
+  /// (MotionModel::search_range). mu1/mu2 are not used: sites are re-sampled every frame, so no
+  /// previous contrast exists to test them on.
   vpMe me;
+  FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
+  int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
+  PoseParams pose;
   /// Edge hypotheses each control point keeps (1 to kMaxHypotheses): the strongest edge along
   /// its normal and the next local maxima of the likelihood; the pose step uses the one nearest
-  /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match.
-  int hypotheses = 3;
+  /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match, and the
+  /// default: 3 lowers the error where parallel distractor edges lie within the range, but on
+  /// ViSP's textured mbt/cube at QVGA it let the pose follow the cube's printed inner edges off
+  /// the cube (docs/results/tracker.md).
+  int hypotheses = 1;
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it
   StatusParams status;  ///< the tracked / uncertain / lost rule
@@ -104,14 +112,17 @@ class Tracker {
   const Se3& camera_from_model() const { return camera_from_model_; }
   /// Continues from `camera_from_model`, at rest, at the next frame (a new initialisation; lost
   /// frames need none: the tracker predicts and searches wider by itself); keeps the buffers,
-  /// the parameters and the Edge-ID source. False, and nothing changes, when the pose puts the
-  /// model behind the camera.
+  /// the parameters and the Edge-ID source, and starts the faces' visibility afresh (all
+  /// hidden, as a new tracker's). False, and nothing changes, when the pose puts the model
+  /// behind the camera.
   bool reset(const Se3& camera_from_model);
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
   const std::vector<ControlPoint>& control_points() const { return visible_; }
   const std::vector<EdgeMatch>& matches() const { return matches_; }
   const EdgeIdBuffer& edge_ids() const { return edge_ids_; }
+  /// The faces' visibility and the edges tracked in the last frame.
+  const FaceVisibility& face_visibility() const { return face_visibility_; }
 
  private:
   Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
@@ -129,7 +140,9 @@ class Tracker {
   EdgeModel model_;
   PinholeCamera camera_;
   TrackerParams params_;
-  vpMe me_;
+  vpMe me_;                  ///< params_.me with this frame's search range
+  SamplingParams sampling_;  ///< from params_: the sample step of params_.me, the border, the clipping
+  FaceVisibility face_visibility_;
   Se3 camera_from_model_;
   MotionModel motion_;
   EdgeIdBuffer edge_ids_;

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// One ViSP configuration file read as ViSP's loadConfigFile reads it for the edge tracker:
+/// <camera> with and without an image size, <ecm> with <sample> inside it or beside it, <face>,
+/// <lod>, ViSP's defaults for missing blocks, a second file overriding element by element,
+/// unknown elements and other trackers' blocks passed over, and bad values refused at their line.
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "edgetrack/visp_config.h"
+#include "testlib/testlib_test.h"
+
+using namespace edgetrack;
+
+namespace {
+
+const double kDegree = 3.14159265358979323846 / 180;
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string path = std::string(EDGETRACK_TEST_OUTPUT) + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+bool has_note(const ConfigNotes& notes, const std::string& element) {
+  for (const std::string& n : notes.not_applied)
+    if (n == element) return true;
+  return false;
+}
+
+void cube_xml() {
+  TrackerConfig config;
+  auto read = apply_visp_config(std::string(EDGETRACK_VISP_IMAGES) + "/mbt/cube.xml", config);
+  TEST("mbt/cube.xml reads", read.ok(), true);
+  if (!read.ok()) return;
+  const TrackerParams& p = config.params;
+  TEST_NEAR("<camera><px>", config.camera.px, 547.7367575, 1e-4);
+  TEST_NEAR("<camera><v0>", config.camera.v0, 234.5083345, 1e-4);
+  TEST_EQUAL("no image size in cube.xml", config.camera.width, 0);
+  TEST_EQUAL("<ecm><mask><size>", p.me.getMaskSize(), 5u);
+  TEST_EQUAL("<ecm><mask><nb_mask>", p.me.getMaskNumber(), 180u);
+  TEST_EQUAL("<ecm><range><tracking> 7", p.me.getRange(), 7u);
+  TEST_NEAR("<ecm><contrast><edge_threshold> 5000", p.me.getThreshold(), 5000, 0);
+  TEST_NEAR("<ecm><sample><step> 4 spaces the control points", p.me.getSampleStep(), 4, 0);
+  TEST_NEAR("<face><angle_appear> 65 degrees", p.faces.angle_appear, 65 * kDegree, 1e-5);
+  TEST_NEAR("<face><angle_disappear> 75 degrees", p.faces.angle_disappear, 75 * kDegree, 1e-5);
+  TEST("<face><near_clipping> 0.1 m", p.faces.near_clipping && std::abs(static_cast<double>(p.faces.near_distance) - 0.1) < 1e-5, true);
+  TEST("<face><far_clipping> 0.9 m", p.faces.far_clipping && std::abs(static_cast<double>(p.faces.far_distance) - 0.9) < 1e-5, true);
+  TEST("<face><fov_clipping> 1", p.faces.fov_clipping, true);
+  TEST("no <lod>: level of detail off, as ViSP", p.faces.use_lod, false);
+  TEST("mu1 is named as read and not applied", has_note(read.value(), "<ecm><contrast><mu1>"), true);
+  TEST("mu2 too", has_note(read.value(), "<ecm><contrast><mu2>"), true);
+  TEST_EQUAL("and nothing else: <klt> is another tracker's, passed over as ViSP's edge tracker does",
+             read.value().not_applied.size(), size_t(2));
+}
+
+void blocks() {
+  TrackerConfig sized;
+  auto read = apply_visp_config(write("sized.xml", "<conf><camera><px>300</px><py>301</py><u0>160</u0><v0>120</v0>"
+                                                   "<width>320</width><height>240</height></camera></conf>"), sized);
+  TEST("a camera with <width>/<height> gives its size", read.ok() && sized.camera.width == 320 && sized.camera.height == 240, true);
+  TrackerConfig written;
+  read = apply_visp_config(write("written.xml", "<?xml version=\"1.0\"?>\n<conf>\n<camera><px>300</px><py>300</py>"
+                                                "<u0>1</u0><v0>2</v0><image_width>160</image_width>"
+                                                "<image_height>120</image_height></camera></conf>\n"), written);
+  TEST("<image_width>/<image_height> (vpXmlParserCamera's names) too", read.ok() && written.camera.width == 160, true);
+  TrackerConfig bare_root;
+  read = apply_visp_config(write("camera_root.xml", "<camera><px>310</px><py>300</py><u0>1</u0><v0>2</v0></camera>"),
+                           bare_root);
+  TEST("a file whose root is <camera> is read as the camera block",
+       read.ok() && read.value().camera_block && bare_root.camera.px == real(310), true);
+
+  const TrackerConfig defaults;
+  TrackerConfig outside;
+  read = apply_visp_config(write("old_sample.xml", "<conf>\n<!-- older files -->\n<sample><step>6</step></sample>\n"
+                                                   "<ecm><range><tracking>5</tracking></range></ecm></conf>"), outside);
+  TEST("<sample> beside <ecm> (older files) sets the step", read.ok() && outside.params.me.getSampleStep() == real(6), true);
+  TrackerConfig both;
+  read = apply_visp_config(write("both_samples.xml", "<conf><ecm><sample><step>3</step></sample></ecm>"
+                                                     "<sample><step>8</step></sample></conf>"), both);
+  TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.getSampleStep() == real(8), true);
+
+  TrackerConfig lod;
+  read = apply_visp_config(write("lod.xml", "<conf><lod><use_lod>1</use_lod><min_line_length_threshold>30"
+                                            "</min_line_length_threshold><min_polygon_area_threshold>900"
+                                            "</min_polygon_area_threshold></lod></conf>"), lod);
+  TEST("<lod> applies", read.ok() && lod.params.faces.use_lod && lod.params.faces.min_line_length == real(30) &&
+                            lod.params.faces.min_polygon_area == real(900), true);
+
+  TrackerConfig bare;
+  read = apply_visp_config(write("camera_only.xml", "<conf><camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0>"
+                                                    "</camera><unknown><x>1</x></unknown><ecm><bogus>2</bogus></ecm></conf>"), bare);
+  TEST("a camera-only file (with unknown elements) reads", read.ok(), true);
+  TEST_EQUAL("missing <ecm>: ViSP's range 4", bare.params.me.getRange(), defaults.params.me.getRange());
+  TEST_NEAR("ViSP's threshold 1500", bare.params.me.getThreshold(), 1500, 0);
+  TEST_NEAR("ViSP's sample step 10", bare.params.me.getSampleStep(), 10, 0);
+  TEST_NEAR("missing <face>: vpMbTracker's 89 degrees", bare.params.faces.angle_appear, 89 * kDegree, 1e-5);
+  TEST("and no clipping", !bare.params.faces.near_clipping && !bare.params.faces.far_clipping && !bare.params.faces.fov_clipping, true);
+  TEST("nothing to note", read.ok() && read.value().not_applied.empty() && read.value().camera_block, true);
+  TrackerConfig none;
+  read = apply_visp_config(write("no_camera.xml", "<conf><ecm><range><tracking>5</tracking></range></ecm></conf>"), none);
+  TEST("a file without <camera> keeps ViSP's default camera (600, 600, 192, 144)",
+       read.ok() && !read.value().camera_block && none.camera.px == real(600) && none.camera.u0 == real(192), true);
+  read = apply_visp_config(write("projection.xml", "<conf><projection_error><sample_step>2</sample_step>"
+                                                   "</projection_error></conf>"), none);
+  TEST("<projection_error> is named as not applied", read.ok() && read.value().not_applied.size() == 1, true);
+}
+
+void precedence() {
+  TrackerConfig config;
+  auto first = apply_visp_config(std::string(EDGETRACK_VISP_IMAGES) + "/mbt/cube.xml", config);
+  auto second = apply_visp_config(write("override.xml", "<conf><ecm><range><tracking>3</tracking></range></ecm>"
+                                                        "<face><fov_clipping>0</fov_clipping></face></conf>"), config);
+  TEST("a second file applies over the first", first.ok() && second.ok(), true);
+  TEST_EQUAL("its range replaces cube.xml's", config.params.me.getRange(), 3u);
+  TEST_NEAR("cube.xml's step stays", config.params.me.getSampleStep(), 4, 0);
+  TEST_NEAR("cube.xml's camera stays", config.camera.px, 547.7367575, 1e-4);
+  TEST("its fov_clipping 0 replaces cube.xml's 1", config.params.faces.fov_clipping, false);
+  TEST("cube.xml's near clipping stays", config.params.faces.near_clipping, true);
+}
+
+void refused(const std::string& name, const std::string& xml, int line, const std::string& element) {
+  TrackerConfig config;
+  const TrackerConfig before = config;
+  const std::string path = write(name, xml);
+  auto read = apply_visp_config(path, config);
+  TEST(("refused: " + name).c_str(), read.ok(), false);
+  if (read.ok()) return;
+  TEST_EQUAL(("  at line " + std::to_string(line)).c_str(), read.error().line, line);
+  TEST(("  naming the file and " + element).c_str(),
+       read.error().file == path && read.error().message.find(element) != std::string::npos, true);
+  TEST("  nothing applied", config.params.me.getRange() == before.params.me.getRange(), true);
+}
+
+void bad_values() {
+  refused("nan_range.xml", "<conf>\n<ecm>\n<range>\n<tracking>seven</tracking>\n</range>\n</ecm>\n</conf>\n", 4,
+          "<ecm><range><tracking>");
+  refused("zero_range.xml", "<conf>\n<ecm><range><tracking>0</tracking></range></ecm>\n</conf>\n", 2, "<ecm><range><tracking>");
+  refused("negative_range.xml", "<conf>\n<ecm><range>\n<tracking>-2</tracking></range></ecm>\n</conf>\n", 3,
+          "<ecm><range><tracking>");
+  refused("mask.xml", "<conf>\n<ecm>\n<mask>\n<size>1</size>\n</mask>\n</ecm>\n</conf>\n", 4, "<ecm><mask><size>");
+  refused("step.xml", "<conf>\n<ecm>\n<range><tracking>5</tracking></range>\n<sample><step>0</step></sample>\n</ecm>\n</conf>\n",
+          4, "<ecm><sample><step>");
+  refused("half_step.xml", "<conf>\n<sample>\n<step>2.5</step>\n</sample>\n</conf>\n", 3, "<sample><step>");
+  refused("threshold.xml", "<conf><ecm><contrast>\n<edge_threshold>-1</edge_threshold>\n</contrast></ecm></conf>", 2,
+          "<ecm><contrast><edge_threshold>");
+  refused("mu.xml", "<conf><ecm><contrast>\n\n<mu1>1.5</mu1></contrast></ecm></conf>", 3, "<ecm><contrast><mu1>");
+  refused("px.xml", "<conf>\n<camera>\n<px>0</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("width.xml", "<conf>\n<camera>\n<width>wide</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
+  refused("angle.xml", "<conf>\n<face>\n<angle_appear>200</angle_appear>\n</face>\n</conf>\n", 3, "<face><angle_appear>");
+  refused("far.xml", "<conf>\n<face>\n<near_clipping>0.5</near_clipping>\n<far_clipping>0.2</far_clipping>\n</face>\n</conf>\n",
+          4, "<face><far_clipping>");
+  refused("fov.xml", "<conf>\n<face><fov_clipping>yes</fov_clipping></face>\n</conf>\n", 2, "<face><fov_clipping>");
+  refused("lod.xml", "<conf>\n<lod>\n<min_polygon_area_threshold>-4</min_polygon_area_threshold>\n</lod>\n</conf>\n", 3,
+          "<lod><min_polygon_area_threshold>");
+  refused("unclosed.xml", "<conf>\n<ecm>\n<range><tracking>5</tracking>\n</ecm>\n</conf>\n", 4, "</ecm> does not close <range>");
+  TrackerConfig config;
+  auto missing = apply_visp_config(std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", config);
+  TEST("a missing file is an error naming it",
+       !missing.ok() && missing.error().file == std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", true);
+}
+
+}  // namespace
+
+static void test_visp_config() {
+  cube_xml();
+  blocks();
+  precedence();
+  bad_values();
+}
+
+TESTMAIN(test_visp_config)

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// ViSP's configuration blocks read onto the camera and the tracker settings. Facts from
+/// vpMbtXmlGenericParser (ViSP 3.5): each block's children are looked up by name and unknown
+/// ones are passed over; a block may come more than once and each occurrence applies in turn;
+/// the sample step is read as an integer, inside <ecm> or (older files) beside it.
+#include "edgetrack/visp_config.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "edgetrack/tracker_params.h"
+#include "edgetrack/xml_document.h"
+
+namespace edgetrack {
+namespace {
+
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180;
+
+/// Reads one file's elements onto a copy of the configuration.
+class Reading {
+ public:
+  Reading(const std::string& path, const TrackerConfig& start) : path_(path), config_(start) {}
+
+  Result<bool> root(const XmlElement& root) {
+    // ViSP reads the root's children only; a file whose root is the camera block itself (as
+    // edgetrack's older camera files) would keep ViSP's default camera, so it is read as one.
+    if (root.name == "camera") return camera(root);
+    for (const XmlElement& block : root.children) {
+      Result<bool> read = true;
+      if (block.name == "camera") read = camera(block);
+      else if (block.name == "ecm") read = ecm(block);
+      else if (block.name == "sample") read = sample(block, "sample");
+      else if (block.name == "face") read = face(block);
+      else if (block.name == "lod") read = lod(block);
+      else if (block.name == "projection_error")
+        note("<projection_error> (ViSP's projection-error diagnostic, which edgetrack does not compute)");
+      if (!read.ok()) return read;
+    }
+    return true;
+  }
+  const TrackerConfig& config() const { return config_; }
+  ConfigNotes& notes() { return notes_; }
+
+ private:
+  Error bad(const XmlElement& e, const std::string& where, const std::string& what) const {
+    return Error{path_, e.line, where + " " + what};
+  }
+
+  /// The element's text as a number; `where` names it in an error ("<ecm><range><tracking>").
+  Result<double> number(const XmlElement& e, const std::string& where) const {
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(e.text.c_str(), &end);
+    if (e.text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(value))
+      return bad(e, where, "is not a number: '" + e.text + "'");
+    return value;
+  }
+  /// The element's text as a whole number, where ViSP reads an integer.
+  Result<long> whole(const XmlElement& e, const std::string& where) const {
+    errno = 0;
+    char* end = nullptr;
+    const long value = std::strtol(e.text.c_str(), &end, 10);
+    if (e.text.empty() || *end != '\0' || errno == ERANGE) return bad(e, where, "is not a whole number: '" + e.text + "'");
+    return value;
+  }
+  /// A whole number that must not be negative (ViSP reads these as unsigned).
+  Result<unsigned> count(const XmlElement& e, const std::string& where) const {
+    auto value = whole(e, where);
+    if (!value.ok()) return value.error();
+    if (value.value() < 0 || value.value() > 1000000) return bad(e, where, "must be a count, not " + e.text);
+    return static_cast<unsigned>(value.value());
+  }
+
+  /// After each value: the settings must stay within their limits, reported at element `e`.
+  Result<bool> check(const XmlElement& e) const {
+    const auto problem = check_tracker_params(config_.params);
+    if (problem) return Error{path_, e.line, problem->message};
+    return true;
+  }
+  void note(const std::string& what) {
+    for (const std::string& seen : notes_.not_applied)
+      if (seen == what) return;
+    notes_.not_applied.push_back(what);
+  }
+
+  Result<bool> camera(const XmlElement& block) {
+    notes_.camera_block = true;
+    for (const XmlElement& e : block.children) {
+      const std::string where = "<camera><" + e.name + ">";
+      real* value = e.name == "px" ? &config_.camera.px : e.name == "py" ? &config_.camera.py
+                    : e.name == "u0" ? &config_.camera.u0 : e.name == "v0" ? &config_.camera.v0 : nullptr;
+      int* size = e.name == "width" || e.name == "image_width"     ? &config_.camera.width
+                  : e.name == "height" || e.name == "image_height" ? &config_.camera.height : nullptr;
+      if (value) {
+        auto got = number(e, where);
+        if (!got.ok()) return got.error();
+        if ((e.name == "px" || e.name == "py") && !(got.value() > 0)) return bad(e, where, "must be positive, not " + e.text);
+        *value = real(got.value());  // set-up time conversion
+      } else if (size) {
+        auto got = whole(e, where);
+        if (!got.ok()) return got.error();
+        if (got.value() <= 0 || got.value() > 100000) return bad(e, where, "must be a positive number of pixels, not " + e.text);
+        *size = static_cast<int>(got.value());
+      }
+    }
+    return true;
+  }
+
+  Result<bool> ecm(const XmlElement& block) {
+    vpMe& me = config_.params.me;
+    for (const XmlElement& group : block.children) {
+      if (group.name == "sample") {
+        auto read = sample(group, "ecm><sample");
+        if (!read.ok()) return read;
+        continue;
+      }
+      for (const XmlElement& e : group.children) {
+        const std::string where = "<ecm><" + group.name + "><" + e.name + ">";
+        if (group.name == "mask" && (e.name == "size" || e.name == "nb_mask")) {
+          auto got = count(e, where);
+          if (!got.ok()) return got.error();
+          const bool size = e.name == "size";
+          const auto masks = check_masks(size ? got.value() : me.getMaskSize(), size ? me.getMaskNumber() : got.value());
+          if (masks) return Error{path_, e.line, masks->message};
+          if (size) me.setMaskSize(got.value());
+          else me.setMaskNumber(got.value());
+        } else if (group.name == "range" && e.name == "tracking") {
+          auto got = count(e, where);
+          if (!got.ok()) return got.error();
+          me.setRange(got.value());
+        } else if (group.name == "contrast" && (e.name == "edge_threshold" || e.name == "mu1" || e.name == "mu2")) {
+          auto got = number(e, where);
+          if (!got.ok()) return got.error();
+          if (e.name == "edge_threshold") me.setThreshold(got.value());
+          else if (e.name == "mu1") me.setMu1(got.value());
+          else me.setMu2(got.value());
+          if (e.name != "edge_threshold") note(where);
+        } else {
+          continue;
+        }
+        auto checked = check(e);
+        if (!checked.ok()) return checked;
+      }
+    }
+    return true;
+  }
+
+  /// <sample><step>, inside <ecm> or beside it; `where` is the block's path without brackets.
+  Result<bool> sample(const XmlElement& block, const std::string& where) {
+    for (const XmlElement& e : block.children) {
+      if (e.name != "step") continue;
+      auto got = whole(e, "<" + where + "><step>");
+      if (!got.ok()) return got.error();
+      if (got.value() < 1) return bad(e, "<" + where + "><step>", "must be at least 1 pixel, not " + e.text);
+      config_.params.me.setSampleStep(static_cast<double>(got.value()));
+    }
+    return true;
+  }
+
+  /// A whole number read as a switch: non-zero is on, as ViSP reads it.
+  Result<bool> flag(const XmlElement& e, const std::string& where, bool& out) const {
+    auto got = whole(e, where);
+    if (!got.ok()) return got.error();
+    out = got.value() != 0;
+    return true;
+  }
+  /// A number times `scale` into `out`, then the limits.
+  Result<bool> measure(const XmlElement& e, const std::string& where, double scale, real& out) {
+    auto got = number(e, where);
+    if (!got.ok()) return got.error();
+    out = real(got.value() * scale);  // set-up time conversion
+    return check(e);
+  }
+
+  Result<bool> face(const XmlElement& block) {
+    FaceVisibilityParams& faces = config_.params.faces;
+    for (const XmlElement& e : block.children) {
+      const std::string where = "<face><" + e.name + ">";
+      Result<bool> read = true;
+      if (e.name == "fov_clipping") {
+        read = flag(e, where, faces.fov_clipping);
+      } else if (e.name == "angle_appear") {
+        read = measure(e, where, kRadiansPerDegree, faces.angle_appear);
+      } else if (e.name == "angle_disappear") {
+        read = measure(e, where, kRadiansPerDegree, faces.angle_disappear);
+      } else if (e.name == "near_clipping") {
+        faces.near_clipping = true;
+        read = measure(e, where, 1, faces.near_distance);
+      } else if (e.name == "far_clipping") {
+        faces.far_clipping = true;
+        read = measure(e, where, 1, faces.far_distance);
+      }
+      if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  Result<bool> lod(const XmlElement& block) {
+    FaceVisibilityParams& faces = config_.params.faces;
+    for (const XmlElement& e : block.children) {
+      const std::string where = "<lod><" + e.name + ">";
+      Result<bool> read = true;
+      if (e.name == "use_lod") read = flag(e, where, faces.use_lod);
+      else if (e.name == "min_line_length_threshold") read = measure(e, where, 1, faces.min_line_length);
+      else if (e.name == "min_polygon_area_threshold") read = measure(e, where, 1, faces.min_polygon_area);
+      if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  const std::string& path_;
+  TrackerConfig config_;
+  ConfigNotes notes_;
+};
+
+}  // namespace
+
+Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config) {
+  auto document = read_xml_file(path);
+  if (!document.ok()) return document.error();
+  Reading reading(path, config);
+  auto read = reading.root(document.value());
+  if (!read.ok()) return read.error();
+  config = reading.config();
+  return reading.notes();
+}
+
+}  // namespace edgetrack
