@@ -14,7 +14,7 @@ namespace {
 /// is therefore doubled (exact in fixed point) until its largest component reaches 1, and its
 /// length halved back after the square root; floating point needs none of this.
 constexpr bool kScaleShortVectors = !std::numeric_limits<real>::is_iec559;
-constexpr int kMostDoublings = 30;
+constexpr int kMostDoublings = 30;  // more than any fixed-point real needs from one step (2^-23) to 1
 
 real largest_magnitude(const real& a, const real& b, const real& c) {
   using std::fabs;
