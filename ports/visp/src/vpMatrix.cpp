@@ -14,10 +14,22 @@ namespace {
 
 constexpr int kMaxSweeps = 40;
 
-/// A pair of columns counts as orthogonal when |<p, q>| <= tolerance * |p| |q|.
+/// A pair of columns counts as orthogonal when |<p, q>| <= tolerance * |p| |q| + noise floor.
 real orthogonality_tolerance() {
   const real eps = std::numeric_limits<real>::epsilon();
   return eps * 4;
+}
+
+/// The absolute size below which a fixed-point dot product of `terms` products is rounding
+/// noise (each product rounds to an ulp); without it a pair whose |p| |q| is small never passes
+/// the relative test and every sweep rotates noise into U and V. Zero for floating point, which
+/// rounds relatively.
+real dot_product_noise_floor(unsigned int terms) {
+  if constexpr (std::numeric_limits<real>::is_iec559) {
+    return real(0);
+  } else {
+    return std::numeric_limits<real>::epsilon() * real(static_cast<int>(terms) + 1);
+  }
 }
 
 struct Rotation {
@@ -52,6 +64,7 @@ void hestenes(vpMatrix& U, vpMatrix& V) {
   using std::sqrt;
   const unsigned int m = U.getRows(), n = U.getCols();
   const real tolerance = orthogonality_tolerance();
+  const real noise = dot_product_noise_floor(m);
   for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
     bool rotated = false;
     for (unsigned int p = 0; p + 1 < n; ++p) {
@@ -62,7 +75,7 @@ void hestenes(vpMatrix& U, vpMatrix& V) {
           beta += U[k][q] * U[k][q];
           gamma += U[k][p] * U[k][q];
         }
-        if (gamma == 0 || abs(gamma) <= tolerance * sqrt(alpha) * sqrt(beta)) continue;
+        if (abs(gamma) <= tolerance * sqrt(alpha) * sqrt(beta) + noise) continue;
         const Rotation r = jacobi_rotation(alpha, beta, gamma);
         rotate_columns(U, p, q, r);
         rotate_columns(V, p, q, r);
