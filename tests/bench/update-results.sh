@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Regenerates docs/RESULTS.md: runs each tests/bench/<part>/results.sh (or only the parts named
-# on the command line), each of which writes docs/results/<part>.md, then joins the sections.
+# on the command line, or none with --join), each of which writes docs/results/<part>.md, then
+# joins the sections.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 mkdir -p "$top/docs/results" "$top/build"
 "$top/toolchains/install-deps.sh"
 
+# --join: only join the sections already in docs/results/ (after a part was run by hand,
+# e.g. a fuzzing campaign, tests/fuzz/run.sh).
 parts=("$@")
-if [ ${#parts[@]} -eq 0 ]; then
+if [ "${parts[0]:-}" = "--join" ]; then
+  parts=()
+elif [ ${#parts[@]} -eq 0 ]; then
   for script in "$top"/tests/bench/*/results.sh; do parts+=("$(basename "$(dirname "$script")")"); done
 fi
 for part in "${parts[@]}"; do

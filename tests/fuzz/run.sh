@@ -13,7 +13,7 @@ shift 2
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(cao obj pos points camera_xml netpbm raw_rgb565 pose_table)
 found=0
-echo "| target | seconds | executions | corpus files | peak RSS (MB) | slowest input (s) | findings |"
+echo "| target | seconds | executions | corpus files | peak RSS (MB) | slowest input (whole s) | findings |"
 echo "|---|---:|---:|---:|---:|---:|---|"
 for target in "${targets[@]}"; do
   fuzzer=$build/tests/fuzz/fuzz_$target
