@@ -89,13 +89,16 @@ class fixed64 {
   static constexpr int kFractionBits = F;
 
   constexpr fixed64() = default;
-  /// Exact and implicit, so that `x * 2` and `x < 0` work: F <= 32 leaves 31 integer bits.
-  constexpr fixed64(int value)  // NOLINT(google-explicit-constructor)
+  /// Exact and implicit, so that `x * 2` and `x < 0` work: F <= 32 leaves 31 integer bits. A
+  /// template taking `int` alone, so that `real x = 0.5;` does not compile (a plain int
+  /// constructor would take 0.5 as 0); `real(0.5)` states the conversion.
+  template <class I, std::enable_if_t<std::is_same<I, int>::value, int> = 0>
+  constexpr fixed64(I value)  // NOLINT(google-explicit-constructor)
       : raw_(static_cast<std::int64_t>(static_cast<std::uint64_t>(static_cast<std::int64_t>(value)) << F)) {}
   /// Other integer types: explicit, saturating (and counting) when out of range.
   template <class I, std::enable_if_t<std::is_integral<I>::value && !std::is_same<I, int>::value &&
                                           !std::is_same<I, bool>::value,
-                                      int> = 0>
+                                      long> = 0>
   constexpr explicit fixed64(I value) : raw_(from_integer(value)) {}
   /// Rounds to nearest; meant for constexpr set-up (`static constexpr T kHalf = T(0.5)`), as it
   /// is floating-point arithmetic. Out-of-range values saturate; NaN gives 0; both count.
