@@ -3,10 +3,10 @@
 #include "pose_table.h"
 
 #include "edgetrack/input_file.h"
+#include "edgetrack/number_text.h"
+#include "edgetrack/pose_io.h"
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 using edgetrack::Error;
@@ -26,25 +26,18 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
-/// A finite number filling the whole cell.
-bool parse_double(const std::string& text, double& value) {
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0' && std::isfinite(value);
-}
-
-/// A frame number: digits only, 0..10^9.
-bool parse_frame(const std::string& text, int& frame) {
-  if (text.empty() || text.size() > 10) return false;
-  long long value = 0;
-  for (char c : text) {
-    if (c < '0' || c > '9') return false;
-    value = value * 10 + (c - '0');
-  }
-  if (value > 1000000000LL) return false;
-  frame = static_cast<int>(value);
-  return true;
-}
+/// The range of each numeric column: a pose as a .pos file bounds it, milliseconds and frame
+/// and point counts up to 10^9.
+const edgetrack::FieldRange kColumns[9] = {
+    {"frame", 0, 1e9},
+    {"column 2", -edgetrack::kMaxPosTranslation, edgetrack::kMaxPosTranslation},
+    {"column 3", -edgetrack::kMaxPosTranslation, edgetrack::kMaxPosTranslation},
+    {"column 4", -edgetrack::kMaxPosTranslation, edgetrack::kMaxPosTranslation},
+    {"column 5", -edgetrack::kMaxPosRotation, edgetrack::kMaxPosRotation},
+    {"column 6", -edgetrack::kMaxPosRotation, edgetrack::kMaxPosRotation},
+    {"column 7", -edgetrack::kMaxPosRotation, edgetrack::kMaxPosRotation},
+    {"points", 0, 1e9},
+    {"column 9", 0, 1e9}};
 
 std::string partial_path(const std::string& path) { return path + ".partial"; }
 
@@ -68,23 +61,28 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
     if (cells.size() != columns)
       return Error{path, number, std::to_string(cells.size()) + " columns, expected " + std::to_string(columns)};
     PoseRow row;
-    if (!parse_frame(cells[0], row.frame))
-      return Error{path, number, "frame is not a whole number 0..10^9: '" + cells[0] + "'"};
+    auto frame = edgetrack::parse_whole_field(cells[0], kColumns[0], path, number);
+    if (!frame.ok()) return frame.error();
+    row.frame = static_cast<int>(frame.value());
     if (!rows.empty() && row.frame <= rows.back().frame)
       return Error{path, number, "frame " + cells[0] + (row.frame == rows.back().frame ? " appears twice" : " comes after frame " + std::to_string(rows.back().frame)) + ": frames must be listed once each, in increasing order"};
-    double values[8];
+    double values[9];
     const size_t numeric = tracking ? 9 : 7;
-    for (size_t i = 1; i < numeric; ++i)
-      if (i != 7 && !parse_double(cells[i], values[i == 8 ? 7 : i]))
-        return Error{path, number, "column " + std::to_string(i + 1) + " is not a finite number: '" + cells[i] + "'"};
+    for (size_t i = 1; i < numeric; ++i) {
+      if (i == 7) continue;  // points: a whole number, below
+      auto value = edgetrack::parse_field(cells[i], kColumns[i], path, number);
+      if (!value.ok()) return value.error();
+      values[i] = value.value();
+    }
     for (int i = 0; i < 3; ++i) {
       row.t[i] = values[1 + i];
       row.tu[i] = values[4 + i];
     }
     if (tracking) {
-      if (!parse_frame(cells[7], row.points))
-        return Error{path, number, "points is not a whole number: '" + cells[7] + "'"};
-      row.ms = values[7];
+      auto points = edgetrack::parse_whole_field(cells[7], kColumns[7], path, number);
+      if (!points.ok()) return points.error();
+      row.points = static_cast<int>(points.value());
+      row.ms = values[8];
       if (cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
         return Error{path, number, "status is '" + cells[9] + "', expected ok, uncertain or lost"};
       row.lost = cells[9] == "lost";
