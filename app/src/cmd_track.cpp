@@ -16,6 +16,7 @@
 #include "click_init.h"
 #include "commands.h"
 #include "configuration.h"
+#include "count_markers.h"
 #include "downscaled_tracking.h"
 #include "edgetrack/edgetrack.h"
 #include "frame_source.h"
@@ -350,7 +351,9 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
                                   std::to_string(in.full_height)});
     RgbImage small;
     const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
+    edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app_frame)
     auto result = in.tracker->track(tracked);
+    edgetrack_count_end();
     if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
     const edgetrack::FrameResult& r = result.value();
     count(r, totals);

@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "edgetrack/input_file.h"
+#include "visp3/core/vpImageConvert.h"
 
 using edgetrack::Error;
 using edgetrack::Result;
@@ -183,14 +184,28 @@ RgbImage to_rgb_image(const edgetrack::FrameView& frame) {
   return image;
 }
 
-Result<bool> write_ppm(const std::string& path, const RgbImage& image) {
+namespace {
+
+/// Writes a binary netpbm file: its header, then `pixels`.
+Result<bool> write_netpbm(const std::string& path, char kind, const RgbImage& image, const std::vector<uint8_t>& pixels) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) return Error{path, 0, "cannot open the file for writing"};
-  bool ok = std::fprintf(file, "P6\n%d %d\n255\n", image.width, image.height) > 0;
-  ok = ok && std::fwrite(image.rgb.data(), 1, image.rgb.size(), file) == image.rgb.size();
+  bool ok = std::fprintf(file, "P%c\n%d %d\n255\n", kind, image.width, image.height) > 0;
+  ok = ok && std::fwrite(pixels.data(), 1, pixels.size(), file) == pixels.size();
   ok = (std::fclose(file) == 0) && ok;
   if (!ok) return Error{path, 0, "write failed"};
   return true;
+}
+
+}  // namespace
+
+Result<bool> write_ppm(const std::string& path, const RgbImage& image) { return write_netpbm(path, '6', image, image.rgb); }
+
+Result<bool> write_pgm(const std::string& path, const RgbImage& image) {
+  std::vector<uint8_t> grey(static_cast<size_t>(image.width) * image.height);
+  for (size_t i = 0; i < grey.size(); ++i)
+    grey[i] = vpImageConvert::rgbToGrey(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]);
+  return write_netpbm(path, '5', image, grey);
 }
 
 Result<FramePixels> read_raw_rgb565(const std::string& path, int width, int height) {

@@ -60,6 +60,8 @@ edgetrack::Result<FramePixels> read_netpbm_pixels(const std::string& path);
 edgetrack::Result<RgbImage> read_netpbm(const std::string& path);
 /// Writes a binary PPM (P6).
 edgetrack::Result<bool> write_ppm(const std::string& path, const RgbImage& image);
+/// Writes the image's grey (vpImageConvert's rounding rule) as a binary 8-bit PGM (P5).
+edgetrack::Result<bool> write_pgm(const std::string& path, const RgbImage& image);
 
 /// Reads a raw little-endian RGB565 file of exactly width * height pixels (not copied on a
 /// little-endian machine).

@@ -55,6 +55,13 @@ static void test_image_io() {
            rgb.value().view().row(0)[5] == 6,
        true);
 
+  TEST("a PGM is written", write_pgm(temp_path("grey.pgm"), colour).ok(), true);
+  auto grey_back = read_netpbm_pixels(temp_path("grey.pgm"));
+  TEST("the written PGM holds the luma of each pixel (vpImageConvert's rule: 2 and 5)",
+       grey_back.ok() && grey_back.value().layout == edgetrack::PixelLayout::kGrey8 &&
+           grey_back.value().view().row(0)[0] == 2 && grey_back.value().view().row(0)[1] == 5,
+       true);
+
   write_text(temp_path("short.pgm"), std::string("P5\n4 4\n255\n") + std::string(10, 'x'));
   auto truncated = read_netpbm(temp_path("short.pgm"));
   TEST("a truncated PGM is refused", truncated.ok(), false);
