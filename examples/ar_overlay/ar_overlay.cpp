@@ -125,8 +125,8 @@ int main(int argc, char** argv) {
                cv::Scalar(0, 255, 0), 1, cv::LINE_AA);
     draw_cone(bgr, cone, view);
     const cv::Vec3d t = view.translation, tu = to_cv(r.camera_from_model.theta_u());
-    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s\n", index, t[0], t[1], t[2], tu[0],
-                tu[1], tu[2], r.points_matched, r.points_sampled, r.pose.solved ? "solved" : "not-solved");
+    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s %s\n", index, t[0], t[1], t[2], tu[0],
+                tu[1], tu[2], r.points_matched, r.points_sampled, edgetrack::status_name(r.status), r.pose.solved ? "solved" : "not-solved");
     if (video.isOpened()) {
       video.write(bgr);
     } else {

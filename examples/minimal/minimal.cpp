@@ -48,9 +48,9 @@ int main(int argc, char** argv) {
     if (!tracked.ok()) return std::fprintf(stderr, "minimal: frame %d: %s\n", index, tracked.error().text().c_str()), 1;
     const edgetrack::FrameResult& r = tracked.value();
     const edgetrack::Vec3 t = r.camera_from_model.translation(), tu = r.camera_from_model.theta_u();
-    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s\n", index, double(t.x), double(t.y),
+    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s %s\n", index, double(t.x), double(t.y),
                 double(t.z), double(tu.x), double(tu.y), double(tu.z), r.points_matched, r.points_sampled,
-                r.pose.solved ? "solved" : "not-solved");
+                edgetrack::status_name(r.status), r.pose.solved ? "solved" : "not-solved");
   }
   return 0;
 }
