@@ -351,7 +351,7 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
                                   std::to_string(in.full_height)});
     RgbImage small;
     const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
-    edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app_frame)
+    edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app)
     auto result = in.tracker->track(tracked);
     edgetrack_count_end();
     if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
