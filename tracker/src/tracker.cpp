@@ -124,6 +124,7 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
   matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
+  grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

@@ -153,7 +153,8 @@ class Tracker {
   StepObserver* step_observer_ = nullptr;
   /// The grey frame; on demand, only the current frame's search boxes are up to date.
   vpImage<unsigned char> grey_;
-  vpImage<unsigned char> grey_in_place_;  ///< borrows the frame's own grey bytes (grey_in_place)
+  /// Borrows the frame's own grey bytes (grey_in_place) during track only.
+  vpImage<unsigned char> grey_in_place_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
 };
