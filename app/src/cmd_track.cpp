@@ -5,7 +5,6 @@
 /// outputs, run the frames, close and summarise.
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
