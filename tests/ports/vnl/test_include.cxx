@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Every public vnl header compiles together with the others (upstream's test_include.cxx).
 #include "vnl/dll.h"
+#include "vnl/vnl_T_n.h"
 #include "vnl/vnl_alloc.h"
 #include "vnl/vnl_analytic_integrant.h"
 #include "vnl/vnl_bessel.h"
@@ -36,6 +37,7 @@
 #include "vnl/vnl_double_4.h"
 #include "vnl/vnl_double_4x3.h"
 #include "vnl/vnl_double_4x4.h"
+#include "vnl/vnl_drand48.h"
 #include "vnl/vnl_erf.h"
 #include "vnl/vnl_error.h"
 #include "vnl/vnl_fastops.h"
@@ -72,6 +74,7 @@
 #include "vnl/vnl_int_matrix.h"
 #include "vnl/vnl_integrant_fnct.h"
 #include "vnl/vnl_inverse.h"
+#include "vnl/vnl_least_squares_cost_function.h"
 #include "vnl/vnl_least_squares_function.h"
 #include "vnl/vnl_linear_operators_3.h"
 #include "vnl/vnl_linear_system.h"
@@ -97,8 +100,12 @@
 #include "vnl/vnl_real_npolynomial.h"
 #include "vnl/vnl_real_polynomial.h"
 #include "vnl/vnl_rotation_matrix.h"
+#include "vnl/vnl_sample.h"
+#include "vnl/vnl_scalar_join_iterator.h"
+#include "vnl/vnl_sparse_lst_sqr_function.h"
 #include "vnl/vnl_sparse_matrix.h"
 #include "vnl/vnl_sparse_matrix_linear_system.h"
+#include "vnl/vnl_sse.h"
 #include "vnl/vnl_sym_matrix.h"
 #include "vnl/vnl_trace.h"
 #include "vnl/vnl_transpose.h"
@@ -107,7 +114,6 @@
 #include "vnl/vnl_vector_fixed.h"
 #include "vnl/vnl_vector_fixed_ref.h"
 #include "vnl/vnl_vector_ref.h"
-#include "vnl/vnl_T_n.h"
 #include "testlib/testlib_test.h"
 
 static void test_include() { TEST("every vnl header compiled together", VNL_CONFIG_THREAD_SAFE, 1); }
