@@ -51,6 +51,7 @@ DECLARE(test_alignment);
 DECLARE(test_sparse_lst_sqr_function);
 DECLARE(test_scalar_join_iterator);
 DECLARE(test_least_squares_cost_function);
+DECLARE(test_bignum);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -102,6 +103,7 @@ void register_tests() {
   REGISTER(test_sparse_lst_sqr_function);
   REGISTER(test_scalar_join_iterator);
   REGISTER(test_least_squares_cost_function);
+  REGISTER(test_bignum);
 }
 
 DEFINE_MAIN

@@ -6,6 +6,8 @@
 #include "vnl/vnl_analytic_integrant.h"
 #include "vnl/vnl_bessel.h"
 #include "vnl/vnl_beta.h"
+#include "vnl/vnl_bignum.h"
+#include "vnl/vnl_bignum_traits.h"
 #include "vnl/vnl_block.h"
 #include "vnl/vnl_c_na_vector.h"
 #include "vnl/vnl_c_vector.h"
