@@ -52,6 +52,7 @@ DECLARE(test_sparse_lst_sqr_function);
 DECLARE(test_scalar_join_iterator);
 DECLARE(test_least_squares_cost_function);
 DECLARE(test_bignum);
+DECLARE(test_decnum);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -104,6 +105,7 @@ void register_tests() {
   REGISTER(test_scalar_join_iterator);
   REGISTER(test_least_squares_cost_function);
   REGISTER(test_bignum);
+  REGISTER(test_decnum);
 }
 
 DEFINE_MAIN
