@@ -83,18 +83,26 @@ class vnl_finite_int {
   }
   /// The number of units, phi(N).
   static unsigned int totient() {
-    unsigned count = 0;
-    for (unsigned x = 1; x < unsigned(N); ++x) count += gcd(x) == 1;
-    return count;
+    // Computed once per N (a constant of the type; C++ makes the first call's initialisation
+    // thread-safe), as upstream caches it.
+    static const unsigned int phi = [] {
+      unsigned count = 0;
+      for (unsigned x = 1; x < unsigned(N); ++x) count += gcd(x) == 1;
+      return count;
+    }();
+    return phi;
   }
   /// True when N is prime.
   static bool is_field() { return totient() == static_cast<unsigned>(N - 1); }
   /// The smallest unit whose powers give every unit (1 if the unit group is not cyclic).
   static Base smallest_generator() {
-    for (int g = 1; g < N; ++g) {
-      if (Base(g).multiplicative_order() == static_cast<int>(totient())) return Base(g);
-    }
-    return Base(1);
+    static const Base generator = [] {  // once per N, as totient()
+      for (int g = 1; g < N; ++g) {
+        if (Base(g).multiplicative_order() == static_cast<int>(totient())) return Base(g);
+      }
+      return Base(1);
+    }();
+    return generator;
   }
   /// g^r for the smallest generator g; log() is its inverse on the units.
   static Base exp(int r) { return smallest_generator().pow(r); }
