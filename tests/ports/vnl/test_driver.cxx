@@ -53,6 +53,7 @@ DECLARE(test_scalar_join_iterator);
 DECLARE(test_least_squares_cost_function);
 DECLARE(test_bignum);
 DECLARE(test_decnum);
+DECLARE(test_matlab);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -106,6 +107,7 @@ void register_tests() {
   REGISTER(test_least_squares_cost_function);
   REGISTER(test_bignum);
   REGISTER(test_decnum);
+  REGISTER(test_matlab);
 }
 
 DEFINE_MAIN
