@@ -28,7 +28,8 @@ std::string digits_add(const std::string& a, const std::string& b) {
   std::string sum;
   int carry = 0;
   for (std::size_t i = 0; i < a.size() || i < b.size() || carry; ++i) {
-    const int d = carry + (i < a.size() ? a[a.size() - 1 - i] - '0' : 0) + (i < b.size() ? b[b.size() - 1 - i] - '0' : 0);
+    const int d =
+        carry + (i < a.size() ? a[a.size() - 1 - i] - '0' : 0) + (i < b.size() ? b[b.size() - 1 - i] - '0' : 0);
     sum.push_back(static_cast<char>('0' + d % 10));
     carry = d / 10;
   }
@@ -53,7 +54,8 @@ std::string digits_multiply(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return "";
   std::vector<int> product(a.size() + b.size(), 0);  // least significant first
   for (std::size_t i = 0; i < a.size(); ++i) {
-    for (std::size_t j = 0; j < b.size(); ++j) product[i + j] += (a[a.size() - 1 - i] - '0') * (b[b.size() - 1 - j] - '0');
+    for (std::size_t j = 0; j < b.size(); ++j)
+      product[i + j] += (a[a.size() - 1 - i] - '0') * (b[b.size() - 1 - j] - '0');
   }
   std::string result;
   int carry = 0;

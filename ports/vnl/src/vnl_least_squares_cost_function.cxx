@@ -17,7 +17,8 @@ vnl_vector<real> vnl_least_squares_cost_function::residuals_at(const vnl_vector<
 double vnl_least_squares_cost_function::f(const vnl_vector<double>& x) {
   residuals_at(x);
   double sum = 0;
-  for (unsigned r = 0; r < storage_.size(); ++r) sum += static_cast<double>(storage_[r]) * static_cast<double>(storage_[r]);
+  for (unsigned r = 0; r < storage_.size(); ++r)
+    sum += static_cast<double>(storage_[r]) * static_cast<double>(storage_[r]);
   return sum;
 }
 

@@ -45,7 +45,7 @@ void print_complex(double re, double im, int width, int precision, vnl_matlab_pr
                    std::size_t buf_len) {
   const char conversion =
       resolved(format) == vnl_matlab_print_format_short_e || resolved(format) == vnl_matlab_print_format_long_e ? 'e'
-                                                                                                                 : 'f';
+                                                                                                                : 'f';
   if (re == 0) {
     std::snprintf(buf, buf_len, "%*d ", width, 0);
   } else {

@@ -109,11 +109,11 @@ bool vnl_matlab_readhdr::read_matrix(T* const* m) {
   return true;
 }
 
-#define VNL_MATLAB_READHDR_METHODS(T)                                                                       \
+#define VNL_MATLAB_READHDR_METHODS(T)                                                                                  \
   bool vnl_matlab_readhdr::read_data(T& v) { return stores<T>() && rows() == 1 && cols() == 1 && read_values(&v, 1); } \
-  bool vnl_matlab_readhdr::read_data(T* p) {                                                                \
-    return stores<T>() && (rows() == 1 || cols() == 1) && read_values(p, rows() * cols());                \
-  }                                                                                                         \
+  bool vnl_matlab_readhdr::read_data(T* p) {                                                                           \
+    return stores<T>() && (rows() == 1 || cols() == 1) && read_values(p, rows() * cols());                             \
+  }                                                                                                                    \
   bool vnl_matlab_readhdr::read_data(T* const* m) { return read_matrix(m); }
 VNL_MATLAB_READHDR_METHODS(float)
 VNL_MATLAB_READHDR_METHODS(double)
@@ -141,9 +141,9 @@ bool vnl_matlab_read_or_die(std::istream& s, vnl_matrix<T>& M, const char* name)
   return true;
 }
 
-#define VNL_MATLAB_READ_INSTANTIATE(T)                                                  \
-  template void vnl_matlab_read_data(std::istream&, T*, unsigned);                      \
-  template bool vnl_matlab_read_or_die(std::istream&, vnl_vector<T>&, const char*);     \
+#define VNL_MATLAB_READ_INSTANTIATE(T)                                              \
+  template void vnl_matlab_read_data(std::istream&, T*, unsigned);                  \
+  template bool vnl_matlab_read_or_die(std::istream&, vnl_vector<T>&, const char*); \
   template bool vnl_matlab_read_or_die(std::istream&, vnl_matrix<T>&, const char*)
 VNL_MATLAB_READ_INSTANTIATE(float);
 VNL_MATLAB_READ_INSTANTIATE(double);

@@ -28,9 +28,9 @@ struct matlab_scalar<std::complex<T>> {
 template <class T>
 void write_header(std::ostream& s, std::int32_t storage, unsigned rows, unsigned cols, const char* name) {
   vnl_matlab_header hdr;
-  hdr.type = kNativeByteOrder + storage +
-             (matlab_scalar<T>::is_single ? vnl_matlab_header::vnl_SINGLE_PRECISION
-                                          : vnl_matlab_header::vnl_DOUBLE_PRECISION);
+  hdr.type =
+      kNativeByteOrder + storage +
+      (matlab_scalar<T>::is_single ? vnl_matlab_header::vnl_SINGLE_PRECISION : vnl_matlab_header::vnl_DOUBLE_PRECISION);
   hdr.rows = static_cast<std::int32_t>(rows);
   hdr.cols = static_cast<std::int32_t>(cols);
   hdr.imag = matlab_scalar<T>::is_complex ? 1 : 0;
@@ -77,9 +77,9 @@ bool vnl_matlab_write(std::ostream& s, const T* const* data, unsigned rows, unsi
   return s.good();
 }
 
-#define VNL_MATLAB_WRITE_INSTANTIATE(T)                                               \
-  template bool vnl_matlab_write(std::ostream&, const T&, const char*);              \
-  template bool vnl_matlab_write(std::ostream&, const T*, unsigned, const char*);    \
+#define VNL_MATLAB_WRITE_INSTANTIATE(T)                                           \
+  template bool vnl_matlab_write(std::ostream&, const T&, const char*);           \
+  template bool vnl_matlab_write(std::ostream&, const T*, unsigned, const char*); \
   template bool vnl_matlab_write(std::ostream&, const T* const*, unsigned, unsigned, const char*)
 VNL_MATLAB_WRITE_INSTANTIATE(float);
 VNL_MATLAB_WRITE_INSTANTIATE(double);

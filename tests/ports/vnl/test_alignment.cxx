@@ -33,7 +33,8 @@ bool kernels_match(const T* mat, const T* vec, const T* vec2, T* result, unsigne
   sse::element_product(vec, vec2, result, n);
   for (unsigned i = 0; i < n; ++i) ok = ok && result[i] == vec[i] * vec2[i];
   T dot(0), ssd(0), sum(0);
-  for (unsigned i = 0; i < n; ++i) dot += vec[i] * vec2[i], ssd += (vec[i] - vec2[i]) * (vec[i] - vec2[i]), sum += vec[i];
+  for (unsigned i = 0; i < n; ++i)
+    dot += vec[i] * vec2[i], ssd += (vec[i] - vec2[i]) * (vec[i] - vec2[i]), sum += vec[i];
   ok = ok && abs_diff(sse::dot_product(vec, vec2, n), dot) <= tol && abs_diff(dot_product(v, v2), dot) <= tol;
   ok = ok && abs_diff(sse::euclid_dist_sq(vec, vec2, n), ssd) <= tol && abs_diff(T(vnl_vector_ssd(v, v2)), ssd) <= tol;
   ok = ok && abs_diff(sse::sum(vec, n), sum) <= tol && abs_diff(v.sum(), sum) <= tol;
@@ -53,7 +54,8 @@ bool kernels_match(const T* mat, const T* vec, const T* vec2, T* result, unsigne
   const T* highest = std::max_element(vec, vec + n);
   ok = ok && sse::max(vec, n) == *highest && sse::min(vec, n) == *lowest;
   ok = ok && sse::arg_max(vec, n) == unsigned(highest - vec) && sse::arg_min(vec, n) == unsigned(lowest - vec);
-  ok = ok && v.max_value() == *highest && v.arg_max() == std::size_t(highest - vec) && v.arg_min() == std::size_t(lowest - vec);
+  ok = ok && v.max_value() == *highest && v.arg_max() == std::size_t(highest - vec) &&
+       v.arg_min() == std::size_t(lowest - vec);
   return ok;
 }
 

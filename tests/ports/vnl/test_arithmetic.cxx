@@ -23,25 +23,37 @@ template <class T>
 struct dynamic_kind {
   static constexpr const char* name = "dynamic";
   template <unsigned R, unsigned C>
-  static vnl_matrix<T> mat(T* d) { return vnl_matrix<T>(d, R, C); }
+  static vnl_matrix<T> mat(T* d) {
+    return vnl_matrix<T>(d, R, C);
+  }
   template <unsigned N>
-  static vnl_vector<T> vec(T* d) { return vnl_vector<T>(d, N); }
+  static vnl_vector<T> vec(T* d) {
+    return vnl_vector<T>(d, N);
+  }
 };
 template <class T>
 struct ref_kind {
   static constexpr const char* name = "ref";
   template <unsigned R, unsigned C>
-  static vnl_matrix_ref<T> mat(T* d) { return vnl_matrix_ref<T>(R, C, d); }
+  static vnl_matrix_ref<T> mat(T* d) {
+    return vnl_matrix_ref<T>(R, C, d);
+  }
   template <unsigned N>
-  static vnl_vector_ref<T> vec(T* d) { return vnl_vector_ref<T>(N, d); }
+  static vnl_vector_ref<T> vec(T* d) {
+    return vnl_vector_ref<T>(N, d);
+  }
 };
 template <class T>
 struct fixed_kind {
   static constexpr const char* name = "fixed";
   template <unsigned R, unsigned C>
-  static vnl_matrix_fixed<T, R, C> mat(T* d) { return vnl_matrix_fixed<T, R, C>(d); }
+  static vnl_matrix_fixed<T, R, C> mat(T* d) {
+    return vnl_matrix_fixed<T, R, C>(d);
+  }
   template <unsigned N>
-  static vnl_vector_fixed<T, N> vec(T* d) { return vnl_vector_fixed<T, N>(d); }
+  static vnl_vector_fixed<T, N> vec(T* d) {
+    return vnl_vector_fixed<T, N>(d);
+  }
 };
 
 template <class T, std::size_t N>
@@ -65,8 +77,7 @@ void check_construction_and_assignment(const std::string& p) {
        true);
   const auto m3 = K::template mat<2, 3>(m3_data.data());
   TEST((p + "2x3 matrix construction").c_str(),
-       m3.rows() == 2 && m3.cols() == 3 && m3(0, 0) == T(3) && m3(0, 2) == T(5) && m3(1, 0) == T(6) &&
-           m3(1, 2) == T(8),
+       m3.rows() == 2 && m3.cols() == 3 && m3(0, 0) == T(3) && m3(0, 2) == T(5) && m3(1, 0) == T(6) && m3(1, 2) == T(8),
        true);
   const auto v1 = K::template vec<2>(v1_data.data());
   TEST((p + "2 vector construction").c_str(), v1.size() == 2 && v1[0] == T(3) && v1[1] == T(2), true);

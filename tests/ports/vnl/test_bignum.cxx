@@ -212,8 +212,8 @@ void run_shift_tests() {
 }
 
 void run_comparison_tests() {
-  const vnl_bignum values[] = {vnl_bignum("-Inf"), vnl_bignum(-0x7fffL), vnl_bignum(0L), vnl_bignum(1L),
-                               vnl_bignum(0x7fffL), vnl_bignum("1e30"), vnl_bignum("+Inf")};
+  const vnl_bignum values[] = {vnl_bignum("-Inf"),  vnl_bignum(-0x7fffL), vnl_bignum(0L),    vnl_bignum(1L),
+                               vnl_bignum(0x7fffL), vnl_bignum("1e30"),   vnl_bignum("+Inf")};
   TEST("==, !=, <, >, <=, >= on -Inf < -0x7fff < 0 < 1 < 0x7fff < 1e30 < +Inf", big_number_checks::order_errors(values),
        0);
   TEST("comparison with long", vnl_bignum(5) < 6L && 6L > vnl_bignum(5) && vnl_bignum(5) == 5L, true);

@@ -72,8 +72,8 @@ void run_conversion_tests() {
   --b;
   TEST("and back", long(b), 0x7fffffffL);
   TEST("long(12.9) truncates", long(vnl_decnum("12.9")), 12L);
-  TEST("long(+Inf), long(-Inf)", long(vnl_decnum("+Inf")) == 0x7fffffffL && long(vnl_decnum("-Inf")) == -0x7fffffffL - 1,
-       true);
+  TEST("long(+Inf), long(-Inf)",
+       long(vnl_decnum("+Inf")) == 0x7fffffffL && long(vnl_decnum("-Inf")) == -0x7fffffffL - 1, true);
   TEST("string(-12e-3)", std::string(vnl_decnum("-12e-3")), "-12e-3");
   TEST("string(NaN)", std::string(vnl_decnum("NaN")), "NaN");
 }
@@ -88,8 +88,8 @@ void run_assignment_tests() {
 }
 
 void run_comparison_tests() {
-  const vnl_decnum values[] = {vnl_decnum("-Inf"), vnl_decnum(-0x7fffL), vnl_decnum("-1.5"), vnl_decnum(0L),
-                               vnl_decnum(1L),      vnl_decnum("12e-1"),  vnl_decnum(0x7fffL), vnl_decnum("+Inf")};
+  const vnl_decnum values[] = {vnl_decnum("-Inf"), vnl_decnum(-0x7fffL), vnl_decnum("-1.5"),  vnl_decnum(0L),
+                               vnl_decnum(1L),     vnl_decnum("12e-1"),  vnl_decnum(0x7fffL), vnl_decnum("+Inf")};
   TEST("==, !=, <, >, <=, >= on -Inf < -0x7fff < -1.5 < 0 < 1 < 12e-1 < 0x7fff < +Inf",
        big_number_checks::order_errors(values), 0);
   TEST("1000 == 1e3", vnl_decnum("1000") == vnl_decnum("1e3"), true);

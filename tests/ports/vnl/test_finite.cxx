@@ -170,7 +170,8 @@ static void test_finite() {
   check_finite_poly<3, 3>("1 2 0 1", true);      // GF(27)
   check_finite_poly<3, 3>("1 1 0 1", false);     // reducible: not a field (the modulus is reset)
   check_finite_poly<6, 2>("1 0 1", false);       // Z_6 is no field
-  TEST("additive order of 2 + 3X over Z_6", (vnl_finite_int_poly<6, 2>(std::vector<vnl_finite_int<6>>{2, 3})).additive_order(), 6u);
+  TEST("additive order of 2 + 3X over Z_6",
+       (vnl_finite_int_poly<6, 2>(std::vector<vnl_finite_int<6>>{2, 3})).additive_order(), 6u);
 }
 
 TESTMAIN(test_finite)

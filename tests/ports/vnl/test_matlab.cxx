@@ -14,9 +14,9 @@
 
 #include "testlib/testlib_test.h"
 #include "vnl/vnl_diag_matrix.h"
-#include "vnl/vnl_matlab_print.h"
 #include "vnl/vnl_matlab_filewrite.h"
 #include "vnl/vnl_matlab_header.h"
+#include "vnl/vnl_matlab_print.h"
 #include "vnl/vnl_matlab_print2.h"
 #include "vnl/vnl_matlab_read.h"
 #include "vnl/vnl_matlab_write.h"
@@ -91,7 +91,8 @@ void write_swapped(std::ostream& f, const float* array, unsigned size, const cha
 void check_vector_header(const std::string& p, vnl_matlab_readhdr& h, const vnl_vector<float>& v) {
   TEST((p + "header read").c_str(), bool(h), true);
   TEST((p + "single, real, a column named v").c_str(),
-       h.is_single() && !h.is_complex() && h.rows() == long(v.size()) && h.cols() == 1 && std::strcmp(h.name(), "v") == 0,
+       h.is_single() && !h.is_complex() && h.rows() == long(v.size()) && h.cols() == 1 &&
+           std::strcmp(h.name(), "v") == 0,
        true);
   vnl_vector<float> read_back(v.size());
   TEST((p + "values read back").c_str(), h.read_data(read_back.data_block()) && read_back == v, true);

@@ -87,8 +87,7 @@ void test_sample_binomial() {
   vnl_sample_binomial(x.begin(), x.end(), n, p);
   TEST_NEAR("binomial range filler: sample mean", mean_of(x), n * (1 - p), kEps * n);
   TEST_NEAR("binomial range filler: sample variance", variance_of(x), p * (1 - p) * n, kEps * n);
-  TEST("binomial: nonsense input gives -1", vnl_sample_binomial(0, p) == -1 && vnl_sample_binomial(n, 1.5) == -1,
-       true);
+  TEST("binomial: nonsense input gives -1", vnl_sample_binomial(0, p) == -1 && vnl_sample_binomial(n, 1.5) == -1, true);
   TEST("binomial: q = 1 gives n", vnl_sample_binomial(n, 1.0), n);
 }
 

@@ -19,7 +19,8 @@ struct check_join {
     const vnl_matrix<T> relation1{{T(1), T(3)}, {T(2), T(3)}, {T(7), T(9)}, {T(4), T(5)}};
     const vnl_matrix<T> relation2{{T(3), T(5)}, {T(3), T(6)}, {T(5), T(1)}, {T(8), T(0)}};
     std::vector<std::pair<unsigned, unsigned>> visited, expected;
-    for (vnl_scalar_join_iterator<T> it(relation1, 1, relation2, 0); it; ++it) visited.emplace_back(it.row1(), it.row2());
+    for (vnl_scalar_join_iterator<T> it(relation1, 1, relation2, 0); it; ++it)
+      visited.emplace_back(it.row1(), it.row2());
     for (unsigned i = 0; i < relation1.rows(); ++i) {
       for (unsigned j = 0; j < relation2.rows(); ++j) {
         if (relation1(i, 1) == relation2(j, 0)) expected.emplace_back(i, j);

@@ -44,9 +44,9 @@ class vnl_bignum {
   vnl_bignum(const char*);  // NOLINT(google-explicit-constructor)
 
   /// Wrapping conversions to the integer types (the low bits, then the sign).
-  operator short() const;  // NOLINT(google-explicit-constructor)
-  operator int() const;    // NOLINT(google-explicit-constructor)
-  operator long() const;   // NOLINT(google-explicit-constructor)
+  operator short() const;        // NOLINT(google-explicit-constructor)
+  operator int() const;          // NOLINT(google-explicit-constructor)
+  operator long() const;         // NOLINT(google-explicit-constructor)
   operator float() const;        // NOLINT(google-explicit-constructor)
   operator double() const;       // NOLINT(google-explicit-constructor)
   operator long double() const;  // NOLINT(google-explicit-constructor)

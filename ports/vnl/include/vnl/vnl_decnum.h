@@ -34,8 +34,8 @@ class vnl_decnum {
   vnl_decnum() = default;
   /// Parses [sign] digits [. digits] [e [sign] digits], "Inf..." or "NaN" after white space,
   /// stopping at the first character that does not fit (so no digits at all give zero).
-  vnl_decnum(const std::string& r);                                   // NOLINT(google-explicit-constructor)
-  vnl_decnum(const char* r) : vnl_decnum(std::string(r)) {}          // NOLINT(google-explicit-constructor)
+  vnl_decnum(const std::string& r);                          // NOLINT(google-explicit-constructor)
+  vnl_decnum(const char* r) : vnl_decnum(std::string(r)) {}  // NOLINT(google-explicit-constructor)
   explicit vnl_decnum(unsigned long r);
   explicit vnl_decnum(long r);
   explicit vnl_decnum(unsigned int r) : vnl_decnum(static_cast<unsigned long>(r)) {}
@@ -45,7 +45,7 @@ class vnl_decnum {
   vnl_decnum(double r);  // NOLINT(google-explicit-constructor)
 
   /// The value as text: "0", "-1234", "12e-3", "Inf", "-Inf" or "NaN".
-  operator std::string() const;  // NOLINT(google-explicit-constructor)
+  operator std::string() const;    // NOLINT(google-explicit-constructor)
   operator long() const;           // NOLINT(google-explicit-constructor)
   operator unsigned long() const;  // NOLINT(google-explicit-constructor): drops the sign
   operator int() const;            // NOLINT(google-explicit-constructor)
@@ -81,27 +81,49 @@ class vnl_decnum {
 
   // Upstream's overloads for strings, the integer types and double on the right.
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator=(const R& r) { return *this = vnl_decnum(r); }
+  vnl_decnum& operator=(const R& r) {
+    return *this = vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum operator+(const R& r) const { return *this + vnl_decnum(r); }
+  vnl_decnum operator+(const R& r) const {
+    return *this + vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum operator-(const R& r) const { return *this - vnl_decnum(r); }
+  vnl_decnum operator-(const R& r) const {
+    return *this - vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum operator*(const R& r) const { return *this * vnl_decnum(r); }
+  vnl_decnum operator*(const R& r) const {
+    return *this * vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum operator/(const R& r) const { return *this / vnl_decnum(r); }
+  vnl_decnum operator/(const R& r) const {
+    return *this / vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum operator%(const R& r) const { return *this % vnl_decnum(r); }
+  vnl_decnum operator%(const R& r) const {
+    return *this % vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator+=(const R& r) { return *this += vnl_decnum(r); }
+  vnl_decnum& operator+=(const R& r) {
+    return *this += vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator-=(const R& r) { return *this -= vnl_decnum(r); }
+  vnl_decnum& operator-=(const R& r) {
+    return *this -= vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator*=(const R& r) { return *this *= vnl_decnum(r); }
+  vnl_decnum& operator*=(const R& r) {
+    return *this *= vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator/=(const R& r) { return *this /= vnl_decnum(r); }
+  vnl_decnum& operator/=(const R& r) {
+    return *this /= vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  vnl_decnum& operator%=(const R& r) { return *this %= vnl_decnum(r); }
+  vnl_decnum& operator%=(const R& r) {
+    return *this %= vnl_decnum(r);
+  }
 
   vnl_decnum& operator++() { return *this = *this + 1L; }
   vnl_decnum& operator--() { return *this = *this - 1L; }
@@ -124,17 +146,29 @@ class vnl_decnum {
   bool operator<=(const vnl_decnum& r) const { return !(r < *this); }
   bool operator>=(const vnl_decnum& r) const { return !(*this < r); }
   template <class R, if_operand<R> = 0>
-  bool operator==(const R& r) const { return *this == vnl_decnum(r); }
+  bool operator==(const R& r) const {
+    return *this == vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  bool operator!=(const R& r) const { return *this != vnl_decnum(r); }
+  bool operator!=(const R& r) const {
+    return *this != vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  bool operator<(const R& r) const { return *this < vnl_decnum(r); }
+  bool operator<(const R& r) const {
+    return *this < vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  bool operator>(const R& r) const { return *this > vnl_decnum(r); }
+  bool operator>(const R& r) const {
+    return *this > vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  bool operator<=(const R& r) const { return *this <= vnl_decnum(r); }
+  bool operator<=(const R& r) const {
+    return *this <= vnl_decnum(r);
+  }
   template <class R, if_operand<R> = 0>
-  bool operator>=(const R& r) const { return *this >= vnl_decnum(r); }
+  bool operator>=(const R& r) const {
+    return *this >= vnl_decnum(r);
+  }
 
   vnl_decnum abs() const { return sign_ == '-' ? -*this : *this; }
   /// The integer part (toward zero).
@@ -143,7 +177,9 @@ class vnl_decnum {
   vnl_decnum roundup() const { return *this == trunc() ? *this : sign_ == '-' ? trunc() - 1L : trunc() + 1L; }
   vnl_decnum floor() const { return sign_ == '-' ? roundup() : trunc(); }
   vnl_decnum ceil() const { return sign_ == '-' ? trunc() : roundup(); }
-  vnl_decnum pow(unsigned long p) const { return p == 0 ? vnl_decnum(1L) : p == 1 ? *this : pow(p / 2) * pow((p + 1) / 2); }
+  vnl_decnum pow(unsigned long p) const {
+    return p == 0 ? vnl_decnum(1L) : p == 1 ? *this : pow(p / 2) * pow((p + 1) / 2);
+  }
 
  private:
   vnl_decnum(char s, std::string d, long e) : sign_(s), data_(std::move(d)), exp_(e) {}

@@ -35,9 +35,7 @@ class vnl_finite_int {
 
   Base& operator+=(const Base& r) { return *this = Base(val_ + r.val_); }
   Base& operator-=(const Base& r) { return *this = Base(val_ - r.val_); }
-  Base& operator*=(const Base& r) {
-    return *this = Base(static_cast<int>(static_cast<long long>(val_) * r.val_ % N));
-  }
+  Base& operator*=(const Base& r) { return *this = Base(static_cast<int>(static_cast<long long>(val_) * r.val_ % N)); }
   /// Division by a unit (asserts that r is one).
   Base& operator/=(const Base& r) {
     assert(r.is_unit());

@@ -37,7 +37,9 @@ class vnl_scalar_join_iterator {
  public:
   vnl_scalar_join_iterator(const vnl_matrix<T>& relation1, unsigned column1, const vnl_matrix<T>& relation2,
                            unsigned column2)
-      : n1(relation1.rows()), n2(relation2.rows()), I1(sorted_column(relation1, column1)),
+      : n1(relation1.rows()),
+        n2(relation2.rows()),
+        I1(sorted_column(relation1, column1)),
         I2(sorted_column(relation2, column2)) {
     seek_match();
   }

@@ -57,8 +57,8 @@ class vnl_sparse_lst_sqr_function_of {
   virtual void compute_weights(const vnl_vector<T>& a, const vnl_vector<T>& b, const vnl_vector<T>& c,
                                const vnl_vector<T>& e, vnl_vector<T>& weights);
   virtual void apply_weights(const vnl_vector<T>& weights, vnl_vector<T>& e);
-  virtual void apply_weights(const vnl_vector<T>& weights, std::vector<vnl_matrix<T>>& A,
-                             std::vector<vnl_matrix<T>>& B, std::vector<vnl_matrix<T>>& C);
+  virtual void apply_weights(const vnl_vector<T>& weights, std::vector<vnl_matrix<T>>& A, std::vector<vnl_matrix<T>>& B,
+                             std::vector<vnl_matrix<T>>& C);
 
   /// Residual block e_ij; the default only warns (a subclass must override it).
   virtual void fij(int i, int j, const vnl_vector<T>& ai, const vnl_vector<T>& bj, const vnl_vector<T>& c,
@@ -76,8 +76,8 @@ class vnl_sparse_lst_sqr_function_of {
   void fd_jac_Cij(int i, int j, const vnl_vector<T>& ai, const vnl_vector<T>& bj, const vnl_vector<T>& c,
                   vnl_matrix<T>& Cij, T stepsize);
   /// The weight of block (i, j); 1 by default.
-  virtual void compute_weight_ij(int i, int j, const vnl_vector<T>& ai, const vnl_vector<T>& bj,
-                                 const vnl_vector<T>& c, const vnl_vector<T>& fij, T& weight);
+  virtual void compute_weight_ij(int i, int j, const vnl_vector<T>& ai, const vnl_vector<T>& bj, const vnl_vector<T>& c,
+                                 const vnl_vector<T>& fij, T& weight);
   virtual void apply_weight_ij(int i, int j, const T& weight, vnl_vector<T>& fij);
   virtual void apply_weight_ij(int i, int j, const T& weight, vnl_matrix<T>& Aij, vnl_matrix<T>& Bij,
                                vnl_matrix<T>& Cij);

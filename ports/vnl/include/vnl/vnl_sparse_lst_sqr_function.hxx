@@ -54,12 +54,9 @@ vnl_sparse_lst_sqr_function_of<T>::vnl_sparse_lst_sqr_function_of(unsigned int n
 }
 
 template <class T>
-vnl_sparse_lst_sqr_function_of<T>::vnl_sparse_lst_sqr_function_of(const std::vector<unsigned int>& a_sizes,
-                                                                  const std::vector<unsigned int>& b_sizes,
-                                                                  unsigned int num_params_c,
-                                                                  const std::vector<unsigned int>& e_sizes,
-                                                                  const std::vector<std::vector<bool>>& xmask,
-                                                                  UseGradient g, UseWeights w)
+vnl_sparse_lst_sqr_function_of<T>::vnl_sparse_lst_sqr_function_of(
+    const std::vector<unsigned int>& a_sizes, const std::vector<unsigned int>& b_sizes, unsigned int num_params_c,
+    const std::vector<unsigned int>& e_sizes, const std::vector<std::vector<bool>>& xmask, UseGradient g, UseWeights w)
     : residual_indices_(xmask),
       indices_a_(vnl_sparse_lst_sqr_detail::running_offsets(a_sizes)),
       indices_b_(vnl_sparse_lst_sqr_detail::running_offsets(b_sizes)),
@@ -157,26 +154,26 @@ void vnl_sparse_lst_sqr_function_of<T>::apply_weights(const vnl_vector<T>& weigh
 }
 
 template <class T>
-void vnl_sparse_lst_sqr_function_of<T>::fij(int, int, const vnl_vector<T>&, const vnl_vector<T>&,
-                                            const vnl_vector<T>&, vnl_vector<T>&) {
+void vnl_sparse_lst_sqr_function_of<T>::fij(int, int, const vnl_vector<T>&, const vnl_vector<T>&, const vnl_vector<T>&,
+                                            vnl_vector<T>&) {
   std::cerr << "Warning: fij() called but not implemented in derived class\n";
 }
 
 template <class T>
-void vnl_sparse_lst_sqr_function_of<T>::jac_Aij(unsigned int, unsigned int, const vnl_vector<T>&,
-                                                const vnl_vector<T>&, const vnl_vector<T>&, vnl_matrix<T>&) {
+void vnl_sparse_lst_sqr_function_of<T>::jac_Aij(unsigned int, unsigned int, const vnl_vector<T>&, const vnl_vector<T>&,
+                                                const vnl_vector<T>&, vnl_matrix<T>&) {
   std::cerr << "Warning: jac_Aij() called but not implemented in derived class\n";
 }
 
 template <class T>
-void vnl_sparse_lst_sqr_function_of<T>::jac_Bij(unsigned int, unsigned int, const vnl_vector<T>&,
-                                                const vnl_vector<T>&, const vnl_vector<T>&, vnl_matrix<T>&) {
+void vnl_sparse_lst_sqr_function_of<T>::jac_Bij(unsigned int, unsigned int, const vnl_vector<T>&, const vnl_vector<T>&,
+                                                const vnl_vector<T>&, vnl_matrix<T>&) {
   std::cerr << "Warning: jac_Bij() called but not implemented in derived class\n";
 }
 
 template <class T>
-void vnl_sparse_lst_sqr_function_of<T>::jac_Cij(unsigned int, unsigned int, const vnl_vector<T>&,
-                                                const vnl_vector<T>&, const vnl_vector<T>&, vnl_matrix<T>&) {
+void vnl_sparse_lst_sqr_function_of<T>::jac_Cij(unsigned int, unsigned int, const vnl_vector<T>&, const vnl_vector<T>&,
+                                                const vnl_vector<T>&, vnl_matrix<T>&) {
   if (num_params_c_ > 0) std::cerr << "Warning: jac_Cij() called but not implemented in derived class\n";
 }
 
