@@ -13,6 +13,10 @@ DECLARE(test_matrix_update);
 DECLARE(test_integral);
 DECLARE(test_brent_minimizer);
 DECLARE(test_bracket_minimum);
+DECLARE(test_amoeba);
+DECLARE(test_powell);
+DECLARE(test_minimizers);
+DECLARE(test_algo);
 
 void register_tests() {
   REGISTER(test_include);
@@ -26,6 +30,10 @@ void register_tests() {
   REGISTER(test_integral);
   REGISTER(test_brent_minimizer);
   REGISTER(test_bracket_minimum);
+  REGISTER(test_amoeba);
+  REGISTER(test_powell);
+  REGISTER(test_minimizers);
+  REGISTER(test_algo);
 }
 
 DEFINE_MAIN

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Upstream's algo test_algo.cxx: short checks of vnl_adjugate, vnl_svd_economy,
+// vnl_matrix_inverse, vnl_orthogonal_complement, vnl_conjugate_gradient, vnl_lbfgs,
+// vnl_powell and vnl_discrete_diff_fwd/_sym. (Upstream also checks vnl_fft_1d/2d, here in
+// test_fft1d/test_fft2d, and vnl_lbfgsb, vnl_lsqr and vnl_generalized_schur, not ported.)
+#include "testlib/testlib_test.h"
+#include "vnl/algo/vnl_adjugate.h"
+#include "vnl/algo/vnl_conjugate_gradient.h"
+#include "vnl/algo/vnl_discrete_diff.h"
+#include "vnl/algo/vnl_lbfgs.h"
+#include "vnl/algo/vnl_matrix_inverse.h"
+#include "vnl/algo/vnl_orthogonal_complement.h"
+#include "vnl/algo/vnl_powell.h"
+#include "vnl/algo/vnl_svd.h"
+#include "vnl/algo/vnl_svd_economy.h"
+#include "vnl/vnl_least_squares_function.h"
+
+namespace {
+
+void test_adjugate() {
+  int data[] = {1, -1, 1, -1, 1, 1, -1, -1, 1, 1, 1, 1, 1, -1, -1, 1};
+  const vnl_matrix<int> m(data, 4, 4);
+  vnl_matrix<int> identity(4, 4);
+  identity.set_identity();
+  TEST("vnl_adjugate", (m * vnl_adjugate(m) - 16 * identity).array_inf_norm(), 0);
+}
+
+void test_matrix_inverse() {
+  double data[] = {1., -1., 1., -1., 1., 1., -1., -1., 1., 1., 1., 1., 1., -1., -1., 1.};
+  const vnl_matrix<double> m(data, 4, 4);
+  vnl_svd_economy<double> economy(m);
+  vnl_svd<double> svd(m);
+  TEST_NEAR("vnl_svd_economy", std::fabs(economy.V()[0][1]), std::fabs(svd.V()[0][1]), 1e-6);
+  const vnl_matrix<double> inverse = vnl_matrix_inverse<double>(m).as_matrix();
+  vnl_matrix<double> identity(4, 4);
+  identity.set_identity();
+  TEST_NEAR("vnl_matrix_inverse", (m * inverse - identity).array_inf_norm(), 0, 1e-6);
+}
+
+void test_orthogonal_complement() {
+  vnl_vector<double> v(20);
+  for (int i = 0; i < 20; ++i) v[i] = 0.5 + i;
+  const vnl_matrix<double> oc = vnl_orthogonal_complement(v);
+  TEST("vnl_orthogonal_complement is orthogonal to v", (v * oc).inf_norm() < 1e-10, true);
+}
+
+/// Local minimum near (0, 0) at (1, 1), value 1.
+class F_test_powell : public vnl_cost_function {
+ public:
+  F_test_powell() : vnl_cost_function(2) {}
+  double f(const vnl_vector<double>& x) override {
+    const double u = x[0] - x[1] * x[1];
+    const double v = x[1] - 1;
+    return u * u + v * v + 1;
+  }
+  void gradf(const vnl_vector<double>& x, vnl_vector<double>& g) override {
+    g[0] = 2 * x[0] - 2 * x[1] * x[1];
+    g[1] = 4 * x[1] * x[1] * x[1] - 4 * x[0] * x[1] + 2 * x[1] - 2;
+  }
+};
+
+/// A constant whose gradient claims a slope: no step can lower it.
+class F_broken : public vnl_cost_function {
+ public:
+  F_broken() : vnl_cost_function(1) {}
+  double f(const vnl_vector<double>&) override { return 0; }
+  void gradf(const vnl_vector<double>&, vnl_vector<double>& gradient) override { gradient[0] = 1; }
+};
+
+void test_powell() {
+  F_test_powell f;
+  vnl_vector<double> x(2, 0.0);
+  vnl_conjugate_gradient cg(f);
+  TEST("vnl_conjugate_gradient converges", cg.minimize(x), true);
+  TEST_NEAR("vnl_conjugate_gradient", x[0], 1.0, 1e-5);
+  TEST_NEAR("vnl_conjugate_gradient end error", cg.get_end_error(), 1.0, 1e-10);
+  F_broken fb;
+  vnl_vector<double> x2(1, 0.0);
+  vnl_conjugate_gradient cg2(fb);
+  TEST("vnl_conjugate_gradient on broken function should fail", cg2.minimize(x2), false);
+
+  vnl_lbfgs lbfgs(f);
+  x.fill(0);
+  TEST("vnl_lbfgs converges", lbfgs.minimize(x), true);
+  // |g| <= 1e-5 bounds |x - x*| by |g| / 0.34, the Hessian's smallest eigenvalue at (1, 1).
+  TEST_NEAR("vnl_lbfgs", x[1], 1.0, 4e-5);
+  lbfgs.set_g_tolerance(1e-9);
+  x.fill(0);
+  lbfgs.minimize(x);
+  TEST_NEAR("vnl_lbfgs with a tighter gtol", x[1], 1.0, 1e-8);
+  TEST("vnl_lbfgs lowered f", lbfgs.obj_value_reduced(), true);
+  vnl_lbfgs broken(fb);
+  TEST("vnl_lbfgs on broken function should fail", broken.minimize(x2), false);
+
+  vnl_powell powell(&f);
+  x.fill(0);
+  powell.minimize(x);
+  TEST_NEAR("vnl_powell", f.f(x), 1.0, 1e-6);
+}
+
+class F_test_discrete_diff : public vnl_least_squares_function {
+ public:
+  F_test_discrete_diff() : vnl_least_squares_function(2, 2, no_gradient) {}
+  void f(const vnl_vector<double>& x, vnl_vector<double>& fx) override {
+    fx[0] = x[0] - x[1] * x[1];
+    fx[1] = x[1] - 1;
+  }
+};
+
+void test_discrete_diff() {
+  F_test_discrete_diff f;
+  vnl_vector<double> x(2);
+  x[0] = 5.0;
+  x[1] = 9.0;
+  vnl_matrix<double> J(2, 2);
+  TEST("vnl_discrete_diff_fwd succeeds", vnl_discrete_diff_fwd(&f, 0.1, x, J), true);
+  TEST_NEAR("vnl_discrete_diff_fwd", J(0, 1), -18.1, 1e-6);
+  TEST_NEAR("vnl_discrete_diff_fwd, the linear entry", J(0, 0), 1, 1e-9);
+  TEST("vnl_discrete_diff_sym succeeds", vnl_discrete_diff_sym(&f, 0.1, x, J), true);
+  TEST_NEAR("vnl_discrete_diff_sym", J(0, 1), -18, 1e-6);
+}
+
+}  // namespace
+
+static void test_algo() {
+  test_adjugate();
+  test_matrix_inverse();
+  test_orthogonal_complement();
+  test_powell();
+  test_discrete_diff();
+}
+
+TESTMAIN(test_algo)
