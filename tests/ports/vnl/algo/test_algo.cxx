@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Upstream's algo test_algo.cxx: short checks of vnl_adjugate, vnl_svd_economy,
 // vnl_matrix_inverse, vnl_orthogonal_complement, vnl_conjugate_gradient, vnl_lbfgs,
-// vnl_powell and vnl_discrete_diff_fwd/_sym. (Upstream also checks vnl_fft_1d/2d, here in
-// test_fft1d/test_fft2d, and vnl_lbfgsb, vnl_lsqr and vnl_generalized_schur, not ported.)
+// vnl_powell and vnl_discrete_diff_fwd/_sym, plus vnl_least_squares_cost_function. Upstream
+// also checks vnl_fft_1d/2d, vnl_lbfgsb, vnl_lsqr and vnl_generalized_schur, not ported.
 #include "testlib/testlib_test.h"
 #include "vnl/algo/vnl_adjugate.h"
 #include "vnl/algo/vnl_conjugate_gradient.h"
@@ -13,6 +13,7 @@
 #include "vnl/algo/vnl_powell.h"
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/algo/vnl_svd_economy.h"
+#include "vnl/vnl_least_squares_cost_function.h"
 #include "vnl/vnl_least_squares_function.h"
 
 namespace {
@@ -120,6 +121,36 @@ void test_discrete_diff() {
   TEST_NEAR("vnl_discrete_diff_sym", J(0, 1), -18, 1e-6);
 }
 
+/// r = (x0 - x1^2, x1 - 1) with its Jacobian, for vnl_least_squares_cost_function.
+class F_residuals_with_gradient : public F_test_discrete_diff {
+ public:
+  F_residuals_with_gradient() { use_gradient_ = true; }
+  void gradf(const vnl_vector<double>& x, vnl_matrix<double>& J) override {
+    J(0, 0) = 1;
+    J(0, 1) = -2 * x[1];
+    J(1, 0) = 0;
+    J(1, 1) = 1;
+  }
+};
+
+void test_least_squares_cost_function() {
+  F_residuals_with_gradient residuals;
+  vnl_least_squares_cost_function cost(&residuals);
+  vnl_vector<double> x(2);
+  x[0] = 5.0;
+  x[1] = 2.0;
+  TEST_NEAR("vnl_least_squares_cost_function is |r|^2", cost.f(x), 1 + 1, 1e-12);
+  vnl_vector<double> g(2);
+  cost.gradf(x, g);
+  TEST_NEAR("its gradient is 2 J^T r (0)", g[0], 2 * 1, 1e-12);
+  TEST_NEAR("its gradient is 2 J^T r (1)", g[1], 2 * (1 * -4 + 1 * 1), 1e-12);
+  x.fill(0);
+  vnl_lbfgs lbfgs(cost);
+  lbfgs.set_g_tolerance(1e-10);
+  lbfgs.minimize(x);
+  TEST_NEAR("vnl_lbfgs on it finds the zero residual", x[0] + x[1], 2, 1e-6);
+}
+
 }  // namespace
 
 static void test_algo() {
@@ -128,6 +159,7 @@ static void test_algo() {
   test_orthogonal_complement();
   test_powell();
   test_discrete_diff();
+  test_least_squares_cost_function();
 }
 
 TESTMAIN(test_algo)
