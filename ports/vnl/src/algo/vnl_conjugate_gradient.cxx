@@ -23,16 +23,8 @@ void vnl_conjugate_gradient::init(vnl_cost_function& f) {
 bool vnl_conjugate_gradient::minimize(vnl_vector<double>& x) {
   reset();
   final_step_size_ = 0;
-  auto evaluate = [this](const vnl_vector<double>& at, vnl_vector<double>& g) {
-    double value = 0;
-    f_->compute(at, &value, &g);
-    report_eval(value);
-    return value;
-  };
-  vnl_algo_detail::LinePoint here;
-  here.x = x;
-  here.g.set_size(x.size());
-  here.f = evaluate(x, here.g);
+  auto evaluate = vnl_algo_detail::cost_evaluator(*f_, [this](double value) { report_eval(value); });
+  vnl_algo_detail::LinePoint here = vnl_algo_detail::point_at(evaluate, x);
   vnl_vector<double> d = -here.g;
   double last_step = 0, last_slope = 0;
   failure_code_ = TOO_MANY_ITERATIONS;

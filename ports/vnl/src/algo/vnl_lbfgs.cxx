@@ -42,16 +42,8 @@ vnl_vector<double> descent_direction(const vnl_vector<double>& g, const std::deq
 
 bool vnl_lbfgs::minimize(vnl_vector<double>& x) {
   reset();
-  auto evaluate = [this](const vnl_vector<double>& at, vnl_vector<double>& g) {
-    double value = 0;
-    f_->compute(at, &value, &g);
-    report_eval(value);
-    return value;
-  };
-  vnl_algo_detail::LinePoint here;
-  here.x = x;
-  here.g.set_size(x.size());
-  here.f = evaluate(x, here.g);
+  auto evaluate = vnl_algo_detail::cost_evaluator(*f_, [this](double value) { report_eval(value); });
+  vnl_algo_detail::LinePoint here = vnl_algo_detail::point_at(evaluate, x);
   std::deque<Correction> pairs;
   bool ok = false;
   while (true) {

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_vector.h"
 
 namespace vnl_algo_detail {
@@ -19,6 +20,28 @@ struct LinePoint {
   double slope = 0;
   vnl_vector<double> x, g;
 };
+
+/// An evaluator for wolfe_line_search: f and its gradient from `f`, each value passed to
+/// `report` (the minimiser's report_eval).
+template <class Report>
+auto cost_evaluator(vnl_cost_function& f, Report report) {
+  return [&f, report](const vnl_vector<double>& at, vnl_vector<double>& g) {
+    double value = 0;
+    f.compute(at, &value, &g);
+    report(value);
+    return value;
+  };
+}
+
+/// The line point at x, evaluated.
+template <class Evaluate>
+LinePoint point_at(Evaluate& evaluate, const vnl_vector<double>& x) {
+  LinePoint p;
+  p.x = x;
+  p.g.set_size(x.size());
+  p.f = evaluate(x, p.g);
+  return p;
+}
 
 /// `evaluate(x, g)` returns f(x) and writes the gradient to g; `start` holds x, f, g and the
 /// slope there (its step is ignored). On success `out` is the accepted point; on failure (no
