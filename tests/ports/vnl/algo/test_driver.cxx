@@ -17,6 +17,10 @@ DECLARE(test_amoeba);
 DECLARE(test_powell);
 DECLARE(test_minimizers);
 DECLARE(test_algo);
+DECLARE(test_fft1d);
+DECLARE(test_fft2d);
+DECLARE(test_fft);
+DECLARE(test_convolve);
 
 void register_tests() {
   REGISTER(test_include);
@@ -34,6 +38,10 @@ void register_tests() {
   REGISTER(test_powell);
   REGISTER(test_minimizers);
   REGISTER(test_algo);
+  REGISTER(test_fft1d);
+  REGISTER(test_fft2d);
+  REGISTER(test_fft);
+  REGISTER(test_convolve);
 }
 
 DEFINE_MAIN
