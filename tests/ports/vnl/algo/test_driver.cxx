@@ -21,6 +21,8 @@ DECLARE(test_fft1d);
 DECLARE(test_fft2d);
 DECLARE(test_fft);
 DECLARE(test_convolve);
+DECLARE(test_ldl_cholesky);
+DECLARE(test_scatter_3x3);
 
 void register_tests() {
   REGISTER(test_include);
@@ -42,6 +44,8 @@ void register_tests() {
   REGISTER(test_fft2d);
   REGISTER(test_fft);
   REGISTER(test_convolve);
+  REGISTER(test_ldl_cholesky);
+  REGISTER(test_scatter_3x3);
 }
 
 DEFINE_MAIN
