@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Upstream's algo test_algo.cxx: short checks of vnl_adjugate, vnl_svd_economy,
 // vnl_matrix_inverse, vnl_orthogonal_complement, vnl_conjugate_gradient, vnl_lbfgs,
-// vnl_powell and vnl_discrete_diff_fwd/_sym, plus vnl_least_squares_cost_function. Upstream
-// also checks vnl_fft_1d/2d, vnl_lbfgsb, vnl_lsqr and vnl_generalized_schur, not ported.
+// vnl_powell, vnl_fft_1d/2d and vnl_discrete_diff_fwd/_sym, plus vnl_least_squares_cost_function.
+// Upstream also checks vnl_lbfgsb, vnl_lsqr and vnl_generalized_schur, not ported.
+#include <complex>
+#include <vector>
+
 #include "testlib/testlib_test.h"
 #include "vnl/algo/vnl_adjugate.h"
 #include "vnl/algo/vnl_conjugate_gradient.h"
 #include "vnl/algo/vnl_discrete_diff.h"
+#include "vnl/algo/vnl_fft_1d.h"
+#include "vnl/algo/vnl_fft_2d.h"
 #include "vnl/algo/vnl_lbfgs.h"
 #include "vnl/algo/vnl_matrix_inverse.h"
 #include "vnl/algo/vnl_orthogonal_complement.h"
@@ -36,6 +41,22 @@ void test_matrix_inverse() {
   vnl_matrix<double> identity(4, 4);
   identity.set_identity();
   TEST_NEAR("vnl_matrix_inverse", (m * inverse - identity).array_inf_norm(), 0, 1e-6);
+}
+
+void test_fft() {
+  std::vector<std::complex<double>> v(256);
+  for (int i = 0; i < 256; ++i) v[i] = 0.5 + i;
+  vnl_fft_1d<double> fft1d(256);
+  fft1d.fwd_transform(v);
+  fft1d.bwd_transform(v);
+  TEST_NEAR("vnl_fft_1d", std::abs(v[10] - 256 * 10.5), 0.0, 1e-6);
+  vnl_matrix<std::complex<double>> m(10, 9);
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 9; ++j) m[i][j] = 0.5 + i + j;
+  vnl_fft_2d<double> fft2d(10, 9);
+  fft2d.fwd_transform(m);
+  fft2d.bwd_transform(m);
+  TEST_NEAR("vnl_fft_2d", std::abs(m[5][5] - 10 * 9 * 10.5), 0.0, 1e-6);
 }
 
 void test_orthogonal_complement() {
@@ -156,6 +177,7 @@ void test_least_squares_cost_function() {
 static void test_algo() {
   test_adjugate();
   test_matrix_inverse();
+  test_fft();
   test_orthogonal_complement();
   test_powell();
   test_discrete_diff();

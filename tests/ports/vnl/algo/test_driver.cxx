@@ -23,6 +23,9 @@ DECLARE(test_fft);
 DECLARE(test_convolve);
 DECLARE(test_ldl_cholesky);
 DECLARE(test_scatter_3x3);
+DECLARE(test_generalized_eigensystem);
+DECLARE(test_cpoly_roots);
+DECLARE(test_real_eigensystem);
 
 void register_tests() {
   REGISTER(test_include);
@@ -46,6 +49,9 @@ void register_tests() {
   REGISTER(test_convolve);
   REGISTER(test_ldl_cholesky);
   REGISTER(test_scatter_3x3);
+  REGISTER(test_generalized_eigensystem);
+  REGISTER(test_cpoly_roots);
+  REGISTER(test_real_eigensystem);
 }
 
 DEFINE_MAIN
