@@ -26,6 +26,7 @@ DECLARE(test_scatter_3x3);
 DECLARE(test_generalized_eigensystem);
 DECLARE(test_cpoly_roots);
 DECLARE(test_real_eigensystem);
+DECLARE(test_rnpoly_roots);
 
 void register_tests() {
   REGISTER(test_include);
@@ -52,6 +53,7 @@ void register_tests() {
   REGISTER(test_generalized_eigensystem);
   REGISTER(test_cpoly_roots);
   REGISTER(test_real_eigensystem);
+  REGISTER(test_rnpoly_roots);
 }
 
 DEFINE_MAIN

@@ -31,6 +31,7 @@
 #include "vnl/algo/vnl_powell.h"
 #include "vnl/algo/vnl_qr.h"
 #include "vnl/algo/vnl_real_eigensystem.h"
+#include "vnl/algo/vnl_rnpoly_solve.h"
 #include "vnl/algo/vnl_scatter_3x3.h"
 #include "vnl/algo/vnl_simpson_integral.h"
 #include "vnl/algo/vnl_svd.h"
