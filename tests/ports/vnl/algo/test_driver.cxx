@@ -27,6 +27,7 @@ DECLARE(test_generalized_eigensystem);
 DECLARE(test_cpoly_roots);
 DECLARE(test_real_eigensystem);
 DECLARE(test_rnpoly_roots);
+DECLARE(test_gaussian_kernel_1d);
 
 void register_tests() {
   REGISTER(test_include);
@@ -54,6 +55,7 @@ void register_tests() {
   REGISTER(test_cpoly_roots);
   REGISTER(test_real_eigensystem);
   REGISTER(test_rnpoly_roots);
+  REGISTER(test_gaussian_kernel_1d);
 }
 
 DEFINE_MAIN
