@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "inverse_iteration.h"
+
 namespace {
 
 using C = std::complex<double>;
@@ -139,49 +141,6 @@ bool hessenberg_eigenvalues(vnl_matrix<double>& h, std::vector<C>& eigenvalues) 
   return true;
 }
 
-/// A unit eigenvector of a for the eigenvalue lambda, by two steps of inverse iteration.
-vnl_vector<C> eigenvector(const vnl_matrix<double>& a, C lambda, double norm) {
-  const unsigned n = a.rows();
-  // A shift one part in 1e10 off lambda keeps A - lambda I invertible yet close to singular.
-  const C shifted = lambda + C(1e-10 * std::max(norm, 1e-300), 0);
-  vnl_matrix<C> m(n, n);
-  for (unsigned i = 0; i < n; ++i)
-    for (unsigned j = 0; j < n; ++j) m(i, j) = C(a(i, j)) - (i == j ? shifted : C(0));
-  std::vector<unsigned> pivot(n);
-  for (unsigned k = 0; k < n; ++k) {  // LU with partial pivoting, in place
-    unsigned best = k;
-    for (unsigned i = k + 1; i < n; ++i)
-      if (std::abs(m(i, k)) > std::abs(m(best, k))) best = i;
-    pivot[k] = best;
-    if (best != k)
-      for (unsigned j = 0; j < n; ++j) std::swap(m(k, j), m(best, j));
-    if (m(k, k) == C(0)) m(k, k) = C(std::numeric_limits<double>::epsilon() * std::max(norm, 1e-300));
-    for (unsigned i = k + 1; i < n; ++i) {
-      m(i, k) /= m(k, k);
-      for (unsigned j = k + 1; j < n; ++j) m(i, j) -= m(i, k) * m(k, j);
-    }
-  }
-  vnl_vector<C> x(n, C(1));
-  for (int pass = 0; pass < 2; ++pass) {
-    for (unsigned k = 0; k < n; ++k) std::swap(x[k], x[pivot[k]]);
-    for (unsigned i = 0; i < n; ++i)
-      for (unsigned k = 0; k < i; ++k) x[i] -= m(i, k) * x[k];
-    for (unsigned i = n; i-- > 0;) {
-      for (unsigned k = i + 1; k < n; ++k) x[i] -= m(i, k) * x[k];
-      x[i] /= m(i, i);
-    }
-    // Unit length, with the largest component real and positive.
-    unsigned big = 0;
-    for (unsigned i = 1; i < n; ++i)
-      if (std::abs(x[i]) > std::abs(x[big])) big = i;
-    const C phase = x[big] / std::abs(x[big]);
-    double length = 0;
-    for (unsigned i = 0; i < n; ++i) length += std::norm(x[i]);
-    for (unsigned i = 0; i < n; ++i) x[i] /= phase * std::sqrt(length);
-  }
-  return x;
-}
-
 }  // namespace
 
 vnl_real_eigensystem::vnl_real_eigensystem(const vnl_matrix<double>& M)
@@ -197,6 +156,9 @@ vnl_real_eigensystem::vnl_real_eigensystem(const vnl_matrix<double>& M)
   }
   // Pairs adjacent, the positive imaginary part first, as EISPACK gives them.
   const double norm = M.operator_one_norm();
+  vnl_matrix<C> complex_m(n, n);
+  for (unsigned i = 0; i < n; ++i)
+    for (unsigned j = 0; j < n; ++j) complex_m(i, j) = M(i, j);
   for (unsigned k = 0; k < n; ++k) {
     C lambda = eigenvalues[k];
     if (lambda.imag() < 0 && k + 1 < n && eigenvalues[k + 1] == std::conj(lambda)) {
@@ -204,7 +166,7 @@ vnl_real_eigensystem::vnl_real_eigensystem(const vnl_matrix<double>& M)
       lambda = eigenvalues[k];
     }
     D(k, k) = lambda;
-    const vnl_vector<C> v = eigenvector(M, lambda, norm);
+    const vnl_vector<C> v = vnl_algo_detail::inverse_iteration(complex_m, lambda, norm);
     if (lambda.imag() == 0) {
       for (unsigned i = 0; i < n; ++i) {
         V(i, k) = C(v[i].real());

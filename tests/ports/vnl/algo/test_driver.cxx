@@ -28,6 +28,7 @@ DECLARE(test_cpoly_roots);
 DECLARE(test_real_eigensystem);
 DECLARE(test_rnpoly_roots);
 DECLARE(test_gaussian_kernel_1d);
+DECLARE(test_complex_eigensystem);
 
 void register_tests() {
   REGISTER(test_include);
@@ -56,6 +57,7 @@ void register_tests() {
   REGISTER(test_real_eigensystem);
   REGISTER(test_rnpoly_roots);
   REGISTER(test_gaussian_kernel_1d);
+  REGISTER(test_complex_eigensystem);
 }
 
 DEFINE_MAIN
