@@ -29,6 +29,7 @@ DECLARE(test_real_eigensystem);
 DECLARE(test_rnpoly_roots);
 DECLARE(test_gaussian_kernel_1d);
 DECLARE(test_complex_eigensystem);
+DECLARE(test_sparse_lu);
 
 void register_tests() {
   REGISTER(test_include);
@@ -58,6 +59,7 @@ void register_tests() {
   REGISTER(test_rnpoly_roots);
   REGISTER(test_gaussian_kernel_1d);
   REGISTER(test_complex_eigensystem);
+  REGISTER(test_sparse_lu);
 }
 
 DEFINE_MAIN
