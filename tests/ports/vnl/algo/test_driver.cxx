@@ -30,6 +30,7 @@ DECLARE(test_rnpoly_roots);
 DECLARE(test_gaussian_kernel_1d);
 DECLARE(test_complex_eigensystem);
 DECLARE(test_sparse_lu);
+DECLARE(test_sparse_matrix);
 
 void register_tests() {
   REGISTER(test_include);
@@ -60,6 +61,7 @@ void register_tests() {
   REGISTER(test_gaussian_kernel_1d);
   REGISTER(test_complex_eigensystem);
   REGISTER(test_sparse_lu);
+  REGISTER(test_sparse_matrix);
 }
 
 DEFINE_MAIN

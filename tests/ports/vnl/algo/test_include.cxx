@@ -38,6 +38,7 @@
 #include "vnl/algo/vnl_scatter_3x3.h"
 #include "vnl/algo/vnl_simpson_integral.h"
 #include "vnl/algo/vnl_sparse_lu.h"
+#include "vnl/algo/vnl_sparse_symmetric_eigensystem.h"
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/algo/vnl_svd_economy.h"
 #include "vnl/algo/vnl_svd_fixed.h"
