@@ -31,6 +31,7 @@ DECLARE(test_gaussian_kernel_1d);
 DECLARE(test_complex_eigensystem);
 DECLARE(test_sparse_lu);
 DECLARE(test_sparse_matrix);
+DECLARE(test_solve_qp);
 
 void register_tests() {
   REGISTER(test_include);
@@ -62,6 +63,7 @@ void register_tests() {
   REGISTER(test_complex_eigensystem);
   REGISTER(test_sparse_lu);
   REGISTER(test_sparse_matrix);
+  REGISTER(test_solve_qp);
 }
 
 DEFINE_MAIN

@@ -37,6 +37,7 @@
 #include "vnl/algo/vnl_rnpoly_solve.h"
 #include "vnl/algo/vnl_scatter_3x3.h"
 #include "vnl/algo/vnl_simpson_integral.h"
+#include "vnl/algo/vnl_solve_qp.h"
 #include "vnl/algo/vnl_sparse_lu.h"
 #include "vnl/algo/vnl_sparse_symmetric_eigensystem.h"
 #include "vnl/algo/vnl_svd.h"
