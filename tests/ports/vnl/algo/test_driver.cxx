@@ -32,6 +32,7 @@ DECLARE(test_complex_eigensystem);
 DECLARE(test_sparse_lu);
 DECLARE(test_sparse_matrix);
 DECLARE(test_solve_qp);
+DECLARE(test_template_include);
 
 void register_tests() {
   REGISTER(test_include);
@@ -64,6 +65,7 @@ void register_tests() {
   REGISTER(test_sparse_lu);
   REGISTER(test_sparse_matrix);
   REGISTER(test_solve_qp);
+  REGISTER(test_template_include);
 }
 
 DEFINE_MAIN
