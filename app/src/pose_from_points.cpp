@@ -52,11 +52,11 @@ bool invert(const double m[3][3], double inv[3][3]) {
 }
 
 /// Reprojection residuals around a start pose: x = (v, w), R = exp(hat(w)) R0, t = t0 + v.
-class Reprojection : public vnl_least_squares_function {
+class Reprojection : public vnl_least_squares_function_of<real> {
  public:
   Reprojection(const std::vector<Vec3>& points, const std::vector<Vec2>& pixels, const PinholeCamera& camera,
                const Se3& start)
-      : vnl_least_squares_function(6, static_cast<unsigned>(2 * points.size()), no_gradient),
+      : vnl_least_squares_function_of<real>(6, static_cast<unsigned>(2 * points.size()), no_gradient),
         points_(points),
         pixels_(pixels),
         camera_(camera),
@@ -192,7 +192,7 @@ Result<PointPose> pose_from_points(const std::vector<Vec3>& points_in_model, con
   const Se3 linear(rotation, t0 - rotation * points_in_model[0]);
 
   Reprojection residuals(points_in_model, pixels, camera, linear);
-  vnl_levenberg_marquardt lm(residuals);
+  vnl_levenberg_marquardt_of<real> lm(residuals);
   vnl_vector<real> params(6, real(0));
   lm.minimize(params);
   if (residuals.failure) return Error{source, 0, "the points put the model behind the camera"};

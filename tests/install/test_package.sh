@@ -130,7 +130,7 @@ if [ "$mode" = prefix ]; then
     cmake --build "$work/upstream_api" >>"$work/upstream_api.log" 2>&1 ||
     { cat "$work/upstream_api.log"; fail "the upstream-API programs do not build"; }
   run "$work/upstream_api/visp_me_upstream" || fail "visp_me_upstream failed"
-  if [ "$real" = double ]; then run "$work/upstream_api/vnl_upstream" || fail "vnl_upstream failed"; fi
+  run "$work/upstream_api/vnl_upstream" || fail "vnl_upstream failed"
 fi
 
 # A consumer may require the package's `real`; another one is refused with a clear message.

@@ -32,13 +32,13 @@ Mat33 so3_left_jacobian(const Vec3& w) {
   return j;
 }
 
-class PointToLineResiduals : public vnl_least_squares_function {
+class PointToLineResiduals : public vnl_least_squares_function_of<real> {
  public:
   /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
   /// roots of the least-squares weights.
   PointToLineResiduals(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
                        const PinholeCamera& camera, const Se3& start)
-      : vnl_least_squares_function(6, static_cast<unsigned>(matches.size()), use_gradient),
+      : vnl_least_squares_function_of<real>(6, static_cast<unsigned>(matches.size()), use_gradient),
         start_(start),
         start_translation_mm_(real(kMillimetresPerMetre) * start.translation()),
         rotated_(matches.size()),
@@ -147,10 +147,10 @@ class PointToLineResiduals : public vnl_least_squares_function {
 /// its resolution ends this way at its optimum: in millimetres S47.16 often does (frames were
 /// lost in the app tests when these counted as failures). Other codes are failures.
 bool keeps_best_estimate(int code) {
-  return code == vnl_levenberg_marquardt::FAILED_TOO_MANY_ITERATIONS ||
-         code == vnl_levenberg_marquardt::FAILED_FTOL_TOO_SMALL ||
-         code == vnl_levenberg_marquardt::FAILED_XTOL_TOO_SMALL ||
-         code == vnl_levenberg_marquardt::FAILED_GTOL_TOO_SMALL;
+  return code == vnl_levenberg_marquardt_of<real>::FAILED_TOO_MANY_ITERATIONS ||
+         code == vnl_levenberg_marquardt_of<real>::FAILED_FTOL_TOO_SMALL ||
+         code == vnl_levenberg_marquardt_of<real>::FAILED_XTOL_TOO_SMALL ||
+         code == vnl_levenberg_marquardt_of<real>::FAILED_GTOL_TOO_SMALL;
 }
 
 /// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
@@ -160,7 +160,7 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
                 const Se3& start, const PoseParams& params, int max_evaluations, PoseSolution& solution, Se3& pose,
                 std::vector<real>* distances) {
   PointToLineResiduals residuals(matches, weights, camera, start);
-  vnl_levenberg_marquardt lm(residuals);
+  vnl_levenberg_marquardt_of<real> lm(residuals);
   lm.set_max_function_evals(max_evaluations);
   lm.set_x_tolerance(params.x_tolerance);
   lm.set_f_tolerance(params.f_tolerance);

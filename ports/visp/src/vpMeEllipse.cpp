@@ -397,4 +397,49 @@ void vpMeEllipse::track(const vpImage<unsigned char>& I) {
   m00 = kPi * a * b;
   computePointOnEllipse(alpha1, iP1);
   computePointOnEllipse(alpha2, iP2);
+  computeMoments();
+}
+
+void vpMeEllipse::computeMoments() {
+  m10 = m_uc * m00;
+  m01 = m_vc * m00;
+  mu20 = m_n20 * m00;
+  mu11 = m_n11 * m00;
+  mu02 = m_n02 * m00;
+  m20 = mu20 + m10 * m_uc;
+  m11 = mu11 + m10 * m_vc;
+  m02 = mu02 + m01 * m_vc;
+}
+
+void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const vpImagePoint& center_p, real a_p, real b_p,
+                               real e_p, real low_alpha, real high_alpha) {
+  using std::cos;
+  using std::sin;
+  m_trackArc = true;
+  m_uc = center_p.get_u();
+  m_vc = center_p.get_v();
+  a = a_p;
+  b = b_p;
+  e = e_p;
+  ce = cos(e);
+  se = sin(e);
+  computeNijFromAbe();
+  computeKiFromNij();
+  alpha1 = low_alpha;
+  alpha2 = high_alpha < low_alpha ? high_alpha + kTwoPi : high_alpha;
+  computePointOnEllipse(alpha1, iP1);
+  computePointOnEllipse(alpha2, iP2);
+  iPc = center_p;
+  sample(I);
+  track(I);
+}
+
+void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, unsigned int n, vpImagePoint* iP) {
+  initTracking(I, std::vector<vpImagePoint>(iP, iP + n));
+}
+
+void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, unsigned int n, unsigned* i, unsigned* j) {
+  std::vector<vpImagePoint> points(n);
+  for (unsigned int k = 0; k < n; ++k) points[k].set_ij(real(static_cast<int>(i[k])), real(static_cast<int>(j[k])));
+  initTracking(I, points);
 }

@@ -32,7 +32,7 @@ int solves(int count) {
     const std::uint64_t before = fixedpoint::saturation_count();
     // The window holds what a tracker does per frame: build the minimiser, start, minimise.
     edgetrack_count_begin();
-    vnl_levenberg_marquardt lm(f);
+    vnl_levenberg_marquardt_of<real> lm(f);
     vnl_vector<real> x = f.start();
     const bool converged = lm.minimize(x);
     edgetrack_count_end();

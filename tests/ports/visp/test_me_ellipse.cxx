@@ -77,8 +77,58 @@ void test_arc() {
 
 }  // namespace
 
+/// ViSP 3.5's deprecated API, as a program written for Debian's package calls it: the getters
+/// agree with get_ABE and the moments with the area, centre and n_ij, and the old initTracking
+/// forms track the same ellipse.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+void test_deprecated_api() {
+  const double uc = 95, vc = 72;
+  vpMe me;
+  me.setRange(6);
+  me.setSampleStep(10);
+  const vpImage<unsigned char> I = draw(uc, vc);
+  vpImagePoint points[5];
+  unsigned rows[5], cols[5];
+  int k = 0;
+  for (double t : {0.3, 1.5, 2.7, 3.9, 5.1}) {
+    points[k] = on_outline(t, uc, vc, 1.0);
+    rows[k] = static_cast<unsigned>(std::lround(static_cast<double>(points[k].get_i())));
+    cols[k] = static_cast<unsigned>(std::lround(static_cast<double>(points[k].get_j())));
+    ++k;
+  }
+  vpMeEllipse from_array;
+  from_array.setMe(&me);
+  from_array.initTracking(I, 5, points);
+  const vpColVector abe = from_array.get_ABE(), nij = from_array.get_nij();
+  TEST("getA, getB, getE are get_ABE's",
+       from_array.getA() == abe[0] && from_array.getB() == abe[1] && from_array.getE() == abe[2], true);
+  real A = 0, B = 0, E = 0;
+  from_array.getEquationParam(A, B, E);
+  TEST("getEquationParam gives A, B, E", A == abe[0] && B == abe[1] && E == abe[2], true);
+  const double m00 = static_cast<double>(from_array.get_m00());
+  const double u = static_cast<double>(from_array.getCenter().get_u());
+  TEST("get_m00 is the area", from_array.get_m00() == from_array.getArea(), true);
+  // To one part in 1e6 (the products are formed in `real`).
+  const double mu20 = static_cast<double>(nij[0]) * m00, m20 = mu20 + u * m00 * u;
+  TEST_NEAR("m10 = uc m00", from_array.get_m10(), u * m00, 1e-6 * u * m00);
+  TEST_NEAR("mu20 = n20 m00", from_array.get_mu20(), mu20, 1e-6 * mu20);
+  TEST_NEAR("m20 = mu20 + m10 uc", from_array.get_m20(), m20, 1e-6 * m20);
+  vpMeEllipse from_ij;
+  from_ij.setMe(&me);
+  from_ij.initTracking(I, 5, rows, cols);
+  TEST_NEAR("initTracking from i, j arrays tracks the same ellipse", from_ij.get_ABE()[0], abe[0], 1.0);
+  vpMeEllipse from_axes;
+  from_axes.setMe(&me);
+  from_axes.initTracking(I, vpImagePoint(vc - 0.5, uc - 0.5), real(kA), real(kB), real(kE), real(0), real(M_PI));
+  TEST_NEAR("initTracking from centre and axes: the arc's A", from_axes.get_ABE()[0], kA, 1.0);
+  TEST("and only the half arc is sampled", from_axes.getExpectedDensity(), 18u);
+}
+#pragma GCC diagnostic pop
+
 static void test_me_ellipse() {
   test_arc();
+  test_deprecated_api();
   double uc = 95, vc = 72;
   vpMe me;
   me.setRange(6);

@@ -10,14 +10,14 @@ namespace {
 class residuals : public vnl_least_squares_function {
  public:
   explicit residuals(UseGradient g) : vnl_least_squares_function(2, 3, g) {}
-  void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {
-    fx[0] = x[0] - real(1);
-    fx[1] = real(2) * x[1] + real(6);
+  void f(const vnl_vector<double>& x, vnl_vector<double>& fx) override {
+    fx[0] = x[0] - 1.0;
+    fx[1] = 2.0 * x[1] + 6.0;
     fx[2] = x[0] * x[1];
   }
-  void gradf(const vnl_vector<real>& x, vnl_matrix<real>& J) override {
-    J(0, 0) = real(1), J(0, 1) = real(0);
-    J(1, 0) = real(0), J(1, 1) = real(2);
+  void gradf(const vnl_vector<double>& x, vnl_matrix<double>& J) override {
+    J(0, 0) = 1.0, J(0, 1) = 0.0;
+    J(1, 0) = 0.0, J(1, 1) = 2.0;
     J(2, 0) = x[1], J(2, 1) = x[0];
   }
 };

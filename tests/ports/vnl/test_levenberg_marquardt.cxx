@@ -2,13 +2,17 @@
 // vnl_levenberg_marquardt keeps upstream's interface and meaning: it minimises a
 // vnl_least_squares_function with (lmder) or without (lmdif) its Jacobian, reports the counts,
 // start and end errors and termination code, honours its tolerances, reports dodgy input and
-// failures of the function, and gives J^T J at the solution. Run for every scalar.
+// failures of the function, and gives J^T J at the solution. Run for every scalar, and as
+// upstream's own test on double, in every build.
+#include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "testlib/testlib_test.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/algo/vnl_levenberg_marquardt.hxx"
+#include "vnl/vnl_double_2.h"
 #include "vnl/vnl_least_squares_function.h"
 #include "vnl_test_types.h"
 
@@ -149,15 +153,120 @@ struct CheckLm {
   }
 };
 
+// Upstream's test as a user writes it: classes derived from vnl_least_squares_function on
+// vnl_vector<double>, minimised by vnl_levenberg_marquardt, whatever `real` is.
+struct vnl_rosenbrock : public vnl_least_squares_function {
+  explicit vnl_rosenbrock(bool with_grad) : vnl_least_squares_function(2, 2, with_grad ? use_gradient : no_gradient) {}
+  void f(const vnl_vector<double>& x, vnl_vector<double>& y) override {
+    y[0] = 10 * (x[1] - x[0] * x[0]);
+    y[1] = 1 - x[0];
+  }
+  void gradf(const vnl_vector<double>& x, vnl_matrix<double>& J) override {
+    J[0][0] = -20 * x[0];
+    J[0][1] = 10;
+    J[1][0] = -1;
+    J[1][1] = 0;
+  }
+};
+
+struct linear_est : public vnl_least_squares_function {
+  linear_est(const vnl_matrix<double>& A, const vnl_vector<double>& b, bool with_grad)
+      : vnl_least_squares_function(A.cols(), A.rows(), with_grad ? use_gradient : no_gradient), A_(A), b_(b) {}
+  void f(const vnl_vector<double>& x, vnl_vector<double>& y) override { y = A_ * x - b_; }
+  void gradf(const vnl_vector<double>&, vnl_matrix<double>& J) override { J = A_; }
+  vnl_matrix<double> A_;
+  vnl_vector<double> b_;
+};
+
+void do_rosenbrock_test(bool with_grad) {
+  vnl_rosenbrock f(with_grad);
+  vnl_levenberg_marquardt lm(f);
+  vnl_double_2 x0(2.7, -1.3);
+  vnl_vector<double> x1 = x0.as_vector();
+  if (f.has_gradient())
+    lm.minimize_using_gradient(x1);
+  else
+    lm.minimize_without_gradient(x1);
+  const double err = std::abs(x1[0] - 1) + std::abs(x1[1] - 1);
+  TEST_NEAR(std::string("upstream's Rosenbrock on double converges to (1, 1) ") + (with_grad ? "with" : "without") +
+                " the gradient",
+            err, 0.0, 1e-10);
+  constexpr bool on_double = std::is_base_of_v<vnl_levenberg_marquardt_of<double>, vnl_levenberg_marquardt> &&
+                            std::is_base_of_v<vnl_least_squares_function_of<double>, vnl_least_squares_function>;
+  TEST("the upstream classes are the double instantiation", on_double, true);
+  // The fixed-size overload and the one-call form.
+  x0 = vnl_double_2(2.7, -1.3);
+  TEST("minimize on a vnl_double_2", lm.minimize(x0), true);
+  TEST_NEAR("moves the vnl_double_2 to (1, 1)", std::abs(x0[0] - 1) + std::abs(x0[1] - 1), 0.0, 1e-10);
+  const vnl_vector<double> x2 = vnl_levenberg_marquardt_minimize(f, vnl_double_2(2.7, -1.3).as_vector());
+  TEST_NEAR("vnl_levenberg_marquardt_minimize reaches (1, 1)", std::abs(x2[0] - 1) + std::abs(x2[1] - 1), 0.0, 1e-10);
+}
+
+void do_linear_test(bool with_grad) {
+  vnl_matrix<double> A(6, 2, 1.0);
+  vnl_vector<double> b(6);
+  const double column[6] = {10, 15, 5.1, 20.2, -0.3, 25};
+  const double rhs[6] = {10, 15.5, 4.5, 21, 1, 24.3};
+  for (unsigned i = 0; i < 6; ++i) {
+    A(i, 1) = column[i];
+    b(i) = rhs[i];
+  }
+  linear_est f(A, b, with_grad);
+  vnl_levenberg_marquardt lm(f);
+  vnl_vector<double> x(2, -1000.0);
+  lm.set_x_tolerance(1e-12);
+  lm.set_f_tolerance(1e-12);
+  lm.set_g_tolerance(1e-12);
+  TEST_NEAR("set_x_tolerance sets the difference step to xtol / 1000, as upstream", lm.get_epsilon_function(), 1e-15,
+            1e-28);
+  if (f.has_gradient())
+    lm.minimize_using_gradient(x);
+  else
+    lm.minimize_without_gradient(x);
+  vnl_vector<double> true_x(2);
+  true_x[0] = 0.595607200429874;
+  true_x[1] = 0.969684757298943;
+  TEST_NEAR("upstream's linear fit on double converges to the true estimate", (true_x - x).two_norm(), 0, 1e-6);
+  vnl_matrix<double> true_cov(2, 2);
+  true_cov(0, 0) = 6;
+  true_cov(1, 0) = 75;
+  true_cov(0, 1) = 75;
+  true_cov(1, 1) = 1384.14;
+  const vnl_matrix<double> covar = lm.get_JtJ();
+  TEST_NEAR("and its J^T J is A^T A", (true_cov - covar).array_two_norm(), 0, 1e-5);
+  TEST("the error went down", lm.obj_value_reduced(), true);
+}
+
+void test_difference_jacobians() {
+  vnl_rosenbrock f(true);
+  vnl_vector<double> x(2);
+  x[0] = 0.5;
+  x[1] = 2;
+  vnl_matrix<double> exact(2, 2), central(2, 2), forward(2, 2);
+  f.gradf(x, exact);
+  f.fdgradf(x, central, 1e-4);
+  f.ffdgradf(x, forward, 1e-4);
+  // Residual 0 is quadratic in x[0]: central differences are exact, forward ones are off by 10 h.
+  TEST_NEAR("fdgradf takes central differences", (central - exact).array_inf_norm(), 0.0, 1e-8);
+  TEST_NEAR("ffdgradf takes forward differences", forward(0, 0) - exact(0, 0), -10 * 1e-4, 1e-8);
+  const vnl_nonlinear_minimizer& base = vnl_levenberg_marquardt(f);
+  TEST("vnl_levenberg_marquardt is a vnl_nonlinear_minimizer", base.is_class("vnl_nonlinear_minimizer"), true);
+}
+
 void test_levenberg_marquardt() {
   for_each_test_scalar<CheckLm>();
-  // The drop-in names: vnl_levenberg_marquardt works on vnl_vector<real>.
+  // The tracker's use: the template on vnl_vector<real>.
   Rosenbrock<real> f(true);
-  vnl_levenberg_marquardt lm(f);
+  vnl_levenberg_marquardt_of<real> lm(f);
   vnl_vector<real> x(2);
   x[0] = real(-1.2);
   x[1] = real(1);
-  TEST("vnl_levenberg_marquardt minimises on vnl_vector<real>", lm.minimize(x), true);
+  TEST("vnl_levenberg_marquardt_of<real> minimises on vnl_vector<real>", lm.minimize(x), true);
+  do_rosenbrock_test(true);
+  do_rosenbrock_test(false);
+  do_linear_test(true);
+  do_linear_test(false);
+  test_difference_jacobians();
 }
 
 }  // namespace

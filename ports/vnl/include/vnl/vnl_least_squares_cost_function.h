@@ -1,27 +1,35 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Mirrors VXL's core/vnl/vnl_least_squares_cost_function.h: a vnl_least_squares_function
-/// seen as a vnl_cost_function, f(x) = |residuals(x)|^2 with gradient 2 J^T residuals (left
-/// unchanged when the function has no Jacobian, as upstream), for the cost-function
-/// minimisers. The cost side is double as upstream; the residuals are computed on `real`
-/// (this port's vnl_least_squares_function) and summed in double.
+/// Mirrors VXL's core/vnl/vnl_least_squares_cost_function.h: a vnl_least_squares_function seen
+/// as a vnl_cost_function, f(x) = |fx|^2 with gradient 2 J^T fx (left untouched, as upstream,
+/// when the least-squares function has no Jacobian). On double, as upstream.
 #pragma once
 
-#include "real/real.h"
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_least_squares_function.h"
+#include "vnl/vnl_matrix.h"
+#include "vnl/vnl_vector.h"
 
 class vnl_least_squares_cost_function : public vnl_cost_function {
  public:
-  vnl_least_squares_cost_function(vnl_least_squares_function* f);  // NOLINT(google-explicit-constructor): upstream's
-  double f(const vnl_vector<double>& x) override;
-  void gradf(const vnl_vector<double>& x, vnl_vector<double>& gradient) override;
+  explicit vnl_least_squares_cost_function(vnl_least_squares_function* f)
+      : vnl_cost_function(static_cast<int>(f->get_number_of_unknowns())),
+        storage_(f->get_number_of_residuals()),
+        jacobian_(f->get_number_of_residuals(), f->get_number_of_unknowns()),
+        f_(f) {}
+
+  double f(const vnl_vector<double>& x) override {
+    f_->f(x, storage_);
+    return storage_.squared_magnitude();
+  }
+  void gradf(const vnl_vector<double>& x, vnl_vector<double>& gradient) override {
+    if (!f_->has_gradient()) return;
+    f_->f(x, storage_);
+    f_->gradf(x, jacobian_);
+    gradient = 2.0 * (storage_ * jacobian_);
+  }
 
  protected:
-  vnl_vector<real> storage_;
-  vnl_matrix<real> jacobian_;
+  vnl_vector<double> storage_;
+  vnl_matrix<double> jacobian_;
   vnl_least_squares_function* f_;
-
- private:
-  /// Fills storage_ with the residuals at x; returns x on real.
-  vnl_vector<real> residuals_at(const vnl_vector<double>& x);
 };

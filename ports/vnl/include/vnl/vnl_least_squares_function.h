@@ -2,11 +2,10 @@
 /// Mirrors VXL's core/vnl/vnl_least_squares_function.h: the abstract residual function that
 /// vnl_levenberg_marquardt minimises, built from the number of unknowns, the number of
 /// residuals and whether it provides a Jacobian. Templated on the scalar as
-/// vnl_least_squares_function_of<T>; `vnl_least_squares_function` is the one for `real`
-/// (upstream's, on double, in the double build).
+/// vnl_least_squares_function_of<T> (the tracker uses it on `real`); `vnl_least_squares_function`
+/// is upstream's class, on double in every build.
 #pragma once
 
-#include "real/real.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
 
@@ -28,10 +27,13 @@ class vnl_least_squares_function_of {
 
   /// The residuals fx (size get_number_of_residuals()) at x (size get_number_of_unknowns()).
   virtual void f(const vnl_vector<T>& x, vnl_vector<T>& fx) = 0;
-  /// The Jacobian d fx / d x, residuals by unknowns. The default uses forward differences.
+  /// The Jacobian d fx / d x, residuals by unknowns. The default uses forward differences
+  /// (upstream's only warns), with step sqrt(epsilon).
   virtual void gradf(const vnl_vector<T>& x, vnl_matrix<T>& jacobian);
-  /// Forward-difference Jacobian with absolute step `stepsize`.
+  /// Central-difference Jacobian with absolute step `stepsize`, as upstream.
   void fdgradf(const vnl_vector<T>& x, vnl_matrix<T>& jacobian, T stepsize);
+  /// Forward-difference Jacobian with absolute step `stepsize`, as upstream.
+  void ffdgradf(const vnl_vector<T>& x, vnl_matrix<T>& jacobian, T stepsize);
   /// Called once per iteration with the current estimate; does nothing by default.
   virtual void trace(int iteration, const vnl_vector<T>& x, const vnl_vector<T>& fx);
   /// RMS of the residuals at x.
@@ -41,10 +43,22 @@ class vnl_least_squares_function_of {
   unsigned int get_number_of_residuals() const { return n_; }
   bool has_gradient() const { return use_gradient_; }
 
- private:
+ protected:
+  /// Resizes the problem (upstream's protected init).
+  void init(unsigned int number_of_unknowns, unsigned int number_of_residuals) {
+    p_ = number_of_unknowns;
+    n_ = number_of_residuals;
+  }
+
   unsigned int p_;
   unsigned int n_;
   bool use_gradient_;
 };
 
-using vnl_least_squares_function = vnl_least_squares_function_of<real>;
+/// Upstream's vnl_least_squares_function, on double whatever `real` is; as upstream, it warns
+/// on stderr when built with more unknowns than residuals.
+class vnl_least_squares_function : public vnl_least_squares_function_of<double> {
+ public:
+  vnl_least_squares_function(unsigned int number_of_unknowns, unsigned int number_of_residuals,
+                             UseGradient g = use_gradient);
+};

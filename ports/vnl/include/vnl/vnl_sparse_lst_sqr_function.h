@@ -5,8 +5,8 @@
 /// the mask (a vnl_crs_index) says so and depends on a_i, b_j and c only, so its Jacobian is
 /// the three blocks A_ij, B_ij and C_ij. Subclasses override fij and, with use_gradient,
 /// jac_Aij/jac_Bij/jac_Cij; the fd_ versions give central differences. Templated on the scalar
-/// as vnl_sparse_lst_sqr_function_of<T>; `vnl_sparse_lst_sqr_function` is the one for `real`
-/// (upstream's, on double, in the double build), as vnl_least_squares_function.
+/// as vnl_sparse_lst_sqr_function_of<T>; `vnl_sparse_lst_sqr_function` is upstream's, on
+/// double in every build, as vnl_least_squares_function.
 #pragma once
 
 #include <vector>
@@ -124,4 +124,4 @@ class vnl_sparse_lst_sqr_function_of {
   void dim_warning(unsigned int n_unknowns, unsigned int n_residuals);
 };
 
-using vnl_sparse_lst_sqr_function = vnl_sparse_lst_sqr_function_of<real>;
+using vnl_sparse_lst_sqr_function = vnl_sparse_lst_sqr_function_of<double>;

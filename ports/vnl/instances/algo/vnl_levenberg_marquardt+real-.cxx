@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Instantiates vnl_levenberg_marquardt_of for the configured `real`.
+/// Instantiates vnl_levenberg_marquardt_of for the configured `real` when it is not double (the
+/// double file has that one).
 #include "real/real.h"
 #include "vnl/algo/vnl_levenberg_marquardt.hxx"
 
+#if !defined(EDGETRACK_REAL_DOUBLE)
 VNL_LEVENBERG_MARQUARDT_INSTANTIATE(real);
+#endif

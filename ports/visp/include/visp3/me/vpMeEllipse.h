@@ -13,6 +13,9 @@
 /// outliers (weight <= 0.2), sites outside the arc and sites closer than 0.6 sample steps,
 /// plug holes and extend the ends, and resample when too few remain. It throws vpException
 /// where upstream does. Not ported: display() and the click-based initTracking(I, trackArc).
+/// ViSP 3.5's deprecated API (built in Debian's package) is here too, marked deprecated as
+/// upstream: getA/B/E, getEquationParam, the raw and centred moments, and the initTracking forms
+/// from a centre and axes or from arrays of points; the members it makes public stay protected.
 #pragma once
 
 #include <list>
@@ -64,6 +67,47 @@ class vpMeEllipse : public vpMeTracker {
 #endif
   void track(const vpImage<unsigned char>& I);
 
+  [[deprecated("use get_ABE()")]] real getA() const { return a; }
+  [[deprecated("use get_ABE()")]] real getB() const { return b; }
+  [[deprecated("use get_ABE()")]] real getE() const { return e; }
+  [[deprecated("use get_ABE()")]] void getEquationParam(real& A, real& B, real& E) const {
+    A = a;
+    B = b;
+    E = e;
+  }
+  /// The area and the raw (m10 ... m02) and centred (mu20, mu11, mu02) moments of the ellipse.
+  [[deprecated("use getArea()")]] real get_m00() const { return m00; }
+  [[deprecated("use getCenter() and getArea()")]] real get_m10() const { return m10; }
+  [[deprecated("use getCenter() and getArea()")]] real get_m01() const { return m01; }
+  [[deprecated("use get_nij() and getArea()")]] real get_m11() const { return m11; }
+  [[deprecated("use get_nij() and getArea()")]] real get_m20() const { return m20; }
+  [[deprecated("use get_nij() and getArea()")]] real get_m02() const { return m02; }
+  [[deprecated("use get_nij() and getArea()")]] real get_mu11() const { return mu11; }
+  [[deprecated("use get_nij() and getArea()")]] real get_mu02() const { return mu02; }
+  [[deprecated("use get_nij() and getArea()")]] real get_mu20() const { return mu20; }
+  /// The arc from alpha1 to alpha2 (radians) of the ellipse of centre, semi-axes and angle given.
+  [[deprecated("use initTracking(I, param, pt1, pt2)")]] void initTracking(const vpImage<unsigned char>& I,
+                                                                           const vpImagePoint& center_p, real a_p,
+                                                                           real b_p, real e_p, real low_alpha,
+                                                                           real high_alpha);
+#if defined(EDGETRACK_REAL_S47_16) || defined(EDGETRACK_REAL_S40_23)
+  [[deprecated("use get_ABE()")]] void getEquationParam(double& A, double& B, double& E) const {
+    A = static_cast<double>(a);
+    B = static_cast<double>(b);
+    E = static_cast<double>(e);
+  }
+  [[deprecated("use initTracking(I, param, pt1, pt2)")]] void initTracking(const vpImage<unsigned char>& I,
+                                                                           const vpImagePoint& center_p, double a_p,
+                                                                           double b_p, double e_p, double low_alpha,
+                                                                           double high_alpha) {
+    initTracking(I, center_p, real(a_p), real(b_p), real(e_p), real(low_alpha), real(high_alpha));
+  }
+#endif
+  [[deprecated("use initTracking(I, points)")]] void initTracking(const vpImage<unsigned char>& I, unsigned int n,
+                                                                  vpImagePoint* iP);
+  [[deprecated("use initTracking(I, points)")]] void initTracking(const vpImage<unsigned char>& I, unsigned int n,
+                                                                  unsigned* i, unsigned* j);
+
  protected:
   vpColVector K;
   vpImagePoint iPc;
@@ -73,6 +117,9 @@ class vpMeEllipse : public vpMeTracker {
   real ce = 0, se = 0;
   std::list<real> angle;
   real m00 = 0;
+  real mu11 = 0, mu20 = 0, mu02 = 0;
+  real m10 = 0, m01 = 0;
+  real m11 = 0, m02 = 0, m20 = 0;
   real thresholdWeight = real(0.2);
   real m_alphamin = 0, m_alphamax = 0;
   real m_uc = 0, m_vc = 0;
@@ -103,6 +150,8 @@ class vpMeEllipse : public vpMeTracker {
   /// A site on the ellipse at angle ang, snapped within +-2 pixels; false when lost or outside.
   bool addSite(const vpImage<unsigned char>& I, real ang, vpMeSite& site, real& site_angle);
   void setArcFromEndpoints();
+  /// The deprecated moments from the area, the centre and n_ij.
+  void computeMoments();
   /// The arc from first to last when tracking an arc and both are given, else the whole
   /// ellipse; then the sites are sampled and tracked once.
   void startTracking(const vpImage<unsigned char>& I, const vpImagePoint* first, const vpImagePoint* last);

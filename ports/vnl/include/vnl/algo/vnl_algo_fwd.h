@@ -19,3 +19,9 @@ template <class T>
 struct vnl_matrix_inverse;
 class vnl_simpson_integral;
 class vnl_adaptsimpson_integral;
+struct vnl_amoeba_SimplexCorner;
+class vnl_complex_eigensystem;
+class vnl_conjugate_gradient;
+class vnl_cpoly_roots;
+class vnl_lbfgs;
+class vnl_levenberg_marquardt;

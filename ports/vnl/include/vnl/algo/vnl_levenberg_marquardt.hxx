@@ -3,6 +3,7 @@
 /// a scalar that the library does not instantiate.
 #pragma once
 
+#include <cmath>
 #include <iostream>
 
 #include "netlib/minpack.hxx"
@@ -66,6 +67,7 @@ int vnl_levenberg_marquardt_of<T>::lmder_callback(void* self_pointer, int m, int
   } else {
     vnl_matrix<T>& jacobian = self->jacobian_buffer_;
     f->gradf(xv, jacobian);
+    if (self->check_derivatives_ > 0) self->check_jacobian(xv, jacobian);
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < m; ++i) fjac[i + j * ldfjac] = jacobian(i, j);
     }
@@ -197,7 +199,24 @@ void vnl_levenberg_marquardt_of<T>::diagnose_outcome(std::ostream& s) const {
 }
 
 template <class T>
-vnl_matrix<T> vnl_levenberg_marquardt_of<T>::get_JtJ() const {
+void vnl_levenberg_marquardt_of<T>::check_jacobian(const vnl_vector<T>& x, const vnl_matrix<T>& jacobian) {
+  --this->check_derivatives_;
+  vnl_matrix<T> differences(jacobian.rows(), jacobian.cols());
+  using std::sqrt;
+  f_->ffdgradf(x, differences, sqrt(this->epsfcn));
+  for (unsigned j = 0; j < jacobian.cols(); ++j) {
+    for (unsigned i = 0; i < jacobian.rows(); ++i) {
+      const T gap = jacobian(i, j) - differences(i, j);
+      if (gap * gap > this->epsfcn) {
+        std::cout << "Jac(" << j << ", " << i << ") diff: " << jacobian(i, j) << "  " << differences(i, j) << "  "
+                  << gap << '\n';
+      }
+    }
+  }
+}
+
+template <class T>
+const vnl_matrix<T>& vnl_levenberg_marquardt_of<T>::get_JtJ() {
   // fdjac_ holds R in the upper triangle of MINPACK's column-major array: R(i, j) = fdjac_(j, i).
   const std::size_t n = fdjac_.rows();
   vnl_matrix<T> r(n, n);
@@ -206,11 +225,11 @@ vnl_matrix<T> vnl_levenberg_marquardt_of<T>::get_JtJ() const {
   }
   const vnl_matrix<T> rtr = r.transpose() * r;
   // Column j of the Jacobian was moved to position k with ipvt_[k] == j.
-  vnl_matrix<T> jtj(n, n);
+  jtj_.set_size(n, n);
   for (std::size_t a = 0; a < n; ++a) {
-    for (std::size_t b = 0; b < n; ++b) jtj(ipvt_[a], ipvt_[b]) = rtr(a, b);
+    for (std::size_t b = 0; b < n; ++b) jtj_(ipvt_[a], ipvt_[b]) = rtr(a, b);
   }
-  return jtj;
+  return jtj_;
 }
 
 #define VNL_LEVENBERG_MARQUARDT_INSTANTIATE(T) template class vnl_levenberg_marquardt_of<T>

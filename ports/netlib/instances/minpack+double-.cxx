@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Instantiates our MINPACK routines for double, for upstream's vnl_levenberg_marquardt.
+#include "netlib/minpack.hxx"
+
+NETLIB_MINPACK_INSTANTIATE(double)

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Mirrors VXL's core/vnl/algo/vnl_cpoly_roots.h: the N roots of the monic complex polynomial
+/// t^N + a[0] t^(N-1) + ... + a[N-1], in `solns`. Ours: Aberth-Ehrlich simultaneous iteration
+/// from points on a circle bounding the roots, then one Newton step each (upstream: eigenvalues
+/// of the companion matrix). The order of the roots is not upstream's.
+#pragma once
+
+#include <complex>
+
+#include "vnl/vnl_vector.h"
+
+class vnl_cpoly_roots {
+ public:
+  explicit vnl_cpoly_roots(const vnl_vector<std::complex<double>>& a);
+  vnl_cpoly_roots(const vnl_vector<double>& a_real, const vnl_vector<double>& a_imag);
+
+  vnl_vector<std::complex<double>> solns;
+
+ private:
+  unsigned N;
+  void compute(const vnl_vector<std::complex<double>>& a);
+};
