@@ -150,8 +150,12 @@ class Tracker {
   StepObserver* step_observer_ = nullptr;
   /// The grey frame; on demand, only the current frame's search boxes are up to date.
   vpImage<unsigned char> grey_;
+  // Each frame's points, matches and pose buffers, kept so that a frame allocates nothing once
+  // they have grown to the largest frame seen.
+  std::vector<ControlPoint> sampled_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
+  PoseWorkspace pose_workspace_;
 };
 
 }  // namespace edgetrack
