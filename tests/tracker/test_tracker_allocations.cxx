@@ -22,7 +22,9 @@ static void test_tracker_allocations() {
   if (!model.ok()) return;
   const PinholeCamera camera = qvga_camera();
   const std::vector<Se3> truth = true_poses(Scene::kCube, 2);
+  const AllocationCount at_start = allocation_count();
   Result<Tracker> tracker = Tracker::create(model.value(), camera, truth[0], TrackerParams{});
+  const int64_t created_bytes = allocation_count().live_bytes - at_start.live_bytes;
   TEST("the tracker starts", tracker.ok(), true);
   if (!tracker.ok()) return;
   SceneRenderer renderer(camera, SceneStyle{});
@@ -48,6 +50,8 @@ static void test_tracker_allocations() {
               "(QVGA cube, default settings, real = %s)\n",
               static_cast<unsigned long long>(after[0].allocations - before[0].allocations),
               static_cast<unsigned long long>(after_first), repeats - 1, real_name());
+  std::printf("Tracker heap: %lld bytes live after its first frame (QVGA cube, real = %s)\n",
+              static_cast<long long>(created_bytes + after[0].live_bytes - before[0].live_bytes), real_name());
   TEST("no repeat of the frame after the first allocates", after_first, uint64_t{0});
   TEST("and the live bytes stay the same: nothing accumulates between frames", same_live, true);
   TEST("the frame was tracked", tracker.value().matches().size() > 20, true);
