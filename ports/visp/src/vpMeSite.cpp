@@ -112,9 +112,21 @@ void vpMeSite::initFromImage(const vpImage<unsigned char>& I, const vpMe* me, re
     state = TOO_NEAR;
     return;
   }
-  const int16_t* mask = me->maskWeights(me->maskIndex(alpha));
+  const int16_t* mask = me->maskWeights(maskIndexFor(me));
   convlt = mask_sign * convolve(I, i - half, j - half, mask, static_cast<int>(me->getMaskSize()));
   state = NO_SUPPRESSION;
+}
+
+unsigned int vpMeSite::maskIndexFor(const vpMe* me) {
+  if (me != mask_me_ || !(alpha == mask_alpha_) || me->getMaskNumber() != mask_number_ ||
+      me->getAngleStep() != mask_angle_step_) {
+    mask_me_ = me;
+    mask_alpha_ = alpha;
+    mask_number_ = me->getMaskNumber();
+    mask_angle_step_ = me->getAngleStep();
+    mask_index_ = me->maskIndex(alpha);
+  }
+  return mask_index_;
 }
 
 real vpMeSite::convolution(const vpImage<unsigned char>& I, const vpMe* me) {
@@ -124,7 +136,7 @@ real vpMeSite::convolution(const vpImage<unsigned char>& I, const vpMe* me) {
     j = 0;
     return 0;
   }
-  const int16_t* mask = me->maskWeights(me->maskIndex(alpha));
+  const int16_t* mask = me->maskWeights(maskIndexFor(me));
   return mask_sign * convolve(I, i - half, j - half, mask, static_cast<int>(me->getMaskSize()));
 }
 
@@ -156,7 +168,7 @@ void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_
   const int half = (size - 1) >> 1;
   const int margin = half + me->getStrip();
   const int rows = static_cast<int>(I.getHeight()), cols = static_cast<int>(I.getWidth());
-  const int16_t* mask = me->maskWeights(me->maskIndex(alpha));
+  const int16_t* mask = me->maskWeights(maskIndexFor(me));
   const real s = sin(alpha), c = cos(alpha);
 
   // Likelihood |conv + convlt| > threshold, for integer conv: conv > above or conv < below.
