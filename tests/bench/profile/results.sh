@@ -22,20 +22,23 @@ trap 'rm -rf "$work"' EXIT
 export EDGETRACK_PLUGIN_DIR=$work/plugin
 
 # arm_bench REVISION: prints the path of an ARM S40.23 bench_tracker built from REVISION
-# ("working tree": this checkout, in build/bench-arm-s40_23).
+# ("working tree": this checkout, in build/bench-arm-s40_23). Revisions are built one after the
+# other in the same directories, so that a compiler cache finds what they share.
 arm_bench() {
   if [ "$1" = "working tree" ]; then
     echo "$(bench_tree arm s40_23 bench_tracker)/tests/bench/tracker/bench_tracker"
     return
   fi
-  local src=$work/src-$1 dir=$work/build-$1
+  local src=$work/src dir=$work/build
+  rm -rf "$src" "$dir"
   mkdir -p "$src"
   git -C "$top" archive "$1" | tar -x -C "$src"
   cmake -S "$src" -B "$dir" -G Ninja -DEDGETRACK_REAL=s40_23 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_TOOLCHAIN_FILE="$src/toolchains/armv5te-pxa270.cmake" >"$dir.configure.log" 2>&1 ||
-    { cat "$dir.configure.log" >&2; return 1; }
-  cmake --build "$dir" --target bench_tracker >"$dir.build.log" 2>&1 || { tail -n 40 "$dir.build.log" >&2; return 1; }
-  echo "$dir/tests/bench/tracker/bench_tracker"
+    -DCMAKE_TOOLCHAIN_FILE="$src/toolchains/armv5te-pxa270.cmake" >"$work/configure.log" 2>&1 ||
+    { cat "$work/configure.log" >&2; return 1; }
+  cmake --build "$dir" --target bench_tracker >"$work/build.log" 2>&1 || { tail -n 40 "$work/build.log" >&2; return 1; }
+  cp "$dir/tests/bench/tracker/bench_tracker" "$work/bench_tracker-$1"
+  echo "$work/bench_tracker-$1"
 }
 
 labels=("working tree")
