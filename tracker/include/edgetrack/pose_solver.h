@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Pose calculation (paper, equations (2)-(3)): Levenberg-Marquardt (MINPACK's lmder, the solver
-/// under our vnl_levenberg_marquardt, with the same arguments) over six parameters, minimising the distances between the projected control points and the lines
-/// through their matches along the projected edge normals, with an analytic Jacobian.
+/// under our vnl_levenberg_marquardt, with the same arguments) over six parameters, minimising
+/// the distances between the projected control points and the lines through their matches
+/// along the projected edge normals, with an analytic Jacobian.
 #pragma once
 
 #include <vector>
@@ -75,7 +76,8 @@ struct PoseWorkspace {
   std::vector<real> unweighted[3];    ///< the same before the weights
   std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
   std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
-  std::vector<real> residuals, jacobian, work, scratch, distances, weights, magnitudes;
+  std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
+  std::vector<real> scratch, distances, weights, magnitudes;
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM
