@@ -41,8 +41,7 @@ arm_bench() {
   echo "$work/bench_tracker-$1"
 }
 
-labels=("working tree")
-for r in "${revisions[@]}"; do labels=("$r" "${labels[@]}"); done
+labels=("${revisions[@]}" "working tree")
 declare -A step_row profile_of
 for label in "${labels[@]}"; do
   bench=$(arm_bench "$label")
