@@ -3,7 +3,11 @@
 #include "testlib/testlib_register.h"
 
 DECLARE(test_tracker_allocations);
+DECLARE(test_tracker_allocations_along_a_sequence);
 
-void register_tests() { REGISTER(test_tracker_allocations); }
+void register_tests() {
+  REGISTER(test_tracker_allocations);
+  REGISTER(test_tracker_allocations_along_a_sequence);
+}
 
 DEFINE_MAIN

@@ -4,12 +4,14 @@
 # how many guest instructions it executed, how many of them inside libgcc's soft-float routines,
 # and the same inside the edgetrack_count_begin()/edgetrack_count_end() windows.
 #
-#   count-insns.sh [--out FILE] [--windows FILE] [--mode tb|insn] <arm-binary> [args...]
+#   count-insns.sh [--out FILE] [--windows FILE] [--profile FILE] [--mode tb|insn] <arm-binary> [args...]
 #
 # The program's stdout and stderr pass through and its exit status is returned. The summary line
 #   edgetrack-count total=N softfloat=N windows=N window_total=N window_softfloat=N unbalanced=N
 # goes to FILE with --out, else to stderr; --windows FILE gets one line per window
-# ("window <i> insns=N softfloat=N"). The plugin is a host library, built here on first use with the
+# ("window <i> insns=N softfloat=N"); --profile FILE gets a flat profile of the windows (of the
+# whole run, without markers), most first: "<instructions> <calls> <function>", a block counting
+# for the function it starts in. The plugin is a host library, built here on first use with the
 # host C compiler ($EDGETRACK_HOST_CC, default cc) into $EDGETRACK_PLUGIN_DIR (default
 # $EDGETRACK_BUILD_ROOT/qemu-plugin, else build/qemu-plugin).
 set -euo pipefail
@@ -20,11 +22,12 @@ sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
 
 usage() { sed -n '7p' "$0" | sed 's/^# *//' >&2; exit 2; }
 
-out= windows= mode=tb
+out= windows= profile= mode=tb
 while [ $# -gt 0 ]; do
   case $1 in
     --out) out=$2; shift 2 ;;
     --windows) windows=$2; shift 2 ;;
+    --profile) profile=$2; shift 2 ;;
     --mode) mode=$2; shift 2 ;;
     --) shift; break ;;
     -*) usage ;;
@@ -86,10 +89,24 @@ end=$(marker_address edgetrack_count_end)
 [ -n "$begin" ] && args+=",begin=$begin"
 [ -n "$end" ] && args+=",end=$end"
 [ -n "$windows" ] && args+=",windows=$(escape "$windows")"
+[ -n "$profile" ] && args+=",profile=$(escape "$work/blocks")"
 
 status=0
 qemu-arm -cpu pxa270 -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
 if [ -z "$out" ]; then
   if [ -s "$work/summary" ]; then cat "$work/summary" >&2; else echo "count-insns: the plugin wrote no summary" >&2; fi
+fi
+if [ -n "$profile" ]; then
+  # Blocks and code symbols, both by address, walked together: each block counts for the last
+  # symbol at or below its start, and a block starting at the symbol is one call of it.
+  hex_to_dec='function hex(s,   v, i) { v = 0; s = tolower(s); for (i = 1; i <= length(s); ++i) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }'
+  awk "$hex_to_dec"' NF == 3 || NF == 4 { type = $(NF-1) } type ~ /^[TtWw]$/ { a = hex($1); printf "%d S %s\n", a - a % 2, $NF }' \
+    "$work/symbols" >"$work/keyed"
+  awk "$hex_to_dec"' { printf "%d B %d %d\n", hex($1), $2 * $3, $3 }' "$work/blocks" >>"$work/keyed"
+  sort -k1,1n -k2,2r "$work/keyed" |
+    awk '$2 == "S" { name = $3; at = $1; next }
+         { total[name] += $3; if ($1 == at) calls[name] += $4 }
+         END { for (n in total) printf "%d %d %s\n", total[n], calls[n], n }' |
+    sort -k1,1nr | $triple-c++filt >"$profile"
 fi
 exit $status

@@ -11,6 +11,9 @@
 ///                   block only stops early on a guest fault; insn: one inline add per instruction
 ///   out=<file>      where the summary line goes (default: QEMU's log, i.e. stderr)
 ///   windows=<file>  one line per closed window, in order
+///   profile=<file>  one line per translated block that ran inside a window (or anywhere, without
+///                   markers): "<start-hex> <instructions> <executions>"; count-insns.sh sums
+///                   them per function. Costs a callback per executed block.
 ///
 /// Summary line: `edgetrack-count total=N softfloat=N windows=N window_total=N
 /// window_softfloat=N unbalanced=N`. A window counts from the first instruction of
@@ -35,6 +38,13 @@ typedef struct {
   uint64_t end;
 } Range;
 
+/// One translated block, for the profile: where it starts, its length, and how often it ran.
+typedef struct {
+  uint64_t start;
+  uint64_t insns;
+  uint64_t executions;
+} Block;
+
 typedef struct {
   // Updated by code QEMU emits inline: every executed instruction, and those in soft-float code.
   Counts all;
@@ -47,6 +57,9 @@ typedef struct {
   Counts* window_log;
   size_t window_log_size;
   size_t window_log_capacity;
+  Block** blocks;
+  size_t blocks_size;
+  size_t blocks_capacity;
   // Configuration.
   Range* softfloat;
   size_t softfloat_size;
@@ -55,6 +68,7 @@ typedef struct {
   int per_insn;
   const char* out_path;
   const char* windows_path;
+  const char* profile_path;
 } State;
 
 static State state;
@@ -158,6 +172,24 @@ static Counts* block_tail(struct qemu_plugin_tb* tb, size_t first) {
   return tail;
 }
 
+static void on_block(unsigned int vcpu_index, void* userdata) {
+  (void)vcpu_index;
+  if (state.depth > 0 || !state.begin_addr) ++((Block*)userdata)->executions;
+}
+
+/// A block translated again (QEMU retranslates) gets a record of its own; the script sums them.
+static void profile_block(struct qemu_plugin_tb* tb) {
+  Block* block = calloc(1, sizeof(Block));
+  block->start = qemu_plugin_tb_vaddr(tb);
+  block->insns = qemu_plugin_tb_n_insns(tb);
+  if (state.blocks_size == state.blocks_capacity) {
+    state.blocks_capacity = state.blocks_capacity ? 2 * state.blocks_capacity : 4096;
+    state.blocks = realloc(state.blocks, state.blocks_capacity * sizeof(Block*));
+  }
+  state.blocks[state.blocks_size++] = block;
+  qemu_plugin_register_vcpu_tb_exec_cb(tb, on_block, QEMU_PLUGIN_CB_NO_REGS, block);
+}
+
 static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb* tb) {
   (void)id;
   const size_t n = qemu_plugin_tb_n_insns(tb);
@@ -180,12 +212,26 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb* tb) {
       qemu_plugin_register_vcpu_insn_exec_cb(insn, on_end, QEMU_PLUGIN_CB_NO_REGS, block_tail(tb, i));
     }
   }
+  if (state.profile_path) profile_block(tb);
   if (!state.per_insn) {
     qemu_plugin_register_vcpu_tb_exec_inline(tb, QEMU_PLUGIN_INLINE_ADD_U64, &state.all.insns, n);
     if (softfloat > 0) {
       qemu_plugin_register_vcpu_tb_exec_inline(tb, QEMU_PLUGIN_INLINE_ADD_U64, &state.all.softfloat, softfloat);
     }
   }
+}
+
+static void write_profile(void) {
+  FILE* file = fopen(state.profile_path, "w");
+  if (!file) {
+    fprintf(stderr, "insn_count: cannot write %s\n", state.profile_path);
+    return;
+  }
+  for (size_t i = 0; i < state.blocks_size; ++i) {
+    const Block* b = state.blocks[i];
+    if (b->executions > 0) fprintf(file, "%" PRIx64 " %" PRIu64 " %" PRIu64 "\n", b->start, b->insns, b->executions);
+  }
+  fclose(file);
 }
 
 static void report_at_exit(qemu_plugin_id_t id, void* userdata) {
@@ -205,6 +251,7 @@ static void report_at_exit(qemu_plugin_id_t id, void* userdata) {
     if (state.out_path) fprintf(stderr, "insn_count: cannot write %s\n", state.out_path);
     qemu_plugin_outs(line);
   }
+  if (state.profile_path) write_profile();
   if (state.windows_path) {
     FILE* log = fopen(state.windows_path, "w");
     if (!log) {
@@ -246,6 +293,8 @@ EDGETRACK_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_
       state.out_path = value;
     } else if ((value = value_of(argv[i], "windows"))) {
       state.windows_path = value;
+    } else if ((value = value_of(argv[i], "profile"))) {
+      state.profile_path = value;
     } else {
       fprintf(stderr, "insn_count: unknown argument %s\n", argv[i]);
       return -1;

@@ -112,6 +112,13 @@ void sample_circle(const Circle& circle, int primitive, const PinholeCamera& cam
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params) {
   std::vector<ControlPoint> points;
+  sample_control_points(model, camera, camera_from_model, params, points);
+  return points;
+}
+
+void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                           const SamplingParams& params, std::vector<ControlPoint>& points) {
+  points.clear();
   const Window window{real(params.border), real(camera.width - 1 - params.border), real(params.border),
                       real(camera.height - 1 - params.border)};
   for (size_t e = 0; e < model.edges.size(); ++e)
@@ -128,15 +135,20 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
   for (size_t k = 0; k < model.circles.size(); ++k)
     sample_circle(model.circles[k], circle_primitive(model, static_cast<int>(k)), camera, camera_from_model,
                   params, window, points);
-  return points;
 }
 
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids) {
   std::vector<ControlPoint> visible;
+  keep_visible(points, edge_ids, visible);
+  return visible;
+}
+
+void keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids,
+                  std::vector<ControlPoint>& visible) {
+  visible.clear();
   visible.reserve(points.size());
   for (const ControlPoint& p : points)
     if (edge_ids.shows(p.edge, p.pixel, p.direction)) visible.push_back(p);
-  return visible;
 }
 
 }  // namespace edgetrack

@@ -85,9 +85,4 @@ Mat33 operator*(const Mat33& a, const Mat33& b) {
   return r;
 }
 
-Vec3 operator*(const Mat33& a, const Vec3& v) {
-  return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z, a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
-          a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
-}
-
 }  // namespace edgetrack

@@ -172,8 +172,15 @@ void add_alternatives(vpMeSite& site, const vpImage<unsigned char>& grey, const 
 
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                                            const vpMe& me, int hypotheses) {
-  using std::atan2;
   std::vector<EdgeMatch> matches;
+  search_moving_edges(grey, points, me, hypotheses, matches);
+  return matches;
+}
+
+void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         int hypotheses, std::vector<EdgeMatch>& matches) {
+  using std::atan2;
+  matches.clear();
   matches.reserve(points.size());
   for (const ControlPoint& point : points) {
     vpMeSite site;
@@ -191,7 +198,6 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
       add_alternatives(site, grey, me, hypotheses, match);
     }
   }
-  return matches;
 }
 
 }  // namespace edgetrack

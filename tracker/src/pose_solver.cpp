@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Point-to-line pose refinement with vnl_levenberg_marquardt and an analytic Jacobian.
+/// Point-to-line pose refinement with MINPACK's lmder (as vnl_levenberg_marquardt drives it) and
+/// an analytic Jacobian.
 #include "edgetrack/pose_solver.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
+#include "netlib/minpack.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
-#include "vnl/vnl_least_squares_function.h"
 #include "vnl/vnl_rotation_matrix.h"
 
 namespace edgetrack {
@@ -32,113 +33,169 @@ Mat33 so3_left_jacobian(const Vec3& w) {
   return j;
 }
 
-class PointToLineResiduals : public vnl_least_squares_function_of<real> {
+/// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
+/// in the workspace's memory.
+class PointToLineProblem {
  public:
   /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
   /// roots of the least-squares weights.
-  PointToLineResiduals(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
-                       const PinholeCamera& camera, const Se3& start)
-      : vnl_least_squares_function_of<real>(6, static_cast<unsigned>(matches.size()), use_gradient),
-        start_(start),
+  PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
+                     const PinholeCamera& camera, const Se3& start, PoseWorkspace& w)
+      : start_(start),
         start_translation_mm_(real(kMillimetresPerMetre) * start.translation()),
-        rotated_(matches.size()),
-        coefficients_(matches.size()),
-        unweighted_(matches.size()),
-        turned_(matches.size()),
-        moved_(matches.size()) {
-    for (size_t i = 0; i < matches.size(); ++i) {
+        count_(matches.size()),
+        w_(w) {
+    for (int k = 0; k < 3; ++k) {
+      w.rotated[k].resize(count_);
+      w.coefficients[k].resize(count_);
+      w.unweighted[k].resize(count_);
+      w.turned[k].resize(count_);
+      w.moved[k].resize(count_);
+    }
+    for (size_t i = 0; i < count_; ++i) {
       const EdgeMatch& m = matches[i];
-      rotated_[i] = start.rotation() * (real(kMillimetresPerMetre) * m.point.point_in_model);
+      const Vec3 rotated = start.rotation() * (real(kMillimetresPerMetre) * m.point.point_in_model);
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
       const Vec2& n = m.point.normal;
-      unweighted_[i] = {n.x * camera.px, n.y * camera.py,
-                        n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
-      coefficients_[i] = weights.empty() ? unweighted_[i] : weights[i] * unweighted_[i];
+      const Vec3 unweighted{n.x * camera.px, n.y * camera.py,
+                            n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
+      const Vec3 coefficients = weights.empty() ? unweighted : weights[i] * unweighted;
+      set(w.rotated, i, rotated);
+      set(w.unweighted, i, unweighted);
+      set(w.coefficients, i, coefficients);
     }
   }
 
-  void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {
-    const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
-    const Mat33 r = rotation_exp(w);
-    const Vec3 t = start_translation_mm_ + v;
-    evaluated_ = false;
-    for (size_t i = 0; i < rotated_.size(); ++i) {
-      const Vec3 z = r * rotated_[i];
-      const Vec3 p = z + t;
-      if (p.z <= real(0)) {
-        throw_failure();
-        return;
-      }
-      turned_[i] = z;
-      moved_[i] = p;
-      fx[static_cast<unsigned>(i)] = dot(coefficients_[i], p) / p.z;
+  /// lmder's callback: iflag 1 evaluates the residuals, 2 the Jacobian; -1 stops the solve.
+  static int evaluate(void* self, int, int, const real* x, real* fx, real* fjac, int ldfjac, int iflag) {
+    auto* problem = static_cast<PointToLineProblem*>(self);
+    if (iflag == 1) {
+      ++problem->evaluations_;
+      if (!problem->f(x, fx)) return -1;
+      if (problem->evaluations_ == 1) problem->start_rms_ = rms(fx, problem->count_);
+    } else if (iflag == 2) {
+      if (!problem->gradf(x, fjac, static_cast<size_t>(ldfjac))) return -1;
     }
-    for (unsigned k = 0; k < 6; ++k) evaluated_at_[k] = x[k];
-    evaluated_ = true;
-  }
-
-  void gradf(const vnl_vector<real>& x, vnl_matrix<real>& jacobian) override {
-    // MINPACK asks for the Jacobian where it evaluated last (the start, then each accepted
-    // step), so the rotation and the moved points come from that evaluation.
-    if (!evaluated_at(x)) {
-      vnl_vector<real> fx(get_number_of_residuals());
-      f(x, fx);
-      if (failure) return;
-    }
-    const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
-    for (size_t i = 0; i < rotated_.size(); ++i) {
-      const Vec3& z = turned_[i];
-      const Vec3& p = moved_[i];
-      const real inv_z = real(1) / p.z;
-      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
-      const Vec3& k = coefficients_[i];
-      const real gx = k.x * inv_z;
-      const real gy = k.y * inv_z;
-      const real gz = -(gx * p.x + gy * p.y) * inv_z;
-      const unsigned row = static_cast<unsigned>(i);
-      jacobian(row, 0) = gx;
-      jacobian(row, 1) = gy;
-      jacobian(row, 2) = gz;
-      // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
-      const Vec3 zg = cross(z, Vec3{gx, gy, gz});
-      for (int c = 0; c < 3; ++c)
-        jacobian(row, 3 + static_cast<unsigned>(c)) = zg.x * jl.m[0][c] + zg.y * jl.m[1][c] + zg.z * jl.m[2][c];
-    }
+    return iflag;
   }
 
   /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
-  void signed_distances(const vnl_vector<real>& x, std::vector<real>& out) {
-    if (!evaluated_at(x)) {
-      vnl_vector<real> fx(get_number_of_residuals());
-      f(x, fx);
-    }
-    for (size_t i = 0; i < rotated_.size(); ++i) out[i] = dot(unweighted_[i], moved_[i]) / moved_[i].z;
+  bool signed_distances(const real* x, std::vector<real>& out) {
+    if (!evaluated_at(x) && !f(x, scratch())) return false;
+    const std::vector<real>* u = w_.unweighted;
+    const std::vector<real>* p = w_.moved;
+    for (size_t i = 0; i < count_; ++i) out[i] = (u[0][i] * p[0][i] + u[1][i] * p[1][i] + u[2][i] * p[2][i]) / p[2][i];
+    return true;
   }
 
-  Se3 pose(const vnl_vector<real>& x) const {
+  Se3 pose(const real* x) const {
     const Vec3 w{x[3], x[4], x[5]};
     const real mm(kMillimetresPerMetre);
     return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0] / mm, x[1] / mm, x[2] / mm});
   }
 
+  int evaluations() const { return evaluations_; }
+  real start_rms() const { return start_rms_; }
+
+  /// What vnl_vector::rms computes: sqrt(sum of squares / n).
+  static real rms(const real* v, size_t n) {
+    using std::sqrt;
+    real total(0);
+    for (size_t i = 0; i < n; ++i) total += v[i] * v[i];
+    return n == 0 ? real(0) : sqrt(total / real(static_cast<int>(n)));
+  }
+
  private:
-  bool evaluated_at(const vnl_vector<real>& x) const {
+  static void set(std::vector<real>* arrays, size_t i, const Vec3& v) {
+    arrays[0][i] = v.x;
+    arrays[1][i] = v.y;
+    arrays[2][i] = v.z;
+  }
+  static bool is_identity(const Mat33& m) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        if (!(m.m[r][c] == real(r == c ? 1 : 0))) return false;
+    return true;
+  }
+  real* scratch() {
+    w_.scratch.resize(count_);
+    return w_.scratch.data();
+  }
+
+  bool f(const real* x, real* fx) {
+    const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
+    const Mat33 r = rotation_exp(w);
+    // At x = 0 (each solve's first evaluation) r is exactly the identity: r * y would be y.
+    const bool turn = !is_identity(r);
+    const Vec3 t = start_translation_mm_ + v;
+    const std::vector<real>* q = w_.rotated;
+    const std::vector<real>* k = w_.coefficients;
+    std::vector<real>* z = w_.turned;
+    std::vector<real>* p = w_.moved;
+    evaluated_ = false;
+    for (size_t i = 0; i < count_; ++i) {
+      const Vec3 rotated{q[0][i], q[1][i], q[2][i]};
+      const Vec3 zi = turn ? r * rotated : rotated;
+      const Vec3 pi = zi + t;
+      if (pi.z <= real(0)) return false;
+      set(z, i, zi);
+      set(p, i, pi);
+      fx[i] = (k[0][i] * pi.x + k[1][i] * pi.y + k[2][i] * pi.z) / pi.z;
+    }
+    for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
+    evaluated_ = true;
+    return true;
+  }
+
+  /// Column c of the Jacobian at fjac + c * ld (MINPACK's column-major layout).
+  bool gradf(const real* x, real* fjac, size_t ld) {
+    // MINPACK asks for the Jacobian where it evaluated last (the start, then each accepted
+    // step), so the rotation and the moved points come from that evaluation.
+    if (!evaluated_at(x) && !f(x, scratch())) return false;
+    const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
+    const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
+    const std::vector<real>* k = w_.coefficients;
+    const std::vector<real>* z = w_.turned;
+    const std::vector<real>* p = w_.moved;
+    real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
+    for (size_t i = 0; i < count_; ++i) {
+      const real inv_z = real(1) / p[2][i];
+      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
+      const real gx = k[0][i] * inv_z;
+      const real gy = k[1][i] * inv_z;
+      const real gz = -(gx * p[0][i] + gy * p[1][i]) * inv_z;
+      column[0][i] = gx;
+      column[1][i] = gy;
+      column[2][i] = gz;
+      // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
+      const Vec3 zg = cross(Vec3{z[0][i], z[1][i], z[2][i]}, Vec3{gx, gy, gz});
+      if (!left) {
+        column[3][i] = zg.x;
+        column[4][i] = zg.y;
+        column[5][i] = zg.z;
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+        column[3 + c][i] = zg.x * jl.m[0][c] + zg.y * jl.m[1][c] + zg.z * jl.m[2][c];
+    }
+    return true;
+  }
+
+  bool evaluated_at(const real* x) const {
     if (!evaluated_) return false;
-    for (unsigned k = 0; k < 6; ++k)
-      if (!(x[k] == evaluated_at_[k])) return false;
+    for (unsigned c = 0; c < 6; ++c)
+      if (!(x[c] == evaluated_at_[c])) return false;
     return true;
   }
 
   Se3 start_;
   Vec3 start_translation_mm_;
-  std::vector<Vec3> rotated_;       ///< R0 * point_in_model in millimetres, fixed during the minimisation
-  std::vector<Vec3> coefficients_;  ///< (a, b, c) of each residual, see the constructor
-  std::vector<Vec3> unweighted_;    ///< the same before the weights
-  /// At the last evaluation (x = evaluated_at_): R(w) R0 * point_in_model and the camera-frame
-  /// point, millimetres, for the Jacobian.
-  std::vector<Vec3> turned_, moved_;
+  size_t count_;
+  PoseWorkspace& w_;
   real evaluated_at_[6] = {};
   bool evaluated_ = false;
+  int evaluations_ = 0;
+  real start_rms_{0};
 };
 
 /// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
@@ -153,34 +210,42 @@ bool keeps_best_estimate(int code) {
          code == vnl_levenberg_marquardt_of<real>::FAILED_GTOL_TOO_SMALL;
 }
 
-/// One Levenberg-Marquardt solve over `matches` from `start`, stopped after `max_evaluations`
-/// residual evaluations; adds its counts to `solution`. With `distances`, also the unweighted
-/// signed point-to-line distances at the new pose.
+/// One Levenberg-Marquardt solve (MINPACK's lmder with the arguments vnl_levenberg_marquardt
+/// passes it, called directly so that its buffers are the workspace's) over `matches` from
+/// `start`, stopped after `max_evaluations` residual evaluations; adds its counts to
+/// `solution`. With `distances`, also the unweighted signed point-to-line distances at the new
+/// pose.
 bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
-                const Se3& start, const PoseParams& params, int max_evaluations, PoseSolution& solution, Se3& pose,
-                std::vector<real>* distances) {
-  PointToLineResiduals residuals(matches, weights, camera, start);
-  vnl_levenberg_marquardt_of<real> lm(residuals);
-  lm.set_max_function_evals(max_evaluations);
-  lm.set_x_tolerance(params.x_tolerance);
-  lm.set_f_tolerance(params.f_tolerance);
-  lm.set_g_tolerance(params.g_tolerance);
-  vnl_vector<real> x(6, real(0));
-  const bool ok = lm.minimize_using_gradient(x);
-  solution.evaluations += lm.get_num_evaluations();
-  solution.iterations += lm.get_num_jacobian_evaluations();
-  if (solution.evaluations == lm.get_num_evaluations()) solution.start_rms = lm.get_start_error();
-  solution.end_rms = lm.get_end_error();
-  if (!(ok || keeps_best_estimate(lm.get_failure_code())) || residuals.failure) return false;
-  pose = residuals.pose(x);
-  if (distances) residuals.signed_distances(x, *distances);
-  return !residuals.failure;
+                const Se3& start, const PoseParams& params, int max_evaluations, PoseWorkspace& workspace,
+                PoseSolution& solution, Se3& pose, std::vector<real>* distances) {
+  constexpr int n = 6;
+  const int m = static_cast<int>(matches.size());
+  PointToLineProblem problem(matches, weights, camera, start, workspace);
+  workspace.residuals.resize(matches.size());
+  workspace.jacobian.resize(matches.size() * n);
+  workspace.work.resize(matches.size());
+  real x[n] = {}, diag[n] = {}, qtf[n] = {}, wa1[n] = {}, wa2[n] = {}, wa3[n] = {};
+  int ipvt[n] = {};
+  int nfev = 0, njev = 0;
+  const int info = netlib::lmder<real>(&PointToLineProblem::evaluate, &problem, m, n, x, workspace.residuals.data(),
+                                       workspace.jacobian.data(), m, params.f_tolerance, params.x_tolerance,
+                                       params.g_tolerance, max_evaluations, diag, 1, real(100), 0, &nfev, &njev, ipvt,
+                                       qtf, wa1, wa2, wa3, workspace.work.data());
+  solution.evaluations += problem.evaluations();
+  solution.iterations += njev;
+  if (solution.evaluations == problem.evaluations()) solution.start_rms = problem.start_rms();
+  solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), matches.size());
+  const bool ok = info >= vnl_levenberg_marquardt::CONVERGED_FTOL && info <= vnl_levenberg_marquardt::CONVERGED_GTOL;
+  if (!(ok || keeps_best_estimate(info))) return false;
+  pose = problem.pose(x);
+  return !distances || problem.signed_distances(x, *distances);
 }
 
-/// The median of |values| (the distances may be signed).
-real median_of(std::vector<real> values) {
+/// The median of |values| (the distances may be signed); `magnitudes` is work.
+real median_of(const std::vector<real>& signed_values, std::vector<real>& values) {
   using std::fabs;
-  for (real& v : values) v = fabs(v);
+  values.resize(signed_values.size());
+  for (size_t i = 0; i < values.size(); ++i) values[i] = fabs(signed_values[i]);
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   return values[mid];
@@ -219,6 +284,12 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params) {
+  PoseWorkspace workspace;
+  return solve_pose(matches, camera, start, params, workspace);
+}
+
+PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                        const PoseParams& params, PoseWorkspace& workspace) {
   using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
@@ -226,21 +297,25 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   if (matches.size() < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
-  std::vector<real> distances(matches.size()), weights;
+  std::vector<real>& distances = workspace.distances;
+  std::vector<real>& weights = workspace.weights;
+  distances.resize(matches.size());
+  weights.clear();
   Se3 pose;
-  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose, &distances))
+  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, workspace, solution, pose,
+                  &distances))
     return solution;
   solution.camera_from_model = pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(1.4826) * median_of(distances);
+    solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes);
     return solution;
   }
 
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
-    real c = params.tukey_c * real(1.4826) * median_of(distances);
+    real c = params.tukey_c * real(1.4826) * median_of(distances, workspace.magnitudes);
     if (c < params.tukey_floor) c = params.tukey_floor;
     solution.outliers = 0;
     for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
@@ -250,7 +325,8 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
       solution.outliers += matches[i].outlier;
     }
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose, &distances))
+    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, workspace, solution, pose,
+                    &distances))
       break;
     solution.camera_from_model = pose;
   }
@@ -258,7 +334,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(1.4826) * median_of(distances);
+  solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes);
   return solution;
 }
 

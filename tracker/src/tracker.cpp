@@ -113,9 +113,9 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
   else edge_ids_.render(model_, camera_from_model_);
   face_visibility_.update(model_, camera_, camera_from_model_, params_.faces);
-  std::vector<ControlPoint> sampled = sample_control_points(model_, camera_, camera_from_model_, sampling_);
-  face_visibility_.keep_tracked(sampled);
-  visible_ = keep_visible(sampled, edge_ids_);
+  sample_control_points(model_, camera_, camera_from_model_, sampling_, sampled_);
+  face_visibility_.keep_tracked(sampled_);
+  keep_visible(sampled_, edge_ids_, visible_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -123,12 +123,12 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
+  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
-  result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose);
+  result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose, pose_workspace_);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());

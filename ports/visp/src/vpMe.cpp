@@ -106,6 +106,8 @@ unsigned int vpMe::maskIndex(const real& alpha) const {
   while (theta > kPi) theta -= kPi;
   int degrees = static_cast<int>(round(theta * kDegreesPerRadian));
   if (degrees == 180) degrees = 0;
-  const unsigned int index = static_cast<unsigned int>(degrees) / (anglestep == 0 ? 1 : anglestep);
+  // One mask per degree (upstream's default) needs no division: ARMv5TE has no divide instruction.
+  const unsigned int index =
+      anglestep > 1 ? static_cast<unsigned int>(degrees) / anglestep : static_cast<unsigned int>(degrees);
   return index < n_mask ? index : n_mask - 1;
 }

@@ -92,10 +92,11 @@ echo "### Heap allocations per frame"
 echo
 echo "\`tracker_allocation_test\` (tests/tracker): the same QVGA cube frame tracked again and again from the same pose."
 echo
-echo "| build | allocations per Tracker::track |"
-echo "|---|---:|"
+echo "| build | allocations in the first Tracker::track | in the 11 after it |"
+echo "|---|---:|---:|"
 for build in "host, double|$host_dir/tests/tracker/tracker_allocation_test" \
              "ARMv5TE S40.23 (QEMU)|qemu-arm -cpu pxa270 -L /usr/arm-linux-gnueabi $arm_dir/tests/tracker/tracker_allocation_test"; do
-  count=$(${build#*|} test_tracker_allocations | sed -n 's/^Tracker::track: \([0-9]*\) heap.*/\1/p')
-  echo "| ${build%%|*} | $count |"
+  counts=$(${build#*|} test_tracker_allocations |
+    sed -n 's/^Tracker::track: \([0-9]*\) heap allocations in the first frame, \([0-9]*\) in.*/\1 | \2/p')
+  echo "| ${build%%|*} | $counts |"
 done

@@ -70,7 +70,7 @@ int main(int argc, char* argv[]) {
               static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds,
               params.pose.robust_evaluations, params.hypotheses);
   std::printf(
-      "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels\n");
+      "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels jacobians\n");
   for (int k = 0; k < frames; ++k) {
     if (!per_step) edgetrack_count_begin();
     const FrameResult r = tracker.value().track(rgb565_view(images[k])).value();
@@ -78,10 +78,11 @@ int main(int argc, char* argv[]) {
     const Vec3 d = camera_position(r.camera_from_model) - camera_position(truth[k]);
     const double error_mm =  // in double: squares of sub-millimetre values underflow in fixed point
         1000 * std::hypot(static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z));
-    std::printf("frame %d %lld %lld %lld %lld %d %d %d %.4f %d %.4f %u\n", k, static_cast<long long>(r.step_ns[0]),
+    std::printf("frame %d %lld %lld %lld %lld %d %d %d %.4f %d %.4f %u %d\n", k, static_cast<long long>(r.step_ns[0]),
                 static_cast<long long>(r.step_ns[1]), static_cast<long long>(r.step_ns[2]),
                 static_cast<long long>(r.step_ns[3]), r.points_sampled, r.points_matched, r.pose.outliers,
-                static_cast<double>(r.pose.end_rms), r.pose.evaluations, error_mm, r.grey_pixels);
+                static_cast<double>(r.pose.end_rms), r.pose.evaluations, error_mm, r.grey_pixels,
+                r.pose.iterations);
   }
   return 0;
 }

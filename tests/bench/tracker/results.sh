@@ -12,7 +12,7 @@ source "$here/../lib.sh"
 frames=60
 runs=5
 cpi=1.5  # assumed XScale cycles per instruction for the 624 MHz estimate
-target=4000000  # the issue's S40.23 target, guest instructions per frame
+target=2000000  # the issue's S40.23 target, guest instructions per frame
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracker_bench.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -96,8 +96,8 @@ for real in double s40_23; do
   done
 done
 echo
-echo "Target from the issue: under 4 M guest instructions per S40.23 frame and no soft-float routine"
+echo "Target from the issue: at most 2.0 M guest instructions per S40.23 frame and no soft-float routine"
 echo "executed per frame. The paper's 64 ms at 624 MHz is about 40 M cycles."
 awk -v t="$s40_on_demand" -v s="$s40_on_demand_soft" -v target="$target" 'BEGIN {
   printf "S40.23 with on-demand grey: %.3f M per frame (%s), %d instructions in soft-float routines (%s).\n",
-    t/1e6, t < target ? "under 4 M: met" : "not under 4 M: not met", s, s == 0 ? "met" : "not met" }'
+    t/1e6, t <= target ? "at most 2.0 M: met" : "above 2.0 M: not met", s, s == 0 ? "met" : "not met" }'

@@ -42,8 +42,15 @@ struct SamplingParams {
 /// Points within params.border of the image border are dropped. Visibility is not checked here.
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params);
+/// The same into `points` (emptied first; its memory is reused, so a caller that keeps it
+/// allocates only while the point count grows).
+void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                           const SamplingParams& params, std::vector<ControlPoint>& points);
 
 /// Keeps the points whose own edge the Edge-ID buffer shows at their pixel.
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids);
+/// The same into `visible` (emptied first, memory reused).
+void keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids,
+                  std::vector<ControlPoint>& visible);
 
 }  // namespace edgetrack

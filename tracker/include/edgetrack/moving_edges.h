@@ -44,5 +44,8 @@ constexpr int kRefinementReachAcross = 1;
 /// single-hypothesis search.
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                                            const vpMe& me, int hypotheses = 1);
+/// The same into `matches` (emptied first, memory reused).
+void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         int hypotheses, std::vector<EdgeMatch>& matches);
 
 }  // namespace edgetrack

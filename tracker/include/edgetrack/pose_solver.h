@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Pose calculation (paper, equations (2)-(3)): Levenberg-Marquardt (our vnl port) over six
-/// parameters, minimising the distances between the projected control points and the lines
-/// through their matches along the projected edge normals, with an analytic Jacobian.
+/// Pose calculation (paper, equations (2)-(3)): Levenberg-Marquardt (MINPACK's lmder, the solver
+/// under our vnl_levenberg_marquardt, with the same arguments) over six parameters, minimising
+/// the distances between the projected control points and the lines through their matches
+/// along the projected edge normals, with an analytic Jacobian.
 #pragma once
 
 #include <vector>
@@ -65,6 +66,20 @@ struct PoseSolution {
   bool solved = false;  ///< false when there were too few points or LM reported a failure
 };
 
+/// The pose step's scratch memory. A caller that keeps one between solves (the tracker does)
+/// makes no heap allocation once its buffers have reached the largest match count seen; what
+/// it holds between calls means nothing. Per match, the arrays are structures of arrays (one
+/// array per coordinate), the layout of MINPACK's column-major Jacobian.
+struct PoseWorkspace {
+  std::vector<real> rotated[3];       ///< R0 * point_in_model, millimetres
+  std::vector<real> coefficients[3];  ///< (a, b, c) of each weighted residual
+  std::vector<real> unweighted[3];    ///< the same before the weights
+  std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
+  std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
+  std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
+  std::vector<real> scratch, distances, weights, magnitudes;
+};
+
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM
 /// minimises the sum of their squares). p_i(x) projects point_in_model with the pose
 /// R = exp(hat(w)) R0, t = t0 + v for x = (v, w): the exponential map around the start pose
@@ -80,5 +95,8 @@ struct PoseSolution {
 /// step after the first solve. Each match's `chosen` says which hypothesis the last round used.
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
                         const PoseParams& params);
+/// The same in `workspace`'s memory (the same results, bit for bit).
+PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                        const PoseParams& params, PoseWorkspace& workspace);
 
 }  // namespace edgetrack

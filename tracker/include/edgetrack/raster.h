@@ -37,45 +37,89 @@ bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const 
 
 namespace raster_detail {
 
-/// Narrows [lo, hi] to the pixels x where e + (x - x0) * step >= 0 (an edge function, linear
-/// in x along a row), so the inner loop visits covered pixels only: exactly the pixels of the
-/// per-pixel test e_ab >= 0, e_bc >= 0, e_ca >= 0, found with one division per edge and row.
+/// One edge function e + (x - x0) * step of a triangle, row by row (e grows by `row_step` per
+/// row), narrowing each row's [lo, hi] to the pixels x where it is >= 0, so the inner loop visits
+/// covered pixels only: exactly the pixels of the per-pixel test e_ab >= 0, e_bc >= 0, e_ca >= 0.
+/// The row's first (step > 0) or last (step < 0) covered pixel is x0 + ceil(-e / step) or
+/// x0 + floor(e / -step); the quotient and remainder are carried from row to row by additions,
+/// so a triangle costs two divisions per edge instead of one per edge and row (ARMv5TE divides
+/// in software).
 template <class Int>
-void clip_span(Int e, Int step, int x0, int& lo, int& hi) {
-  if (step > 0) {
-    if (e < 0) {
-      const Int first = x0 + (-e + step - 1) / step;
-      if (first > lo) lo = first > Int(hi) + 1 ? hi + 1 : static_cast<int>(first);
-    }
-  } else if (step < 0) {
-    if (e < 0) {
-      hi = lo - 1;
-    } else {
-      const Int last = x0 + e / -step;
-      if (last < hi) hi = last < Int(lo) - 1 ? lo - 1 : static_cast<int>(last);
-    }
-  } else if (e < 0) {
-    hi = lo - 1;
+class EdgeSpan {
+ public:
+  EdgeSpan(Int e, Int step, Int row_step) : e_(e), row_step_(row_step), step_(step) {
+    if (step == 0) return;
+    size_ = step > 0 ? step : -step;
+    const Int n = step > 0 ? -e : e, dn = step > 0 ? -row_step : row_step;
+    floor_divide(n, quotient_, remainder_);
+    floor_divide(dn, quotient_step_, remainder_step_);
   }
-}
+
+  void clip(int x0, int& lo, int& hi) const {
+    if (step_ > 0) {
+      if (e_ < 0) {
+        const Int first = x0 + quotient_ + (remainder_ != 0 ? 1 : 0);
+        if (first > lo) lo = first > Int(hi) + 1 ? hi + 1 : static_cast<int>(first);
+      }
+    } else if (step_ < 0) {
+      if (e_ < 0) {
+        hi = lo - 1;
+      } else {
+        const Int last = x0 + quotient_;
+        if (last < hi) hi = last < Int(lo) - 1 ? lo - 1 : static_cast<int>(last);
+      }
+    } else if (e_ < 0) {
+      hi = lo - 1;
+    }
+  }
+
+  void next_row() {
+    e_ += row_step_;
+    if (step_ == 0) return;
+    quotient_ += quotient_step_;
+    remainder_ += remainder_step_;
+    if (remainder_ >= size_) {
+      remainder_ -= size_;
+      ++quotient_;
+    }
+  }
+
+ private:
+  /// n = q * size_ + r with 0 <= r < size_.
+  void floor_divide(Int n, Int& q, Int& r) const {
+    q = n / size_;
+    r = n - q * size_;
+    if (r < 0) {
+      r += size_;
+      --q;
+    }
+  }
+
+  Int e_, row_step_, step_;
+  Int size_ = 1, quotient_ = 0, remainder_ = 0, quotient_step_ = 0, remainder_step_ = 0;
+};
 
 /// The scan of fill_triangle, with edge functions in `Int`: int32_t when the triangle's bounding
-/// box is small enough for every product to fit, int64_t otherwise.
+/// box is small enough for every product to fit, int64_t otherwise. `plot` is a copy, so that
+/// what it captured stays in registers while the loop stores pixels.
 template <class Int, class Plot>
 void scan_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, int x0, int x1, int y0,
-                   int y1, int64_t gx, int64_t gy, Plot& plot) {
+                   int y1, int64_t gx, int64_t gy, Plot plot) {
   auto edge_at = [](const ScreenVertex& u, const ScreenVertex& v, Int px, Int py) {
     return Int(v.x - u.x) * (py - Int(u.y)) - Int(v.y - u.y) * (px - Int(u.x));
   };
   const Int step = 1 << kSubpixelBits;
-  const Int sx_ab = -Int(b.y - a.y) * step, sx_bc = -Int(c.y - b.y) * step, sx_ca = -Int(a.y - c.y) * step;
+  const Int py0 = Int(y0) << kSubpixelBits, px = Int(x0) << kSubpixelBits;
+  EdgeSpan<Int> ab(edge_at(a, b, px, py0), -Int(b.y - a.y) * step, Int(b.x - a.x) * step);
+  EdgeSpan<Int> bc(edge_at(b, c, px, py0), -Int(c.y - b.y) * step, Int(c.x - b.x) * step);
+  EdgeSpan<Int> ca(edge_at(c, a, px, py0), -Int(a.y - c.y) * step, Int(a.x - c.x) * step);
   const int64_t acc_step = gx * step;
-  for (int y = y0; y <= y1; ++y) {
-    const Int py = Int(y) << kSubpixelBits, px = Int(x0) << kSubpixelBits;
+  for (int y = y0; y <= y1; ++y, ab.next_row(), bc.next_row(), ca.next_row()) {
+    const Int py = Int(y) << kSubpixelBits;
     int lo = x0, hi = x1;
-    clip_span<Int>(edge_at(a, b, px, py), sx_ab, x0, lo, hi);
-    clip_span<Int>(edge_at(b, c, px, py), sx_bc, x0, lo, hi);
-    clip_span<Int>(edge_at(c, a, px, py), sx_ca, x0, lo, hi);
+    ab.clip(x0, lo, hi);
+    bc.clip(x0, lo, hi);
+    ca.clip(x0, lo, hi);
     int64_t acc = gx * ((int64_t(lo) << kSubpixelBits) - a.x) + gy * (int64_t(py) - a.y);
     for (int x = lo; x <= hi; ++x) {
       plot(x, y, static_cast<int32_t>(a.w + (acc >> 8)));

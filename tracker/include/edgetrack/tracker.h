@@ -155,8 +155,12 @@ class Tracker {
   vpImage<unsigned char> grey_;
   /// Borrows the frame's own grey bytes (grey_in_place) during track only.
   vpImage<unsigned char> grey_in_place_;
+  // Each frame's points, matches and pose buffers, kept so that a frame allocates nothing once
+  // they have grown to the largest frame seen.
+  std::vector<ControlPoint> sampled_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
+  PoseWorkspace pose_workspace_;
 };
 
 }  // namespace edgetrack

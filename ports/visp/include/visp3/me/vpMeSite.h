@@ -15,7 +15,8 @@
 ///
 /// Differences from upstream (docs/ME.md): scalars are `real`; no heap allocation per track()
 /// (upstream's getQueryList() is not provided); sine, cosine and mask index once per track();
-/// convolution, likelihood and contrast tests are integer comparisons (exact, see track()).
+/// convolution, likelihood and contrast tests are integer comparisons (exact, see track()); the
+/// mask index is kept for the next convolution() with the same alpha.
 #pragma once
 
 #include <cmath>
@@ -118,6 +119,13 @@ class vpMeSite {
   }
 
  private:
+  /// me's mask index for alpha, kept for the next convolution() with the same alpha and masks
+  /// (a caller reading several pixels of one site computes it once).
+  unsigned int maskIndexFor(const vpMe* me);
+
   vpMeSiteDisplayType selectDisplay = NONE;
   vpMeSiteState state = NO_SUPPRESSION;
+  const vpMe* mask_me_ = nullptr;
+  real mask_alpha_ = 0;
+  unsigned int mask_number_ = 0, mask_angle_step_ = 0, mask_index_ = 0;
 };
