@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Linearised-memory template matching and the pose of a match.
+#include "edgetrack/detector/template_matching.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace edgetrack {
+
+namespace {
+
+/// Adds `count` responses to the scores: the inner loop of the matching.
+void accumulate(const uint8_t* responses, int count, uint16_t* scores) {
+  for (int k = 0; k < count; ++k) scores[k] = static_cast<uint16_t>(scores[k] + responses[k]);
+}
+
+bool better(const TemplateMatch& a, const TemplateMatch& b) {
+  return a.share > b.share || (a.share == b.share && a.template_index < b.template_index);
+}
+
+/// Inserts `m` into `best` (sorted, best first) when it is among the `limit` best.
+void keep_best(const TemplateMatch& m, int limit, std::vector<TemplateMatch>& best) {
+  if (static_cast<int>(best.size()) == limit && !better(m, best.back())) return;
+  best.insert(std::upper_bound(best.begin(), best.end(), m, better), m);
+  if (static_cast<int>(best.size()) > limit) best.pop_back();
+}
+
+}  // namespace
+
+void match_templates(const TemplateSet& set, const ResponseMaps& maps, const MatchParams& params,
+                     std::vector<uint16_t>& scores, std::vector<std::vector<TemplateMatch>>& per_distance,
+                     std::vector<TemplateMatch>& out) {
+  out.clear();
+  per_distance.resize(static_cast<size_t>(set.distance_count));
+  for (std::vector<TemplateMatch>& list : per_distance) list.clear();
+  const int t = maps.step(), gw = maps.grid_width(), gh = maps.grid_height();
+  scores.resize(static_cast<size_t>(gw) * gh);
+  for (size_t index = 0; index < set.templates.size(); ++index) {
+    const Template& tp = set.templates[index];
+    const int valid_w = gw - (tp.width - 1) / t, valid_h = gh - (tp.height - 1) / t;
+    if (valid_w <= 0 || valid_h <= 0) continue;
+    const int span = (valid_h - 1) * gw + valid_w;
+    std::fill(scores.begin(), scores.begin() + span, uint16_t(0));
+    for (int f = tp.first; f < tp.first + tp.count; ++f) {
+      const TemplateFeature& feature = set.features[static_cast<size_t>(f)];
+      const uint8_t* run = maps.linear(feature.bin, feature.x % t, feature.y % t) + (feature.y / t) * gw + feature.x / t;
+      accumulate(run, span, scores.data());
+    }
+    int best = -1, best_i = 0, best_j = 0;
+    for (int j = 0; j < valid_h; ++j) {
+      const uint16_t* row = &scores[static_cast<size_t>(j) * gw];
+      for (int i = 0; i < valid_w; ++i) {
+        if (row[i] > best) {
+          best = row[i];
+          best_i = i;
+          best_j = j;
+        }
+      }
+    }
+    TemplateMatch m;
+    m.template_index = static_cast<int>(index);
+    m.x = best_i * t;
+    m.y = best_j * t;
+    m.score = best;
+    m.share = real(best) / real(kBestSimilarity * tp.count);
+    if (m.share >= params.min_share)
+      keep_best(m, params.max_candidates, per_distance[static_cast<size_t>(tp.distance_index)]);
+  }
+  for (const std::vector<TemplateMatch>& list : per_distance) out.insert(out.end(), list.begin(), list.end());
+  std::sort(out.begin(), out.end(), better);
+}
+
+Se3 pose_of_match(const TemplateSet& set, const TemplateMatch& match, int t) {
+  using std::atan2;
+  const Template& tp = set.templates[static_cast<size_t>(match.template_index)];
+  const PinholeCamera camera = set.matching_camera();
+  const real bias = real(t - 1) / real(2);
+  const Vec2 centre{real(match.x) + bias + tp.anchor.x, real(match.y) + bias + tp.anchor.y};
+  const Vec3 ray = normalized(camera.unproject(centre, real(1)));
+  // The rotation taking the optical axis onto the ray, about their common normal.
+  const Vec3 axis{-ray.y, ray.x, real(0)};
+  const real sine = norm(axis);
+  Mat33 turn = Mat33::identity();
+  if (sine > real(0)) turn = rotation_exp(atan2(sine, ray.z) / sine * axis);
+  const Mat33 rotation = turn * tp.camera_from_model.rotation();
+  const Vec3 translation = tp.distance * ray - rotation * set.extent.centre;
+  return Se3(rotation, translation);
+}
+
+}  // namespace edgetrack
