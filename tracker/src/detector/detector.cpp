@@ -2,21 +2,14 @@
 /// The detector: template matching, then refinement by the tracker.
 #include "edgetrack/detector/detector.h"
 
-#include <cstdio>
 #include <utility>
 
+#include "edgetrack/detector/template_io.h"
 #include "visp3/core/vpImageConvert.h"
 
 namespace edgetrack {
 
 namespace {
-
-std::string camera_text(const PinholeCamera& c) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%.6f %.6f %.6f %.6f %dx%d", static_cast<double>(c.px), static_cast<double>(c.py),
-                static_cast<double>(c.u0), static_cast<double>(c.v0), c.width, c.height);
-  return text;
-}
 
 bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
   return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share;
@@ -56,9 +49,9 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   if (templates.model_fingerprint != model_fingerprint(model))
     return Error{"", 0, "the templates were made for another model (" + templates.model_fingerprint + ", this one is " +
                             model_fingerprint(model) + ")"};
-  if (camera_text(templates.camera) != camera_text(camera))
-    return Error{"", 0, "the templates were made for another camera (" + camera_text(templates.camera) +
-                            ", this one is " + camera_text(camera) + ")"};
+  if (camera_description(templates.camera) != camera_description(camera))
+    return Error{"", 0, "the templates were made for another camera (" + camera_description(templates.camera) +
+                            ", this one is " + camera_description(camera) + ")"};
   const ModelExtent extent = model_extent(model);
   const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
   Result<Tracker> tracker = Tracker::create(model, camera, start, tracking);
