@@ -8,17 +8,15 @@ namespace edgetrack {
 
 namespace {
 
-// tan(22.5 deg) and tan(67.5 deg) in 1/256: the bin boundaries are at 22.5 and 67.5 degrees
-// from either axis, so two comparisons with these and one with the diagonal place a direction.
-constexpr int32_t kTan22Q8 = 106;  // 0.4141 (exact 0.41421)
-constexpr int32_t kTan67Q8 = 618;  // 2.4141 (exact 2.41421)
+// tan(11.25), tan(33.75), tan(56.25) and tan(78.75) degrees in 1/256: the bin boundaries, each
+// 11.25 degrees from a bin's centre.
+constexpr int32_t kBoundaryTanQ8[4] = {51, 171, 383, 1287};  // 0.199 0.668 1.496 5.027 (exact 0.199 0.668 1.497 5.027)
 
-/// The bin of a direction in the first quadrant (x >= 0, y >= 0): 0..3.
+/// The bin of a direction in the first quadrant (x >= 0, y >= 0): 0 (along x) to 4 (along y).
 int quadrant_bin(int32_t x, int32_t y) {
-  if (y * 256 < kTan22Q8 * x) return 0;
-  if (y < x) return 1;
-  if (y * 256 < kTan67Q8 * x) return 2;
-  return 3;
+  int bin = 0;
+  while (bin < 4 && y * 256 >= kBoundaryTanQ8[bin] * x) ++bin;
+  return bin;
 }
 
 }  // namespace
@@ -29,7 +27,7 @@ int orientation_bin(int32_t gx, int32_t gy) {
     gy = -gy;
   }
   if (gx >= 0) return quadrant_bin(gx, gy);
-  return 7 - quadrant_bin(-gx, gy);  // mirrored about the y axis: 180 - angle
+  return (kOrientationBins - quadrant_bin(-gx, gy)) % kOrientationBins;  // mirrored about the y axis: 180 - angle
 }
 
 void quantise_orientations(const uint8_t* grey, int width, int height, const OrientationParams& params,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Quantised gradient orientations of a grey image, as LINE-2D uses them (Hinterstoisser et al.,
 /// "Gradient Response Maps for Real-Time Detection of Textureless Objects"): an integer Sobel
-/// gradient, its direction modulo 180 degrees in 8 bins of 22.5 degrees, kept where it is strong
+/// gradient, its direction modulo 180 degrees in 8 bins of 22.5 degrees (centred on 0, 22.5, ...), kept where it is strong
 /// and where it dominates its 3x3 neighbourhood, each pixel a byte with one bit per bin; then the
 /// bins spread over T x T pixels by a bitwise OR. Integers only.
 #pragma once
@@ -21,8 +21,10 @@ struct OrientationImage {
   std::vector<uint8_t> bits;
 };
 
-/// The bin (0..7) of the direction of (gx, gy) modulo 180 degrees: bin b covers
-/// [22.5 b, 22.5 (b + 1)) degrees, measured from +x towards +y (image y down). (0, 0) gives 0.
+/// The bin (0..7) of the direction of (gx, gy) modulo 180 degrees: bin b covers 22.5 b +- 11.25
+/// degrees, measured from +x towards +y (image y down). Centred bins put the gradients of
+/// horizontal and vertical edges, the commonest on made objects, in the middle of a bin, where
+/// noise does not move them to the next one. (0, 0) gives 0.
 int orientation_bin(int32_t gx, int32_t gy);
 
 /// What makes a pixel's orientation count.
