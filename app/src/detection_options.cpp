@@ -45,8 +45,8 @@ std::vector<OptionSpec> template_range_specs() {
       {"--distance", true, "MIN:MAX camera distances to the model's centre, metres (default: from the camera and the model's size)"},
       {"--axis", true, "X,Y,Z the direction (model frame) the view cone is about, from the model towards the camera (default 0,0,1)"},
       {"--cone", true, "half-angle of the view cone, degrees (default 180: the whole sphere)"},
-      {"--subdivisions", true, "icosahedron subdivisions for the view directions, 0-4 (default 1: 42 directions)"},
-      {"--in-plane", true, "rotations about the optical axis per direction (default 12)"},
+      {"--subdivisions", true, "icosahedron subdivisions for the view directions, 0-4 (default 2: 162 directions)"},
+      {"--in-plane", true, "rotations about the optical axis per direction (default 18)"},
   };
 }
 

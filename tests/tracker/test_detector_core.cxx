@@ -221,7 +221,7 @@ void test_cube_templates() {
     // And over the whole object: the features' box spans most of the projected cube's.
     double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
     for (const Vec3& v : model.value().vertices) {
-      const Vec2 p = small.project(t.camera_from_model * v);
+      const Vec2 p = small.project(template_pose(t, s.extent) * v);
       x0 = std::fmin(x0, static_cast<double>(p.x));
       x1 = std::fmax(x1, static_cast<double>(p.x));
       y0 = std::fmin(y0, static_cast<double>(p.y));

@@ -15,6 +15,8 @@ DECLARE(test_status_leaving_view);
 DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
+DECLARE(test_detection_cube);
+DECLARE(test_detection_wood_toy);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -30,6 +32,8 @@ void register_tests() {
   REGISTER(test_visp_config);
   REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
+  REGISTER(test_detection_cube);
+  REGISTER(test_detection_wood_toy);
 }
 
 DEFINE_MAIN

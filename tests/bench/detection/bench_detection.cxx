@@ -84,6 +84,8 @@ int main(int argc, char** argv) {
   }
   const PinholeCamera camera = qvga_camera();
   auto start = std::chrono::steady_clock::now();
+  if (const char* v = std::getenv("FEAT")) o.templates.features = std::atoi(v);
+  if (const char* v = std::getenv("RATIO")) o.templates.views.distance_ratio = real(std::atof(v));
   Result<TemplateSet> templates = make_template_set(model.value(), camera, o.templates);
   if (!templates.ok()) {
     std::fprintf(stderr, "%s\n", templates.error().text().c_str());
@@ -100,9 +102,9 @@ int main(int argc, char** argv) {
   if (const char* v = std::getenv("SHARE")) params.matching.min_share = real(std::atof(v));
   if (const char* v = std::getenv("SPREAD")) params.spread = std::atoi(v);
   if (const char* v = std::getenv("MAG")) params.orientations.min_magnitude = std::atoi(v);
-  if (const char* v = std::getenv("FEAT")) o.templates.features = std::atoi(v);
   TrackerParams tracking;
   if (const char* v = std::getenv("HYP")) tracking.hypotheses = std::atoi(v);
+  if (const char* v = std::getenv("RANGE")) tracking.me.setRange(static_cast<unsigned>(std::atoi(v)));
   Result<Detector> detector =
       Detector::create(model.value(), camera, std::move(templates).value(), params, tracking);
   if (!detector.ok()) {
@@ -110,7 +112,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   const std::vector<Mat33> symmetries = o.scene == Scene::kCube ? cube_symmetries() : std::vector<Mat33>{Mat33::identity()};
-  int found = 0, right = 0, refined = 0;
+  Result<Tracker> ceiling = Tracker::create(model.value(), camera, random_view(model.value(), camera, o.templates.views, 1), tracking);
+  int found = 0, right = 0, refined = 0, truth_kept = 0;
   double total_ms = 0, worst_ms = 0;
   Rgb565Frame frame;
   for (int k = 0; k < o.trials; ++k) {
@@ -136,7 +139,14 @@ int main(int argc, char** argv) {
       for (auto& c : keep_visible(sample_control_points(model.value(), camera, d.camera_from_model, sp), ids)) { int x = (int)c.pixel.x, y = (int)c.pixel.y; if (x >= 0 && x < 320 && y >= 0 && y < 240) { rgb[3*(y*320+x)] = 255; rgb[3*(y*320+x)+1] = 0; rgb[3*(y*320+x)+2] = 0; } }
       std::fwrite(rgb.data(), 1, rgb.size(), out); std::fclose(out);
     }
-    if (std::getenv("CANDS")) for (auto& c : d.refined) { PoseError ce = pose_error(pose_of_match(detector.value().templates(), c.match, 4), truth, extent.centre, symmetries); PoseError re = pose_error(c.camera_from_model, truth, extent.centre, symmetries); std::printf("   cand t%d share %.2f (%.1f mm %.1f deg) -> status %d kept %d/%d scale %.2f (%.1f mm %.1f deg)\n", c.match.template_index, (double)c.match.share, ce.centre_mm, ce.rotation_deg, (int)c.status, c.kept, c.visible, (double)c.residual_scale, re.centre_mm, re.rotation_deg); }
+    if (std::getenv("CANDS")) for (auto& c : d.refined) { PoseError ce = pose_error(pose_of_match(detector.value().templates(), c.match, 4), truth, extent.centre, symmetries); PoseError re = pose_error(c.camera_from_model, truth, extent.centre, symmetries); std::printf("   cand t%d share %.2f (%.1f mm %.1f deg) -> status %d kept %d/%d scale %.2f support %.2f (%.1f mm %.1f deg)\n", c.match.template_index, (double)c.match.share, ce.centre_mm, ce.rotation_deg, (int)c.status, c.kept, c.visible, (double)c.residual_scale, (double)c.support, re.centre_mm, re.rotation_deg); }
+    if (std::getenv("CEIL") && o.with_object) {
+      FrameResult fr;
+      for (int it = 0; it < 6; ++it) { ceiling.value().reset(it == 0 ? truth : fr.camera_from_model); fr = ceiling.value().track(frame.pixels.data()); }
+      const PoseError te = pose_error(fr.camera_from_model, truth, extent.centre, symmetries);
+      truth_kept += te.centre_mm <= 2 && te.rotation_deg <= 2;
+      std::printf("   from truth: %.2f mm %.2f deg status %d\n", te.centre_mm, te.rotation_deg, (int)fr.status);
+    }
     found += d.found;
     right += ok;
     refined += static_cast<int>(d.refined.size());
@@ -145,6 +155,7 @@ int main(int argc, char** argv) {
                   truth_distance * 1000, d.found, ok, static_cast<double>(d.score), static_cast<double>(d.match_share), d.refined.size(),
                   e.centre_mm, e.rotation_deg, ms);
   }
+  if (std::getenv("CEIL")) std::printf("tracked from the truth within 2 mm 2 deg: %d\n", truth_kept);
   std::printf("detection: scene=%s object=%d trials=%d found=%d right=%d rate_percent=%.1f false=%d templates=%zu "
               "template_bytes=%zu make_ms=%.0f mean_ms=%.2f worst_ms=%.2f refined_per_trial=%.1f real=%s\n",
               o.scene == Scene::kCube ? "cube" : "wood_toy", o.with_object, o.trials, found, right,

@@ -2,6 +2,7 @@
 /// The detector: template matching, then refinement by the tracker.
 #include "edgetrack/detector/detector.h"
 
+#include <cmath>
 #include <utility>
 
 #include "edgetrack/detector/template_io.h"
@@ -12,7 +13,7 @@ namespace edgetrack {
 namespace {
 
 bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
-  return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share;
+  return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share && c.support >= params.min_support;
 }
 
 /// Better: acceptable over not, then more control points kept (a pose too far away, whose
@@ -38,6 +39,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.refine_iterations < 1 || p.refine_iterations > 50) return bad("refining frames must be 1 to 50");
   if (p.wide_iterations < 0 || p.wide_iterations > 50) return bad("wide refining frames must be 0 to 50");
   if (p.wide_range < 1 || p.wide_range > 64) return bad("the wide range must be 1 to 64 px");
+  if (p.fine_iterations < 0 || p.fine_iterations > 50) return bad("fine refining frames must be 0 to 50");
+  if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   return true;
 }
@@ -56,15 +59,23 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
   Result<Tracker> tracker = Tracker::create(model, camera, start, tracking);
   if (!tracker.ok()) return tracker.error();
-  TrackerParams wide_tracking = tracking;
+  TrackerParams wide_tracking = tracking, fine_tracking = tracking;
   wide_tracking.me.setRange(params.wide_range);
+  fine_tracking.me.setRange(params.fine_range);
   Result<Tracker> wide = Tracker::create(model, camera, start, wide_tracking);
   if (!wide.ok()) return wide.error();
-  return Detector(std::move(templates), params, std::move(wide).value(), std::move(tracker).value());
+  Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
+  if (!fine.ok()) return fine.error();
+  return Detector(std::move(templates), params, std::move(wide).value(), std::move(tracker).value(),
+                  std::move(fine).value());
 }
 
-Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker)
-    : templates_(std::move(templates)), params_(params), wide_(std::move(wide)), tracker_(std::move(tracker)) {}
+Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine)
+    : templates_(std::move(templates)),
+      params_(params),
+      wide_(std::move(wide)),
+      tracker_(std::move(tracker)),
+      fine_(std::move(fine)) {}
 
 void Detector::match(const uint16_t* rgb565) {
   const PinholeCamera& camera = templates_.camera;
@@ -100,16 +111,52 @@ bool Detector::run_frames(Tracker& tracker, const uint16_t* rgb565, int iteratio
     lost_in_a_row = 0;
     candidate.camera_from_model = frame.camera_from_model;
   }
+  measure_support(tracker, candidate);
   return true;
 }
 
+void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candidate) const {
+  using std::floor;
+  const PinholeCamera camera = templates_.matching_camera();
+  const int w = orientations_.width, h = orientations_.height;
+  int supported = 0, counted = 0;
+  for (const ControlPoint& p : tracker.control_points()) {
+    const Vec3 c = candidate.camera_from_model * p.point_in_model;
+    if (!(c.z > real(0))) continue;
+    const Vec2 uv = camera.project(c);
+    const int x = static_cast<int>(floor(uv.x + real(0.5))), y = static_cast<int>(floor(uv.y + real(0.5)));
+    if (x < 1 || y < 1 || x + 1 >= w || y + 1 >= h) continue;
+    const int bin = orientation_bin(static_cast<int32_t>(p.normal.x * real(1024)), static_cast<int32_t>(p.normal.y * real(1024)));
+    uint8_t around = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) around |= orientations_.bits[static_cast<size_t>(y + dy) * w + x + dx];
+    ++counted;
+    supported += similarity(bin, around) == kBestSimilarity;
+  }
+  candidate.support = counted > 0 ? real(supported) / real(counted) : real(0);
+}
+
 RefinedCandidate Detector::refine(const uint16_t* rgb565, const TemplateMatch& match) {
-  RefinedCandidate candidate;
-  candidate.match = match;
-  candidate.camera_from_model = pose_of_match(templates_, match, params_.spread);
-  if (run_frames(wide_, rgb565, params_.wide_iterations, candidate))
-    run_frames(tracker_, rgb565, params_.refine_iterations, candidate);
-  return candidate;
+  RefinedCandidate near;
+  near.match = match;
+  near.camera_from_model = pose_of_match(templates_, match, params_.spread);
+  RefinedCandidate wide = near;
+  // The tracking range first: a wider search from a pose that is nearly right lets the moving
+  // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
+  const bool near_ran = run_frames(tracker_, rgb565, params_.refine_iterations, near);
+  if (!acceptable(near, params_) && params_.wide_iterations > 0 &&
+      run_frames(wide_, rgb565, params_.wide_iterations, wide) &&
+      run_frames(tracker_, rgb565, params_.refine_iterations, wide) && better(wide, near, params_))
+    near = wide;
+  else if (!near_ran)
+    return near;
+  // The narrow search settles the pose; the judgement stays the tracking range's, since a search
+  // that narrow finds edges near any pose on a cluttered image.
+  if (!acceptable(near, params_)) return near;
+  RefinedCandidate settled = near;
+  if (run_frames(fine_, rgb565, params_.fine_iterations, settled) && settled.status == TrackingStatus::kTracked)
+    near.camera_from_model = settled.camera_from_model;
+  return near;
 }
 
 Detection Detector::detect(const uint16_t* rgb565) {

@@ -69,9 +69,9 @@ bool write_header(std::FILE* file, const TemplateSet& set) {
 }
 
 bool write_template(std::FILE* file, const TemplateSet& set, const Template& t) {
-  const Vec3 tr = t.camera_from_model.translation(), tu = t.camera_from_model.theta_u();
-  bool ok = std::fprintf(file, "t %d %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %d %d %d", t.distance_index,
-                         d(t.distance), d(tr.x), d(tr.y), d(tr.z), d(tu.x), d(tu.y), d(tu.z), d(t.anchor.x),
+  const Vec3& tu = t.theta_u;
+  bool ok = std::fprintf(file, "t %d %.9g %.9g %.9g %.9g %.9g %.9g %d %d %d", t.distance_index, d(t.distance),
+                         d(tu.x), d(tu.y), d(tu.z), d(t.anchor.x),
                          d(t.anchor.y), t.width, t.height, t.count) > 0;
   for (int f = t.first; f < t.first + t.count && ok; ++f) {
     const TemplateFeature& feature = set.features[static_cast<size_t>(f)];
@@ -198,11 +198,11 @@ Result<bool> read_template(WordCursor& in, TemplateSet& set) {
   const FieldRange index_range{"distance index", 0, static_cast<double>(set.distance_count - 1)};
   auto index = in.whole(index_range);
   if (!index.ok()) return index.error();
-  static const FieldRange kView[9] = {{"distance (m)", 1e-6, 1e3}, {"tx (m)", -1e3, 1e3},      {"ty (m)", -1e3, 1e3},
-                                      {"tz (m)", -1e3, 1e3},       {"tux (rad)", -7, 7},       {"tuy (rad)", -7, 7},
-                                      {"tuz (rad)", -7, 7},        {"anchor x (px)", -1e4, 1e4}, {"anchor y (px)", -1e4, 1e4}};
-  double v[9];
-  auto numbers = read_numbers(in, kView, 9, v);
+  static const FieldRange kView[6] = {{"distance (m)", 1e-6, 1e3}, {"tux (rad)", -7, 7},
+                                      {"tuy (rad)", -7, 7},        {"tuz (rad)", -7, 7},
+                                      {"anchor x (px)", -1e4, 1e4}, {"anchor y (px)", -1e4, 1e4}};
+  double v[6];
+  auto numbers = read_numbers(in, kView, 6, v);
   if (!numbers.ok()) return numbers.error();
   const FieldRange kShape[3] = {{"width (px)", 1, 256}, {"height (px)", 1, 256},
                                 {"feature count", 1, static_cast<double>(set.params.features)}};
@@ -212,8 +212,8 @@ Result<bool> read_template(WordCursor& in, TemplateSet& set) {
   Template t;
   t.distance_index = static_cast<int>(index.value());
   t.distance = real(v[0]);
-  t.camera_from_model = Se3::from_theta_u({real(v[1]), real(v[2]), real(v[3])}, {real(v[4]), real(v[5]), real(v[6])});
-  t.anchor = {real(v[7]), real(v[8])};
+  t.theta_u = {real(v[1]), real(v[2]), real(v[3])};
+  t.anchor = {real(v[4]), real(v[5])};
   t.width = static_cast<int>(shape[0]);
   t.height = static_cast<int>(shape[1]);
   t.first = static_cast<int>(set.features.size());

@@ -82,7 +82,7 @@ Se3 pose_of_match(const TemplateSet& set, const TemplateMatch& match, int t) {
   const real sine = norm(axis);
   Mat33 turn = Mat33::identity();
   if (sine > real(0)) turn = rotation_exp(atan2(sine, ray.z) / sine * axis);
-  const Mat33 rotation = turn * tp.camera_from_model.rotation();
+  const Mat33 rotation = turn * Se3::from_theta_u(Vec3{}, tp.theta_u).rotation();
   const Vec3 translation = tp.distance * ray - rotation * set.extent.centre;
   return Se3(rotation, translation);
 }

@@ -95,7 +95,7 @@ bool build_template(const std::vector<Candidate>& chosen, const ViewPose& view, 
   }
   if (x1 - x0 > 255 || y1 - y0 > 255) return false;
   Template t;
-  t.camera_from_model = view.camera_from_model;
+  t.theta_u = view.camera_from_model.theta_u();
   t.distance = (view.camera_from_model * extent.centre).z;
   t.distance_index = view.distance_index;
   const Vec2 centre = camera.project(view.camera_from_model * extent.centre);
@@ -126,6 +126,11 @@ uint32_t fnv1a(uint32_t hash, long long value) {
 long long micrometres(const real& metres) { return std::llround(static_cast<double>(metres) * 1e6); }
 
 }  // namespace
+
+Se3 template_pose(const Template& t, const ModelExtent& extent) {
+  const Se3 rotation = Se3::from_theta_u(Vec3{}, t.theta_u);
+  return Se3(rotation.rotation(), Vec3{real(0), real(0), t.distance} - rotation.rotation() * extent.centre);
+}
 
 PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
   const real f(factor), half(0.5);

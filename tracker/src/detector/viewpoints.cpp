@@ -88,7 +88,7 @@ std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& ca
     const int side = camera.width < camera.height ? camera.width : camera.height;
     const real focal = camera.px < camera.py ? camera.px : camera.py;
     low = focal * real(2) * extent.radius / (real(0.8) * real(side));
-    high = focal * real(2) * extent.radius / (real(0.35) * real(side));
+    high = focal * real(2) * extent.radius / (real(0.4) * real(side));
   }
   std::vector<real> distances;
   using std::sqrt;

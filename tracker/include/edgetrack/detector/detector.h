@@ -24,17 +24,29 @@ struct DetectorParams {
   int spread = 4;
   MatchParams matching;
   /// Tracker frames run on the same image from each candidate, each starting afresh from the
-  /// last one's pose (Tracker::reset, so each searches twice the configured range): first
-  /// `wide_iterations` with the moving edges' range set to `wide_range` (a match's pose can be
-  /// 20 degrees and several pixels off: the nearest template's), then `refine_iterations` with
-  /// the tracking settings' own range.
+  /// last one's pose (Tracker::reset, so each searches twice the configured range):
+  /// `refine_iterations` with the tracking settings' range; when that does not end in an
+  /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
+  /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
+  /// template's), then `refine_iterations` with the tracking range. The better of the two wins
+  /// and, when acceptable, settles with `fine_iterations` at `fine_range` (its pose taken, its
+  /// status not: a search that narrow finds edges near any pose): near the optimum a search as wide as
+  /// the tracking range's start (twice the range) reaches neighbouring edges (parallel inner
+  /// edges, background lines) that pull a single frame's pose away from it, which the next
+  /// frame of a sequence would correct and a lone frame does not.
+  int refine_iterations = 6;
   int wide_iterations = 4;
-  unsigned wide_range = 8;
-  int refine_iterations = 4;
+  unsigned wide_range = 6;
+  int fine_iterations = 3;
+  unsigned fine_range = 2;
   /// Found: the last refining frame is tracked and the robust solve kept at least this share of
   /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
   /// few-matched rule); a right one most.
   real min_kept_share = real(0.7);
+  /// Found also needs this support (RefinedCandidate::support). Right poses of the generated
+  /// cube and wood toy had 0.5 to 0.95 (an inner edge the light leaves without contrast has
+  /// none), so this only refuses a pose the image's gradients do not show at all.
+  real min_support = real(0.4);
 };
 
 /// One candidate after refinement.
@@ -46,6 +58,10 @@ struct RefinedCandidate {
   int kept = 0;     ///< of those, the ones the robust solve kept
   real kept_share{0};
   real residual_scale{0};
+  /// Of the visible control points at the refined pose, the share whose image pixel (downscaled,
+  /// or one of its 8 neighbours) has their edge's orientation bin: the image's own gradients
+  /// confirming the pose, independently of the moving edges' search.
+  real support{0};
 };
 
 struct Detection {
@@ -72,11 +88,13 @@ class Detector {
   const DetectorParams& params() const { return params_; }
 
  private:
-  Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker);
+  Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine);
   /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
   void match(const uint16_t* rgb565);
   /// The trackers run from one match's pose.
   RefinedCandidate refine(const uint16_t* rgb565, const TemplateMatch& match);
+  /// candidate.support from `tracker`'s last control points.
+  void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
   /// `iterations` frames of `tracker` from candidate.camera_from_model; false when lost twice in a row.
   bool run_frames(Tracker& tracker, const uint16_t* rgb565, int iterations, RefinedCandidate& candidate);
 
@@ -84,6 +102,7 @@ class Detector {
   DetectorParams params_;
   Tracker wide_;  ///< the tracking settings with the range widened
   Tracker tracker_;
+  Tracker fine_;  ///< the tracking settings with the range narrowed
   std::vector<uint8_t> grey_;
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;

@@ -15,9 +15,10 @@ namespace edgetrack {
 
 struct MatchParams {
   /// A template's score is the sum of its features' similarities over the best sum, 4 per
-  /// feature; positions under this share are not candidates. 0.6 is, for instance, half the
-  /// features on their orientation and a fifth on a neighbouring one.
-  real min_share = real(0.6);
+  /// feature; positions under this share are not candidates. 0.5 is, for instance, half the
+  /// features on their orientation: the nearest template to a view is up to 10 degrees and 10 %
+  /// of scale off it, and the light may leave an inner edge without contrast.
+  real min_share = real(0.5);
   /// The best matches kept per distance of the range (one per template, at the template's best
   /// position). Per distance, because a small template (a far view) lines up with a part of a
   /// near object's edges as well as a near one with the whole: shares compare within a size.

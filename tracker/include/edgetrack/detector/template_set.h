@@ -42,7 +42,9 @@ struct TemplateFeature {
 /// One view: its pose, where the model's centre projects (relative to the corner, downscaled
 /// pixels), its features' extent and its features (TemplateSet::features[first, first + count)).
 struct Template {
-  Se3 camera_from_model;  ///< the model's centre on the optical axis at `distance`
+  /// The view's rotation (camera_from_model's, as theta u: 3 numbers where a matrix takes 9);
+  /// the model's centre is on the optical axis at `distance` (template_pose).
+  Vec3 theta_u;
   real distance{0};
   int distance_index = 0;  ///< which of the range's distances (0: the nearest)
   Vec2 anchor;
@@ -66,6 +68,9 @@ struct TemplateSet {
   /// Bytes held by the templates and their features.
   size_t memory_bytes() const;
 };
+
+/// camera_from_model of a template's view.
+Se3 template_pose(const Template& t, const ModelExtent& extent);
 
 /// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5).
 PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);

@@ -16,20 +16,22 @@ namespace edgetrack {
 struct ViewRange {
   /// Icosahedron subdivisions: 0 gives 12 directions (63 degrees apart), 1 gives 42 (about 32),
   /// 2 gives 162 (about 16), 3 gives 642 (about 8).
-  int subdivisions = 1;
+  int subdivisions = 2;
   /// The directions kept: within max_angle (radians) of `axis` (model frame, from the model's
   /// centre towards the camera). pi keeps the whole sphere.
   Vec3 axis{real(0), real(0), real(1)};
   real max_angle = real(3.141592653589793);
-  /// Rotations about the optical axis per direction, evenly over the full turn.
-  int in_plane_steps = 12;
+  /// Rotations about the optical axis per direction, evenly over the full turn (18: 20 degrees
+  /// apart, so the nearest is at most 10 degrees off, as the directions are).
+  int in_plane_steps = 18;
   /// Camera distances to the model's centre (metres); 0 and 0: from the camera and the model's
   /// size (model_distances).
   real distance_min{0};
   real distance_max{0};
-  /// Successive distances differ by this factor (1.2: the image scale of the nearest template is
-  /// at most 10 % off).
-  real distance_ratio = real(1.2);
+  /// Successive distances differ by this factor (1.1: the image scale of the nearest template is
+  /// at most 5 % off, a few pixels at the object's outline, which the refinement's search
+  /// reaches; at 1.2, 10 %, the refinement failed twice as often on the generated cube).
+  real distance_ratio = real(1.1);
 };
 
 /// The centre of the model's bounding box and the largest distance from it to a vertex.
@@ -44,7 +46,7 @@ std::vector<Vec3> sphere_directions(int subdivisions);
 
 /// Distances from min to max (each ratio times the last, the last one not past max by more than
 /// the ratio's half); when range.distance_min is 0, min and max are where the model's bounding
-/// sphere spans 80 % and 35 % of the image's shorter side.
+/// sphere spans 80 % and 40 % of the image's shorter side.
 std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
 
 /// camera_from_model looking at the model's centre from `direction` (unit, model frame) at
