@@ -58,14 +58,22 @@ std::vector<Mat33> cube_symmetries() {
 }
 
 PoseError pose_error(const Se3& estimate, const Se3& truth, const Vec3& centre, const std::vector<Mat33>& symmetries) {
+  // In double: squares of millimetres in metres are below S40.23's resolution.
   PoseError error;
-  const Vec3 d = estimate * centre - truth * centre;
-  error.centre_mm = 1000 * std::sqrt(static_cast<double>(dot(d, d)));
+  const Vec3 a = estimate * centre, b = truth * centre;
+  const double dx = static_cast<double>(a.x) - static_cast<double>(b.x), dy = static_cast<double>(a.y) - static_cast<double>(b.y),
+               dz = static_cast<double>(a.z) - static_cast<double>(b.z);
+  error.centre_mm = 1000 * std::sqrt(dx * dx + dy * dy + dz * dz);
   error.rotation_deg = 360;
   for (const Mat33& s : symmetries) {
     // The angle of R_est^T R_true S: trace = 1 + 2 cos(angle).
-    const Mat33 relative = estimate.rotation().transpose() * (truth.rotation() * s);
-    const double trace = static_cast<double>(relative.m[0][0] + relative.m[1][1] + relative.m[2][2]);
+    double trace = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double ts = 0;
+        for (int k = 0; k < 3; ++k) ts += static_cast<double>(truth.rotation().m[j][k]) * static_cast<double>(s.m[k][i]);
+        trace += static_cast<double>(estimate.rotation().m[j][i]) * ts;
+      }
     const double c = std::fmax(-1.0, std::fmin(1.0, (trace - 1) / 2));
     error.rotation_deg = std::fmin(error.rotation_deg, std::acos(c) * 180 / M_PI);
   }

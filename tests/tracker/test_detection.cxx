@@ -6,7 +6,6 @@
 /// the cube, 70 % for the wood toy: docs/results/detection.md), so at least 3 and 2 of 4 trials;
 /// frames with the background and the lines but no object are "not found", every one.
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "detection_scene.h"
@@ -61,7 +60,6 @@ void check_scene(Scene scene, const Vec3& axis, const std::vector<Mat33>& symmet
     std::printf("  trial %d: found %d score %.2f error %.3f mm %.3f deg, %zu candidates refined\n", k, d.found,
                 static_cast<double>(d.score), e.centre_mm, e.rotation_deg, d.refined.size());
     right += d.found && e.centre_mm <= 2 && e.rotation_deg <= 2;
-    if (std::getenv("CANDS")) for (auto& c : d.refined) { PoseError ce = pose_error(pose_of_match(detector.value().templates(), c.match, 4), truth, extent.centre, symmetries); PoseError re = pose_error(c.camera_from_model, truth, extent.centre, symmetries); std::printf("   cand t%d share %.2f (%.1f mm %.1f deg) -> status %d kept %d/%d scale %.2f support %.2f (%.1f mm %.1f deg)\n", c.match.template_index, (double)c.match.share, ce.centre_mm, ce.rotation_deg, (int)c.status, c.kept, c.visible, (double)c.residual_scale, (double)c.support, re.centre_mm, re.rotation_deg); }
     render_trial(model.value(), camera, truth, false, kLines, seed, frame);
     const Detection none = detector.value().detect(frame.pixels.data());
     std::printf("  without the object: found %d score %.2f, %zu candidates refined\n", none.found,
