@@ -126,6 +126,12 @@ void test_response_maps() {
           for (int i = 0; i < 4; ++i)
             wrong += maps.linear(bin, dx, dy)[j * 4 + i] != similarity(bin, spread.bits[(dy + 4 * j) * 16 + dx + 4 * i]);
   TEST_EQUAL("linearised memory holds pixel (dx + T i, dy + T j) at j * grid width + i", wrong, 0);
+  int misread = 0;
+  for (size_t start = 0; start < 12; ++start) {
+    const uint8_t* as_bytes = reinterpret_cast<const uint8_t*>(maps.words(5, 1, 2, start));
+    for (size_t j = 0; start + j < 12; ++j) misread += as_bytes[j] != maps.linear(5, 1, 2)[start + j];
+  }
+  TEST_EQUAL("a run read as aligned words from any start holds the same bytes", misread, 0);
 }
 
 /// A square outline template: features on its four sides with their normals' bins.
@@ -157,7 +163,7 @@ void test_template_found_in_place() {
   ResponseMaps maps;
   maps.compute(spread, t);
   const TemplateSet set = square_template(24);
-  std::vector<uint16_t> scores;
+  std::vector<uint32_t> scores;
   std::vector<std::vector<TemplateMatch>> per_distance;
   std::vector<TemplateMatch> matches;
   match_templates(set, maps, MatchParams{}, scores, per_distance, matches);

@@ -21,15 +21,22 @@ void ResponseMaps::compute(const OrientationImage& spread, int t) {
   grid_width_ = spread.width / t;
   grid_height_ = spread.height / t;
   cells_ = static_cast<size_t>(grid_width_) * grid_height_;
-  memory_.resize(static_cast<size_t>(kOrientationBins) * t * t * cells_);
+  stride_ = (cells_ + 3) / 4 * 4 + 4;
+  memory_.assign(static_cast<size_t>(kOrientationBins) * t * t * 4 * (stride_ / 4), 0);
   for (int bin = 0; bin < kOrientationBins; ++bin) {
     const uint8_t* table = table_[bin];
     for (int dy = 0; dy < t; ++dy) {
       for (int dx = 0; dx < t; ++dx) {
-        uint8_t* out = &memory_[(static_cast<size_t>(bin) * t * t + static_cast<size_t>(dy) * t + dx) * cells_];
+        const size_t array = array_index(bin, dx, dy);
+        uint8_t* out = const_cast<uint8_t*>(bytes(array, 0));
         for (int j = 0; j < grid_height_; ++j) {
           const uint8_t* row = &spread.bits[static_cast<size_t>(dy + t * j) * spread.width + dx];
           for (int i = 0; i < grid_width_; ++i) *out++ = table[row[t * i]];
+        }
+        const uint8_t* first = bytes(array, 0);
+        for (size_t shift = 1; shift < 4; ++shift) {
+          uint8_t* copy = const_cast<uint8_t*>(bytes(array, shift));
+          for (size_t k = 0; k + shift < cells_; ++k) copy[k] = first[k + shift];
         }
       }
     }

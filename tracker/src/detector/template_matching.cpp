@@ -9,9 +9,10 @@ namespace edgetrack {
 
 namespace {
 
-/// Adds `count` responses to the scores: the inner loop of the matching.
-void accumulate(const uint8_t* responses, int count, uint16_t* scores) {
-  for (int k = 0; k < count; ++k) scores[k] = static_cast<uint16_t>(scores[k] + responses[k]);
+/// Adds `count` words of responses to the scores, four byte-wide positions per add: the inner
+/// loop of the matching (no carry crosses a byte: a template's sum stays under 256).
+void accumulate(const uint32_t* responses, size_t count, uint32_t* scores) {
+  for (size_t k = 0; k < count; ++k) scores[k] += responses[k];
 }
 
 bool better(const TemplateMatch& a, const TemplateMatch& b) {
@@ -28,27 +29,28 @@ void keep_best(const TemplateMatch& m, int limit, std::vector<TemplateMatch>& be
 }  // namespace
 
 void match_templates(const TemplateSet& set, const ResponseMaps& maps, const MatchParams& params,
-                     std::vector<uint16_t>& scores, std::vector<std::vector<TemplateMatch>>& per_distance,
+                     std::vector<uint32_t>& scores, std::vector<std::vector<TemplateMatch>>& per_distance,
                      std::vector<TemplateMatch>& out) {
   out.clear();
   per_distance.resize(static_cast<size_t>(set.distance_count));
   for (std::vector<TemplateMatch>& list : per_distance) list.clear();
   const int t = maps.step(), gw = maps.grid_width(), gh = maps.grid_height();
-  scores.resize(static_cast<size_t>(gw) * gh);
+  scores.resize((static_cast<size_t>(gw) * gh + 3) / 4);
+  const uint8_t* score_bytes = reinterpret_cast<const uint8_t*>(scores.data());
   for (size_t index = 0; index < set.templates.size(); ++index) {
     const Template& tp = set.templates[index];
     const int valid_w = gw - (tp.width - 1) / t, valid_h = gh - (tp.height - 1) / t;
     if (valid_w <= 0 || valid_h <= 0) continue;
-    const int span = (valid_h - 1) * gw + valid_w;
-    std::fill(scores.begin(), scores.begin() + span, uint16_t(0));
+    const size_t span = static_cast<size_t>((valid_h - 1) * gw + valid_w), words = (span + 3) / 4;
+    std::fill(scores.begin(), scores.begin() + static_cast<std::ptrdiff_t>(words), 0u);
     for (int f = tp.first; f < tp.first + tp.count; ++f) {
       const TemplateFeature& feature = set.features[static_cast<size_t>(f)];
-      const uint8_t* run = maps.linear(feature.bin, feature.x % t, feature.y % t) + (feature.y / t) * gw + feature.x / t;
-      accumulate(run, span, scores.data());
+      const size_t start = static_cast<size_t>((feature.y / t) * gw + feature.x / t);
+      accumulate(maps.words(feature.bin, feature.x % t, feature.y % t, start), words, scores.data());
     }
     int best = -1, best_i = 0, best_j = 0;
     for (int j = 0; j < valid_h; ++j) {
-      const uint16_t* row = &scores[static_cast<size_t>(j) * gw];
+      const uint8_t* row = &score_bytes[static_cast<size_t>(j) * gw];
       for (int i = 0; i < valid_w; ++i) {
         if (row[i] > best) {
           best = row[i];

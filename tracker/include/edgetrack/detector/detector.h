@@ -109,7 +109,7 @@ class Detector {
   OrientationImage orientations_;
   OrientationImage spread_;
   ResponseMaps maps_;
-  std::vector<uint16_t> scores_;
+  std::vector<uint32_t> scores_;
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
 };
