@@ -164,9 +164,10 @@ void test_template_found_in_place() {
   maps.compute(spread, t);
   const TemplateSet set = square_template(24);
   std::vector<uint32_t> scores;
+  std::vector<const uint32_t*> runs;
   std::vector<std::vector<TemplateMatch>> per_distance;
   std::vector<TemplateMatch> matches;
-  match_templates(set, maps, MatchParams{}, scores, per_distance, matches);
+  match_templates(set, maps, MatchParams{}, scores, runs, per_distance, matches);
   TEST_EQUAL("the template is found once", matches.size(), size_t(1));
   if (matches.empty()) return;
   std::printf("square found at %d,%d, share %.3f\n", matches[0].x, matches[0].y, static_cast<double>(matches[0].share));

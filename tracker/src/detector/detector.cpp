@@ -91,7 +91,7 @@ void Detector::match(const uint16_t* rgb565) {
                         orientations_);
   spread_orientations(orientations_, params_.spread, scratch_, spread_);
   maps_.compute(spread_, params_.spread);
-  match_templates(templates_, maps_, params_.matching, scores_, per_distance_, matches_);
+  match_templates(templates_, maps_, params_.matching, scores_, runs_, per_distance_, matches_);
 }
 
 bool Detector::run_frames(Tracker& tracker, const uint16_t* rgb565, int iterations, RefinedCandidate& candidate) {

@@ -21,7 +21,7 @@ void ResponseMaps::compute(const OrientationImage& spread, int t) {
   grid_width_ = spread.width / t;
   grid_height_ = spread.height / t;
   cells_ = static_cast<size_t>(grid_width_) * grid_height_;
-  stride_ = (cells_ + 3) / 4 * 4 + 4;
+  stride_ = (cells_ + 3) / 4 * 4 + 4 * (kRunPadWords + 1);
   memory_.assign(static_cast<size_t>(kOrientationBins) * t * t * 4 * (stride_ / 4), 0);
   for (int bin = 0; bin < kOrientationBins; ++bin) {
     const uint8_t* table = table_[bin];

@@ -9,10 +9,35 @@ namespace edgetrack {
 
 namespace {
 
-/// Adds `count` words of responses to the scores, four byte-wide positions per add: the inner
-/// loop of the matching (no carry crosses a byte: a template's sum stays under 256).
-void accumulate(const uint32_t* responses, size_t count, uint32_t* scores) {
-  for (size_t k = 0; k < count; ++k) scores[k] += responses[k];
+/// scores[k] = the sum over the runs of run[k], k < count (rounded up to blocks of
+/// kRunPadWords), four byte-wide positions per 32-bit add (no carry crosses a byte: a
+/// template's sum stays under 256). A block of sums stays in registers over all the runs: two
+/// instructions per word and run on a 32-bit core, where adding run by run into memory takes six.
+void sum_runs(const std::vector<const uint32_t*>& runs, size_t count, uint32_t* scores) {
+  static_assert(kRunPadWords == 8, "the block below is 8 words");
+  for (size_t k = 0; k < count; k += kRunPadWords) {
+    uint32_t s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
+    for (const uint32_t* run : runs) {
+      const uint32_t* p = run + k;
+      s0 += p[0];
+      s1 += p[1];
+      s2 += p[2];
+      s3 += p[3];
+      s4 += p[4];
+      s5 += p[5];
+      s6 += p[6];
+      s7 += p[7];
+    }
+    uint32_t* out = scores + k;
+    out[0] = s0;
+    out[1] = s1;
+    out[2] = s2;
+    out[3] = s3;
+    out[4] = s4;
+    out[5] = s5;
+    out[6] = s6;
+    out[7] = s7;
+  }
 }
 
 bool better(const TemplateMatch& a, const TemplateMatch& b) {
@@ -29,25 +54,26 @@ void keep_best(const TemplateMatch& m, int limit, std::vector<TemplateMatch>& be
 }  // namespace
 
 void match_templates(const TemplateSet& set, const ResponseMaps& maps, const MatchParams& params,
-                     std::vector<uint32_t>& scores, std::vector<std::vector<TemplateMatch>>& per_distance,
-                     std::vector<TemplateMatch>& out) {
+                     std::vector<uint32_t>& scores, std::vector<const uint32_t*>& runs,
+                     std::vector<std::vector<TemplateMatch>>& per_distance, std::vector<TemplateMatch>& out) {
   out.clear();
   per_distance.resize(static_cast<size_t>(set.distance_count));
   for (std::vector<TemplateMatch>& list : per_distance) list.clear();
   const int t = maps.step(), gw = maps.grid_width(), gh = maps.grid_height();
-  scores.resize((static_cast<size_t>(gw) * gh + 3) / 4);
+  scores.resize((static_cast<size_t>(gw) * gh + 3) / 4 + kRunPadWords);
   const uint8_t* score_bytes = reinterpret_cast<const uint8_t*>(scores.data());
   for (size_t index = 0; index < set.templates.size(); ++index) {
     const Template& tp = set.templates[index];
     const int valid_w = gw - (tp.width - 1) / t, valid_h = gh - (tp.height - 1) / t;
     if (valid_w <= 0 || valid_h <= 0) continue;
     const size_t span = static_cast<size_t>((valid_h - 1) * gw + valid_w), words = (span + 3) / 4;
-    std::fill(scores.begin(), scores.begin() + static_cast<std::ptrdiff_t>(words), 0u);
+    runs.clear();
     for (int f = tp.first; f < tp.first + tp.count; ++f) {
       const TemplateFeature& feature = set.features[static_cast<size_t>(f)];
       const size_t start = static_cast<size_t>((feature.y / t) * gw + feature.x / t);
-      accumulate(maps.words(feature.bin, feature.x % t, feature.y % t, start), words, scores.data());
+      runs.push_back(maps.words(feature.bin, feature.x % t, feature.y % t, start));
     }
+    sum_runs(runs, words, scores.data());
     int best = -1, best_i = 0, best_j = 0;
     for (int j = 0; j < valid_h; ++j) {
       const uint8_t* row = &score_bytes[static_cast<size_t>(j) * gw];

@@ -110,6 +110,7 @@ class Detector {
   OrientationImage spread_;
   ResponseMaps maps_;
   std::vector<uint32_t> scores_;
+  std::vector<const uint32_t*> runs_;
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
 };

@@ -19,6 +19,9 @@ namespace edgetrack {
 
 /// The most a feature can add: its own orientation found in its neighbourhood.
 constexpr int kBestSimilarity = 4;
+/// Words readable past the end of a run (ResponseMaps::words), so that matching can add runs in
+/// blocks of this many words without a shorter last block.
+constexpr size_t kRunPadWords = 8;
 
 /// The similarity of a feature of orientation `bin` to a spread byte: 4 when the byte has that
 /// bin, 1 when it has a neighbouring bin (22.5 degrees off, cos 0.92) only, 0 otherwise; the
@@ -38,7 +41,7 @@ class ResponseMaps {
   /// dy < t, index j * grid_width() + i.
   const uint8_t* linear(int bin, int dx, int dy) const { return bytes(array_index(bin, dx, dy), 0); }
   /// The same run from index `start` on as aligned words: byte j of the words (in memory order)
-  /// is linear(bin, dx, dy)[start + j]; readable for (cells - start + 3) / 4 words.
+  /// is linear(bin, dx, dy)[start + j]; readable for (cells - start + 3) / 4 + kRunPadWords words.
   const uint32_t* words(int bin, int dx, int dy, size_t start) const {
     const size_t shift = start % 4;
     return &memory_[(array_index(bin, dx, dy) * 4 + shift) * (stride_ / 4) + (start - shift) / 4];
@@ -55,7 +58,7 @@ class ResponseMaps {
   int grid_width_ = 0;
   int grid_height_ = 0;
   size_t cells_ = 0;
-  size_t stride_ = 0;  ///< bytes per shifted copy: cells_ rounded up to words, plus one word
+  size_t stride_ = 0;  ///< bytes per shifted copy: cells_ rounded up to words, plus the padding
   uint8_t table_[kOrientationBins][256] = {};
   bool table_ready_ = false;
   std::vector<uint32_t> memory_;  ///< per array, its 4 shifted copies (words: aligned for 32-bit loads)

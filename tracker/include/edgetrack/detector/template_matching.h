@@ -35,11 +35,11 @@ struct TemplateMatch {
 
 /// Scores every template at every grid position where it fits in the image; `out` gets, for each
 /// distance, the best `max_candidates` templates' best positions, all sorted best first (ties:
-/// the lower template index). `scores` (a byte per grid position, in words) and `per_distance`
-/// are scratch.
+/// the lower template index). `scores` (a byte per grid position, in words), `runs` and
+/// `per_distance` are scratch.
 void match_templates(const TemplateSet& set, const ResponseMaps& maps, const MatchParams& params,
-                     std::vector<uint32_t>& scores, std::vector<std::vector<TemplateMatch>>& per_distance,
-                     std::vector<TemplateMatch>& out);
+                     std::vector<uint32_t>& scores, std::vector<const uint32_t*>& runs,
+                     std::vector<std::vector<TemplateMatch>>& per_distance, std::vector<TemplateMatch>& out);
 
 /// camera_from_model at full resolution for a match: the template's view turned so that the
 /// model's centre lies on the ray through the matched anchor pixel, at the template's distance.
