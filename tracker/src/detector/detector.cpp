@@ -2,6 +2,7 @@
 /// The detector: template matching, then refinement by the tracker.
 #include "edgetrack/detector/detector.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -41,6 +42,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.wide_range < 1 || p.wide_range > 64) return bad("the wide range must be 1 to 64 px");
   if (p.fine_iterations < 0 || p.fine_iterations > 50) return bad("fine refining frames must be 0 to 50");
   if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
+  if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
+  if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   return true;
 }
@@ -159,10 +162,31 @@ RefinedCandidate Detector::refine(const uint16_t* rgb565, const TemplateMatch& m
   return near;
 }
 
+std::vector<TemplateMatch> Detector::screen(const uint16_t* rgb565) {
+  if (static_cast<int>(matches_.size()) <= params_.refined_candidates) return matches_;
+  std::vector<RefinedCandidate> screened;
+  for (const TemplateMatch& m : matches_) {
+    RefinedCandidate c;
+    c.match = m;
+    c.camera_from_model = pose_of_match(templates_, m, params_.spread);
+    if (!run_frames(tracker_, rgb565, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
+    screened.push_back(c);
+  }
+  // Stable: among equals the better match first.
+  std::stable_sort(screened.begin(), screened.end(), [](const RefinedCandidate& a, const RefinedCandidate& b) {
+    const bool al = a.status == TrackingStatus::kLost, bl = b.status == TrackingStatus::kLost;
+    if (al != bl) return bl;
+    return a.kept > b.kept;
+  });
+  std::vector<TemplateMatch> kept;
+  for (int k = 0; k < params_.refined_candidates; ++k) kept.push_back(screened[static_cast<size_t>(k)].match);
+  return kept;
+}
+
 Detection Detector::detect(const uint16_t* rgb565) {
   Detection detection;
   match(rgb565);
-  for (const TemplateMatch& m : matches_) detection.refined.push_back(refine(rgb565, m));
+  for (const TemplateMatch& m : screen(rgb565)) detection.refined.push_back(refine(rgb565, m));
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;

@@ -39,6 +39,12 @@ struct DetectorParams {
   unsigned wide_range = 6;
   int fine_iterations = 3;
   unsigned fine_range = 2;
+  /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
+  /// frames at the tracking range, and only the `refined_candidates` keeping the most control
+  /// points are refined in full (from their match again): the screen's frames already part
+  /// the matches that are near the object from the rest, at a fraction of the full cost.
+  int screen_iterations = 3;
+  int refined_candidates = 4;
   /// Found: the last refining frame is tracked and the robust solve kept at least this share of
   /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
   /// few-matched rule); a right one most.
@@ -93,6 +99,8 @@ class Detector {
   void match(const uint16_t* rgb565);
   /// The trackers run from one match's pose.
   RefinedCandidate refine(const uint16_t* rgb565, const TemplateMatch& match);
+  /// The matches worth refining in full, best first (all of them when few).
+  std::vector<TemplateMatch> screen(const uint16_t* rgb565);
   /// candidate.support from `tracker`'s last control points.
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
   /// `iterations` frames of `tracker` from candidate.camera_from_model; false when lost twice in a row.
