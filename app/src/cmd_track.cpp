@@ -12,6 +12,7 @@
 #include "click_init.h"
 #include "commands.h"
 #include "configuration.h"
+#include "detection_options.h"
 #include "downscaled_tracking.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
@@ -33,7 +34,7 @@ namespace {
 
 const char* const kSynopsis =
     "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt | --init-click I.init "
-    "[--save-clicks P.txt] [--save-pose P.pos]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
+    "[--save-clicks P.txt] [--save-pose P.pos] | --init-auto [--init-distance MIN:MAX] [--templates T]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
     "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config X.xml]";
 
 /// Per-step totals over a run, for the Table 1 summary.
@@ -100,6 +101,9 @@ int track_main(int argc, char** argv) {
       {"--init", true, "ViSP .init file of 3D points, with --init-points: initial pose from points"},
       {"--init-points", true, "image positions of the .init points, one 'u v' line each (pixels)"},
       {"--init-click", true, "ViSP .init file whose points are clicked on the first frame in a window (host, display)"},
+      {"--init-auto", false, "no initial pose: detect the model on the first frame and after each lost one"},
+      {"--init-distance", true, "with --init-auto: MIN:MAX camera distances (metres) its templates cover"},
+      {"--templates", true, "with --init-auto: templates made by `edgetrack templates` for this model and camera"},
       {"--save-clicks", true, "with --init-click: write the clicked positions (an --init-points file)"},
       {"--save-pose", true, "with --init-click: write the accepted initial pose (a .pos file for --init-pose)"},
       {"--visibility", true, "Edge-ID renderer: soft (portable, the default) or gl (OSMesa, host)"},
@@ -128,7 +132,8 @@ int track_main(int argc, char** argv) {
   const bool from_points = a.has("--init") && a.has("--init-points");
   const bool clicked = a.has("--init-click");
   const bool saves = a.has("--save-clicks") || a.has("--save-pose");
-  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + from_points + clicked != 1) ||
+  const bool automatic = a.has("--init-auto");
+  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + from_points + clicked + automatic != 1) ||
       (saves && !clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
     std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
     return 2;
@@ -172,9 +177,18 @@ int track_main(int argc, char** argv) {
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
   const PinholeCamera camera = downscaled(full_camera, factor.value());
-  const std::string init_source =
-      from_points ? a.text("--init-points") : clicked ? a.text("--init-click") : a.text("--init-pose");
-  auto initial = from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
+  std::unique_ptr<edgetrack::AutoInitTracker> auto_tracker;
+  if (automatic) {
+    auto made = auto_init_tracker(a, model.value(), camera, params);
+    if (!made.ok()) return report("track", made.error());
+    auto_tracker = std::move(made).value();
+  }
+  const std::string init_source = automatic    ? std::string("--init-auto")
+                                  : from_points ? a.text("--init-points")
+                                  : clicked     ? a.text("--init-click")
+                                                : a.text("--init-pose");
+  auto initial = automatic     ? Result<Se3>(auto_tracker->tracker().camera_from_model())
+                 : from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
                  : clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
                                                   frame.image, full_camera, model.value())
                              : edgetrack::read_pos(a.text("--init-pose"));
@@ -186,6 +200,7 @@ int track_main(int argc, char** argv) {
   auto tracker = edgetrack::Tracker::create(model.value(), camera, initial.value(), params);
   if (!tracker.ok()) return report("track", {init_source, 0, tracker.error().message});
   tracker.value().set_edge_id_source(edge_id_source.value().get());
+  if (auto_tracker) auto_tracker->tracker().set_edge_id_source(edge_id_source.value().get());
 
   // Outputs.
   std::unique_ptr<PoseTableWriter> poses;
@@ -232,7 +247,8 @@ int track_main(int argc, char** argv) {
                                   std::to_string(full_width) + "x" + std::to_string(full_height)});
     const RgbImage image = factor.value() > 1 ? downscale(frame.image, factor.value()) : std::move(frame.image);
     to_rgb565(image, packed);
-    const edgetrack::FrameResult result = tracker.value().track(packed.data());
+    const edgetrack::FrameResult result =
+        auto_tracker ? auto_tracker->track(packed.data()).frame : tracker.value().track(packed.data());
     double ms = 0;
     for (int s = 0; s < edgetrack::kStepCount; ++s) {
       totals.step_ms[s] += result.step_ns[s] / 1e6;

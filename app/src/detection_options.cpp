@@ -15,13 +15,13 @@ namespace edgetrack_app {
 
 namespace {
 
-/// "MIN:MAX" in metres, 0 < MIN <= MAX <= 100.
-Result<bool> distance_range(const std::string& text, TemplateParams& params) {
+/// "MIN:MAX" in metres, 0 < MIN <= MAX <= 100, the value of `option`.
+Result<bool> distance_range(const std::string& option, const std::string& text, TemplateParams& params) {
   double low = 0, high = 0;
   char end = 0;
   if (std::sscanf(text.c_str(), "%lf:%lf%c", &low, &high, &end) != 2 || !std::isfinite(low) || !std::isfinite(high) ||
       !(low > 0) || high < low || high > 100)
-    return Error{"", 0, "--distance '" + text + "': expected MIN:MAX in metres, 0 < MIN <= MAX <= 100"};
+    return Error{"", 0, option + " '" + text + "': expected MIN:MAX in metres, 0 < MIN <= MAX <= 100"};
   params.views.distance_min = real(low);
   params.views.distance_max = real(high);
   return true;
@@ -53,7 +53,7 @@ std::vector<OptionSpec> template_range_specs() {
 Result<TemplateParams> template_params_from(const Args& args) {
   TemplateParams params;
   if (args.has("--distance")) {
-    auto range = distance_range(args.text("--distance"), params);
+    auto range = distance_range("--distance", args.text("--distance"), params);
     if (!range.ok()) return range.error();
   }
   if (args.has("--axis")) {
@@ -73,6 +73,30 @@ Result<TemplateParams> template_params_from(const Args& args) {
   auto checked = edgetrack::check_template_params(params);
   if (!checked.ok()) return checked.error();
   return params;
+}
+
+Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args& args,
+                                                                      const edgetrack::EdgeModel& model,
+                                                                      const edgetrack::PinholeCamera& camera,
+                                                                      const edgetrack::TrackerParams& tracking) {
+  Result<edgetrack::TemplateSet> templates = Error{};
+  if (args.has("--templates")) {
+    if (args.has("--init-distance"))
+      return Error{"", 0, "--init-distance cannot be used with --templates: the file fixes the range"};
+    templates = edgetrack::read_templates(args.text("--templates"), model, camera);
+  } else {
+    TemplateParams params;
+    if (args.has("--init-distance")) {
+      auto range = distance_range("--init-distance", args.text("--init-distance"), params);
+      if (!range.ok()) return range.error();
+    }
+    templates = edgetrack::make_template_set(model, camera, params);
+  }
+  if (!templates.ok()) return templates.error();
+  auto made = edgetrack::AutoInitTracker::create(model, camera, std::move(templates).value(),
+                                                 edgetrack::DetectorParams{}, tracking);
+  if (!made.ok()) return made.error();
+  return std::unique_ptr<edgetrack::AutoInitTracker>(new edgetrack::AutoInitTracker(std::move(made).value()));
 }
 
 Result<edgetrack::TemplateSet> templates_for(const Args& args, const edgetrack::EdgeModel& model,
