@@ -64,8 +64,8 @@ echo
 echo "### Emulated PXA270, S40.23: guest instructions per detection"
 echo
 echo "The same frames (the first $arm_trials trials of each row), the templates made in the guest; only the"
-echo "detection is counted (count windows around \`Detector::detect\`). MHz-seconds at an assumed $cpi cycles per"
-echo "instruction on the 624 MHz PXA270."
+echo "detection is counted (count windows around \`Detector::detect\`). Seconds on the 624 MHz PXA270 at an"
+echo "assumed $cpi cycles per instruction."
 echo
 echo "| model | frames | detections | guest instructions per detection | of which soft-float | s at 624 MHz |"
 echo "|---|---|---:|---:|---:|---:|"
