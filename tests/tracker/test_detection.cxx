@@ -2,8 +2,8 @@
 /// Detection on generated QVGA frames, from the model alone: the cube and the wood toy at random
 /// poses inside a small template range (a 25-degree cone of views, 140-170 mm), over a textured
 /// background with distractor lines, are found within 2 mm and 2 degrees of the truth (for the
-/// cube, of any of its 24 symmetric poses) at the rate the evaluation measures (about 85 % for
-/// the cube, 70 % for the wood toy: docs/results/detection.md), so at least 3 and 2 of 4 trials;
+/// cube, of any of its 24 symmetric poses) at the rate the evaluation measures (75 % for the
+/// cube, 71 % for the wood toy: docs/results/detection.md), so at least 3 and 2 of 4 trials;
 /// frames with the background and the lines but no object are "not found", every one.
 #include <cstdio>
 #include <vector>
