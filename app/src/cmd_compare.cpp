@@ -81,16 +81,16 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
   if (!child.ok()) return child.error();
   ours.rows.clear();
   visp.rows.clear();
-  std::vector<uint16_t> packed;
   Frame frame;
   for (int k = 0;; ++k) {
     auto got = source.value()->next(frame);
     if (!got.ok()) return got.error();
     if (!got.value()) break;
-    if (frame.image.width != setup.camera.width * setup.factor || frame.image.height != setup.camera.height * setup.factor)
+    if (frame.pixels.width != setup.camera.width * setup.factor || frame.pixels.height != setup.camera.height * setup.factor)
       return Error{frame.name, 0, "image size does not match the first frame's"};
-    const RgbImage image = downscale(frame.image, setup.factor);
-    to_rgb565(image, packed);
+    RgbImage small;
+    const edgetrack::FrameView view = tracked_frame(frame.pixels, setup.factor, small);
+    const RgbImage image = setup.factor > 1 ? small : to_rgb_image(view);
     VispFrameReply reply;
     for (int turn = 0; turn < 2; ++turn) {
       if ((turn + k) % 2 == 0) {
@@ -99,7 +99,9 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
         reply = answered.value();
       } else {
         const auto begin = std::chrono::steady_clock::now();
-        const edgetrack::FrameResult result = tracker.value().track(packed.data());
+        auto tracked = tracker.value().track(view);
+        if (!tracked.ok()) return Error{frame.name, 0, tracked.error().message};
+        const edgetrack::FrameResult& result = tracked.value();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
         ours.rows.push_back(row_of(frame.index, result.camera_from_model, result.points_matched, ms, ours_lost(result)));
       }
@@ -228,9 +230,9 @@ Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor)
   auto got = frames.value()->next(first);
   if (!got.ok()) return got.error();
   PinholeCamera camera;
-  auto configured = ours_from_visp_xml(setup.xml, first.image.width, first.image.height, camera, setup.params);
+  auto configured = ours_from_visp_xml(setup.xml, first.pixels.width, first.pixels.height, camera, setup.params);
   if (!configured.ok()) return configured.error();
-  if (camera.width != first.image.width || camera.height != first.image.height)
+  if (camera.width != first.pixels.width || camera.height != first.pixels.height)
     return Error{first.name, 0, "image size does not match the camera's (" + setup.xml + ")"};
   setup.camera = downscaled(camera, factor);
   downscale_settings(setup.params, factor);

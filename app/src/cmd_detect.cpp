@@ -81,11 +81,11 @@ int detect_main(int argc, char** argv) {
   auto detector = edgetrack::Detector::create(model.value(), camera, std::move(templates).value(),
                                               edgetrack::DetectorParams{}, config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
-  std::vector<uint16_t> rgb565;
-  to_rgb565(image.value(), rgb565);
   const auto start = std::chrono::steady_clock::now();
-  const edgetrack::Detection detection = detector.value().detect(rgb565.data());
+  const auto detected = detector.value().detect(image.value().view());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!detected.ok()) return report("detect", {a.text("--image"), 0, detected.error().message});
+  const edgetrack::Detection& detection = detected.value();
   print_detection(detection, ms);
   print_notes(config.value().notes);
   if (!detection.found) return kNotFound;

@@ -85,7 +85,7 @@ struct SynthOptions {
   PinholeCamera camera;
   int frames = 60, supersample = 4, seed = 1;
   double speed = 1, noise = 2, blur = 0.6, cover = 0, clutter_mm = 0;
-  bool occluder = false, rgb565 = false;
+  bool occluder = false, rgb565 = false, pgm = false;
 };
 
 /// The options, or an Error: one naming no file is a bad option value (exit status 2), one
@@ -97,6 +97,8 @@ Result<SynthOptions> read_options(const Args& a) {
   o.trajectory = a.text("--trajectory", "paper");
   o.occluder = a.has("--occluder");
   o.rgb565 = a.has("--rgb565");
+  o.pgm = a.has("--pgm");
+  if (o.rgb565 && o.pgm) return Error{"", 0, "--rgb565 and --pgm name two frame formats: give one"};
   auto frames = a.integer("--frames", 60), supersample = a.integer("--supersample", 4), seed = a.integer("--seed", 1);
   auto speed = a.number("--speed", 1.0), noise = a.number("--noise", 2.0), blur = a.number("--blur", 0.6);
   auto cover = a.number("--cover", 0.0), clutter_mm = a.number("--clutter", 0.0);
@@ -190,6 +192,8 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
     if (o.rgb565) {
       to_rgb565(image, packed);
       written = write_raw_rgb565(path, packed);
+    } else if (o.pgm) {
+      written = write_pgm(path, image);
     } else {
       written = write_ppm(path, image);
     }
@@ -204,7 +208,7 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
 int synth_main(int argc, char** argv) {
   const std::string synopsis =
       "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--clutter MM] [--rgb565]";
+      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--clutter MM] [--rgb565 | --pgm]";
   const std::vector<OptionSpec> specs = {
       {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
       {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
@@ -219,6 +223,7 @@ int synth_main(int argc, char** argv) {
       {"--cover", true, "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping across it"},
       {"--clutter", true, "dark lines parallel to every model edge, this many mm beside it, away from the model's centre"},
       {"--rgb565", false, "write raw RGB565 frames (.rgb565) instead of PPM"},
+      {"--pgm", false, "write 8-bit grey PGM frames (.pgm, the luma of vpImageConvert's rule) instead of PPM"},
       {"--supersample", true, "samples per pixel along each axis (default 4)"},
       {"--seed", true, "seed of the backdrop and the noise (default 1)"},
       {"--help", false, "this text"},
@@ -251,7 +256,7 @@ int synth_main(int argc, char** argv) {
   extras.occluder = o.occluder;
   const std::vector<edgetrack::Segment3> clutter = edgetrack::parallel_clutter(m, real(o.clutter_mm / 1000));
   if (o.clutter_mm > 0) extras.clutter = &clutter;
-  const std::string pattern = o.out + (o.rgb565 ? "/frames/frame%04d.rgb565" : "/frames/frame%04d.ppm");
+  const std::string pattern = o.out + (o.rgb565 ? "/frames/frame%04d.rgb565" : o.pgm ? "/frames/frame%04d.pgm" : "/frames/frame%04d.ppm");
   auto covered = write_frames(o, m, poses.value(), extras, pattern);
   if (!covered.ok()) return report("synth", covered.error());
   auto pos = edgetrack::write_pos(o.out + "/first.pos", poses.value()[0]);

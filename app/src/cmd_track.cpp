@@ -1,22 +1,24 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// `edgetrack track`: the paper's tracker over a sequence, with the poses CSV, the AR overlay
-/// and the Table 1 summary of the run.
+/// and the Table 1 summary of the run. It drives the tracker through the public API alone
+/// (edgetrack/edgetrack.h, docs/API.md), in named steps: parse, open the inputs, open the
+/// outputs, run the frames, close and summarise.
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "args.h"
 #include "click_init.h"
 #include "commands.h"
 #include "configuration.h"
+#include "count_markers.h"
 #include "detection_options.h"
 #include "downscaled_tracking.h"
-#include "edgetrack/model_io.h"
-#include "edgetrack/pose_io.h"
-#include "edgetrack/tracker.h"
+#include "edgetrack/edgetrack.h"
 #include "frame_source.h"
 #include "host_io.h"
 #include "overlay.h"
@@ -43,24 +45,25 @@ struct RunTotals {
   int lost = 0;
   int uncertain = 0;
   int reasons[edgetrack::kStatusReasonCount] = {};  ///< frames per edgetrack::StatusReason
-  double step_ms[edgetrack::kStepCount] = {0, 0, 0, 0};
-  double points_matched = 0;
-  double points_sampled = 0;
+  int64_t step_ns[edgetrack::kStepCount] = {0, 0, 0, 0};
+  int64_t points_matched = 0;
+  int64_t points_sampled = 0;
 };
 
 void print_table1(const RunTotals& totals) {
   const double n = totals.frames > 0 ? totals.frames : 1;
-  double total = 0;
-  for (double ms : totals.step_ms) total += ms;
+  double step_ms[edgetrack::kStepCount], total = 0;
+  for (int s = 0; s < edgetrack::kStepCount; ++s) total += step_ms[s] = totals.step_ns[s] / 1e6;
   std::printf("\nTable 1 for this run (%d frames, real = %s, steady clock of the machine running it; under QEMU, the emulator's):\n\n", totals.frames, real_name());
   std::printf("| step | ms per frame | share |\n|---|---:|---:|\n");
   for (int s = 0; s < edgetrack::kStepCount; ++s)
-    std::printf("| %s | %.3f | %.1f %% |\n", edgetrack::step_name(static_cast<edgetrack::Step>(s)), totals.step_ms[s] / n,
-                total > 0 ? 100 * totals.step_ms[s] / total : 0.0);
+    std::printf("| %s | %.3f | %.1f %% |\n", edgetrack::step_name(static_cast<edgetrack::Step>(s)), step_ms[s] / n,
+                total > 0 ? 100 * step_ms[s] / total : 0.0);
   std::printf("| total | %.3f | 100 %% |\n\n", total / n);
   std::printf("tracking: %.1f frames per second of tracking work, %.1f points tracked of %.1f sampled per frame, "
               "%d frames uncertain, %d lost\n",
-              total > 0 ? 1000 * n / total : 0.0, totals.points_matched / n, totals.points_sampled / n,
+              total > 0 ? 1000 * n / total : 0.0, static_cast<double>(totals.points_matched) / n,
+              static_cast<double>(totals.points_sampled) / n,
               totals.uncertain, totals.lost);
   for (int r = 1; r < edgetrack::kStatusReasonCount; ++r)
     if (totals.reasons[r] > 0)
@@ -93,8 +96,44 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
   return pose.value().camera_from_model;
 }
 
-int track_main(int argc, char** argv) {
-  const std::vector<OptionSpec> specs = {
+/// What the command line asks for.
+struct TrackRequest {
+  Args args;
+  SourceOptions source;
+  int factor = 1;  ///< --downscale
+  int hypotheses = 1;
+  bool from_points = false;  ///< --init with --init-points
+  bool clicked = false;      ///< --init-click
+  bool automatic = false;    ///< --init-auto
+  bool progress = true;
+};
+
+/// What the run reads: the model, the settings, the frames and the tracker made of them.
+struct TrackInputs {
+  edgetrack::EdgeModel model;
+  std::vector<std::string> notes;  ///< about the configuration, printed after a good run
+  std::unique_ptr<FrameSource> source;
+  Frame frame;  ///< the frame to track next
+  int full_width = 0, full_height = 0;
+  PinholeCamera camera;  ///< the tracked frames' (downscaled) camera
+  Se3 initial;
+  std::unique_ptr<edgetrack::EdgeIdSource> edge_ids;
+  std::optional<edgetrack::Tracker> tracker;
+  std::unique_ptr<edgetrack::AutoInitTracker> auto_tracker;  ///< --init-auto: tracks instead of `tracker`
+};
+
+/// What the run writes.
+struct TrackOutputs {
+  std::unique_ptr<PoseTableWriter> poses;
+  std::unique_ptr<Overlay> overlay;
+  std::string overlay_dir;
+  std::string overlay_ext;
+  std::unique_ptr<VideoOutput> video;
+  Cone cone;
+};
+
+const std::vector<OptionSpec>& track_options() {
+  static const std::vector<OptionSpec> specs = {
       {"--model", true, "model, ViSP .cao or Wavefront .obj (metres)"},
       {"--camera", true, "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)"},
       {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
@@ -122,27 +161,33 @@ int track_main(int argc, char** argv) {
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
+  return specs;
+}
+
+/// Step 1: the options, checked. Returns the exit status when the run stops here.
+std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
+  const std::vector<OptionSpec>& specs = track_options();
   auto parsed = Args::parse(argc, argv, 1, specs);
   if (!parsed.ok()) return report("track", parsed.error()) + 1;
-  const Args& a = parsed.value();
+  const Args& a = request.args = std::move(parsed).value();
   if (a.has("--help")) {
     std::printf("%s", usage("track", kSynopsis, specs).c_str());
     return 0;
   }
-  const bool from_points = a.has("--init") && a.has("--init-points");
-  const bool clicked = a.has("--init-click");
+  request.from_points = a.has("--init") && a.has("--init-points");
+  request.clicked = a.has("--init-click");
+  request.automatic = a.has("--init-auto");
   const bool saves = a.has("--save-clicks") || a.has("--save-pose");
-  const bool automatic = a.has("--init-auto");
-  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + from_points + clicked + automatic != 1) ||
-      (saves && !clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
+  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + request.from_points + request.clicked + request.automatic != 1) ||
+      (saves && !request.clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
     std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
     return 2;
   }
-  SourceOptions source_options;
-  source_options.images = a.text("--images");
+  SourceOptions& source = request.source;
+  source.images = a.text("--images");
   auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);
   auto factor = a.integer("--downscale", 1);
-  auto raw = a.size("--raw-size", source_options.raw_width, source_options.raw_height);
+  auto raw = a.size("--raw-size", source.raw_width, source.raw_height);
   auto hypotheses = a.integer("--hypotheses", edgetrack::TrackerParams{}.hypotheses);
   for (const Error* bad :
        {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error(), &hypotheses.error()})
@@ -150,157 +195,223 @@ int track_main(int argc, char** argv) {
   if (factor.value() < 1 || factor.value() > 8) return report("track", {"", 0, "--downscale must be 1..8"}) + 1;
   if (hypotheses.value() < 1 || hypotheses.value() > edgetrack::kMaxHypotheses)
     return report("track", {"", 0, "--hypotheses must be 1.." + std::to_string(edgetrack::kMaxHypotheses)}) + 1;
-  source_options.first = first.value();
-  source_options.last = last.value();
-  source_options.camera_device = device.value();
+  source.first = first.value();
+  source.last = last.value();
+  source.camera_device = device.value();
+  request.factor = factor.value();
+  request.hypotheses = hypotheses.value();
+  request.progress = !a.has("--quiet");
+  return std::nullopt;
+}
 
-  // Inputs, each checked with a message naming its file.
+/// The file the initial pose comes from, for messages.
+std::string init_source(const TrackRequest& request) {
+  const Args& a = request.args;
+  if (request.automatic) return "--init-auto";
+  return request.from_points ? a.text("--init-points") : request.clicked ? a.text("--init-click") : a.text("--init-pose");
+}
+
+/// The initial pose the options name, checked to put the model in front of the camera.
+Result<Se3> initial_pose(const TrackRequest& request, const TrackInputs& in, const PinholeCamera& full_camera) {
+  const Args& a = request.args;
+  if (in.auto_tracker) return in.auto_tracker->tracker().camera_from_model();  // a placeholder until found
+  auto initial =
+      request.from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
+      : request.clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
+                                               to_rgb_image(in.frame.pixels.view()), full_camera, in.model)
+                          : edgetrack::read_pos(a.text("--init-pose"));
+  if (!initial.ok()) return initial.error();
+  auto in_front = check_in_front(in.model, initial.value(), init_source(request));
+  if (!in_front.ok()) return in_front.error();
+  return initial.value();
+}
+
+/// Step 2: the model, the settings, the first frame, the initial pose and the tracker, each
+/// checked with a message naming its file.
+std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
+  const Args& a = request.args;
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("track", model.error());
+  in.model = std::move(model).value();
   auto config = read_configuration(a.text("--camera"), a.text("--config"));
   if (!config.ok()) return report("track", config.error());
+  in.notes = config.value().notes;
   edgetrack::TrackerParams params = config.value().config.params;
-  params.hypotheses = hypotheses.value();
-  downscale_settings(params, factor.value());  // in pixels of the input frames
-  auto source = open_frame_source(source_options);
+  params.hypotheses = request.hypotheses;
+  downscale_settings(params, request.factor);  // in pixels of the input frames
+  auto source = open_frame_source(request.source);
   if (!source.ok()) return report("track", source.error());
-  Frame frame;
-  auto got = source.value()->next(frame);
+  in.source = std::move(source).value();
+  auto got = in.source->next(in.frame);
   if (!got.ok()) return report("track", got.error());
-  const int full_width = frame.image.width, full_height = frame.image.height;
+  in.full_width = in.frame.pixels.width;
+  in.full_height = in.frame.pixels.height;
   PinholeCamera full_camera = config.value().config.camera;
-  if (full_camera.width == 0) full_camera.width = full_width;
-  if (full_camera.height == 0) full_camera.height = full_height;
-  if (full_camera.width != full_width || full_camera.height != full_height)
-    return report("track", {frame.name, 0,
-                            "image size " + std::to_string(full_width) + "x" + std::to_string(full_height) +
+  if (full_camera.width == 0) full_camera.width = in.full_width;
+  if (full_camera.height == 0) full_camera.height = in.full_height;
+  if (full_camera.width != in.full_width || full_camera.height != in.full_height)
+    return report("track", {in.frame.name, 0,
+                            "image size " + std::to_string(in.full_width) + "x" + std::to_string(in.full_height) +
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
-  const PinholeCamera camera = downscaled(full_camera, factor.value());
-  std::unique_ptr<edgetrack::AutoInitTracker> auto_tracker;
-  if (automatic) {
-    auto made = auto_init_tracker(a, model.value(), camera, params);
+  in.camera = downscaled(full_camera, request.factor);
+  if (request.automatic) {
+    auto made = auto_init_tracker(a, in.model, in.camera, params);
     if (!made.ok()) return report("track", made.error());
-    auto_tracker = std::move(made).value();
+    in.auto_tracker = std::move(made).value();
   }
-  const std::string init_source = automatic    ? std::string("--init-auto")
-                                  : from_points ? a.text("--init-points")
-                                  : clicked     ? a.text("--init-click")
-                                                : a.text("--init-pose");
-  auto initial = automatic     ? Result<Se3>(auto_tracker->tracker().camera_from_model())
-                 : from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
-                 : clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
-                                                  frame.image, full_camera, model.value())
-                             : edgetrack::read_pos(a.text("--init-pose"));
+  auto initial = initial_pose(request, in, full_camera);
   if (!initial.ok()) return report("track", initial.error());
-  auto in_front = check_in_front(model.value(), initial.value(), init_source);
-  if (!in_front.ok()) return report("track", in_front.error());
-  auto edge_id_source = make_edge_id_source(a.text("--visibility", "soft"), camera);
-  if (!edge_id_source.ok()) return report("track", edge_id_source.error()) + 1;
-  auto tracker = edgetrack::Tracker::create(model.value(), camera, initial.value(), params);
-  if (!tracker.ok()) return report("track", {init_source, 0, tracker.error().message});
-  tracker.value().set_edge_id_source(edge_id_source.value().get());
-  if (auto_tracker) auto_tracker->tracker().set_edge_id_source(edge_id_source.value().get());
+  in.initial = initial.value();
+  auto edge_ids = make_edge_id_source(a.text("--visibility", "soft"), in.camera);
+  if (!edge_ids.ok()) return report("track", edge_ids.error()) + 1;
+  in.edge_ids = std::move(edge_ids).value();
+  auto tracker = edgetrack::Tracker::create(in.model, in.camera, in.initial, params);
+  if (!tracker.ok()) return report("track", {init_source(request), 0, tracker.error().message});
+  in.tracker.emplace(std::move(tracker).value());
+  in.tracker->set_edge_id_source(in.edge_ids.get());
+  if (in.auto_tracker) in.auto_tracker->tracker().set_edge_id_source(in.edge_ids.get());
+  return std::nullopt;
+}
 
-  // Outputs.
-  std::unique_ptr<PoseTableWriter> poses;
+/// Step 3: the poses table, the overlay frames and the video the options ask for.
+std::optional<int> open_outputs(const TrackRequest& request, const TrackInputs& in, TrackOutputs& out) {
+  const Args& a = request.args;
   if (a.has("--poses")) {
     auto opened = PoseTableWriter::open(a.text("--poses"), true);
     if (!opened.ok()) return report("track", opened.error());
-    poses.reset(new PoseTableWriter(std::move(opened).value()));
+    out.poses.reset(new PoseTableWriter(std::move(opened).value()));
   }
-  std::unique_ptr<Overlay> overlay;
-  const std::string overlay_dir = a.text("--overlay");
+  out.overlay_dir = a.text("--overlay");
   if (a.has("--overlay") || a.has("--video")) {
-    if (!overlay_dir.empty()) {
+    if (!out.overlay_dir.empty()) {
       std::error_code error;
-      std::filesystem::create_directories(overlay_dir, error);
-      if (error) return report("track", {overlay_dir, 0, "cannot create the directory: " + error.message()});
+      std::filesystem::create_directories(out.overlay_dir, error);
+      if (error) return report("track", {out.overlay_dir, 0, "cannot create the directory: " + error.message()});
       // Removed when the run ends well: a directory of frames that still holds it is incomplete.
-      auto marked = write_text_file(overlay_dir + "/" + kIncompleteMarker,
+      auto marked = write_text_file(out.overlay_dir + "/" + kIncompleteMarker,
                                     "edgetrack track is writing these frames, or stopped before the end\n");
       if (!marked.ok()) return report("track", marked.error());
     }
-    auto made = make_overlay(camera);
+    auto made = make_overlay(in.camera);
     if (!made.ok()) return report("track", made.error());
-    overlay = std::move(made).value();
+    out.overlay = std::move(made).value();
   }
-  std::unique_ptr<VideoOutput> video;
   if (a.has("--video")) {
-    auto opened = open_video_output(a.text("--video"), camera.width, camera.height, 15.0);
+    auto opened = open_video_output(a.text("--video"), in.camera.width, in.camera.height, 15.0);
     if (!opened.ok()) return report("track", opened.error());
-    video = std::move(opened).value();
+    out.video = std::move(opened).value();
   }
-  const Cone cone = cone_on_top_face(model.value(), initial.value());
-  const std::string overlay_ext = host_io_available() ? "png" : "ppm";
+  out.cone = cone_on_top_face(in.model, in.initial);
+  out.overlay_ext = host_io_available() ? "png" : "ppm";
+  return std::nullopt;
+}
 
-  RunTotals totals;
-  const bool progress = !a.has("--quiet");
+/// Adds one frame's result to the run's totals.
+void count(const edgetrack::FrameResult& result, RunTotals& totals) {
+  for (int s = 0; s < edgetrack::kStepCount; ++s) totals.step_ns[s] += result.step_ns[s];
+  ++totals.frames;
+  totals.lost += result.status == edgetrack::TrackingStatus::kLost ? 1 : 0;
+  totals.uncertain += result.status == edgetrack::TrackingStatus::kUncertain ? 1 : 0;
+  ++totals.reasons[static_cast<int>(result.reason)];
+  totals.points_matched += result.points_matched;
+  totals.points_sampled += result.points_sampled;
+}
+
+/// Writes the frame's row and draws its overlay; `tracked` is the frame the tracker read.
+Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const edgetrack::FrameResult& result,
+                         const TrackInputs& in, TrackOutputs& out) {
+  if (out.poses) {
+    PoseRow row = pose_row(index, result.camera_from_model);
+    int64_t ns = 0;
+    for (int64_t step : result.step_ns) ns += step;
+    row.points = result.points_matched;
+    row.ms = ns / 1e6;
+    row.lost = result.status == edgetrack::TrackingStatus::kLost;
+    row.uncertain = result.status == edgetrack::TrackingStatus::kUncertain;
+    out.poses->write(row);
+  }
+  if (!out.overlay) return true;
+  const RgbImage drawn = out.overlay->draw(to_rgb_image(tracked), in.model, result.camera_from_model, out.cone);
+  if (!out.overlay_dir.empty()) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/overlay%04d.", index);
+    auto written = write_image(out.overlay_dir + name + out.overlay_ext, drawn);
+    if (!written.ok()) return written.error();
+  }
+  if (out.video) out.video->write(drawn);
+  return true;
+}
+
+/// The progress line: on a terminal after every frame, else every 50 frames.
+void print_progress(int index, edgetrack::TrackingStatus status, const RunTotals& totals, double seconds) {
   const bool terminal = isatty(2) != 0;
+  if (!terminal && totals.frames % 50 != 0) return;
+  std::fprintf(stderr, "%sframe %d %s (%d done, %d uncertain, %d lost), %.1f frames/s%s", terminal ? "\r" : "", index,
+               edgetrack::status_name(status), totals.frames, totals.uncertain, totals.lost,
+               totals.frames / (seconds > 0 ? seconds : 1), terminal ? "   " : "\n");
+}
+
+/// Step 4: every frame, in the layout its file holds (downscaled frames as RGB24), tracked,
+/// written and drawn.
+std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, TrackOutputs& out, RunTotals& totals) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<uint16_t> packed;
   for (;;) {
-    if (frame.image.width != full_width || frame.image.height != full_height)
-      return report("track", {frame.name, 0,
-                              "image size " + std::to_string(frame.image.width) + "x" +
-                                  std::to_string(frame.image.height) + " does not match the camera's " +
-                                  std::to_string(full_width) + "x" + std::to_string(full_height)});
-    const RgbImage image = factor.value() > 1 ? downscale(frame.image, factor.value()) : std::move(frame.image);
-    to_rgb565(image, packed);
-    const edgetrack::FrameResult result =
-        auto_tracker ? auto_tracker->track(packed.data()).frame : tracker.value().track(packed.data());
-    double ms = 0;
-    for (int s = 0; s < edgetrack::kStepCount; ++s) {
-      totals.step_ms[s] += result.step_ns[s] / 1e6;
-      ms += result.step_ns[s] / 1e6;
-    }
-    const bool lost = result.status == edgetrack::TrackingStatus::kLost;
-    if (progress && result.status != edgetrack::TrackingStatus::kTracked) print_status(frame.index, result);
-    ++totals.frames;
-    totals.lost += lost ? 1 : 0;
-    totals.uncertain += result.status == edgetrack::TrackingStatus::kUncertain ? 1 : 0;
-    ++totals.reasons[static_cast<int>(result.reason)];
-    totals.points_matched += result.points_matched;
-    totals.points_sampled += result.points_sampled;
-    if (poses) {
-      PoseRow row = pose_row(frame.index, result.camera_from_model);
-      row.points = result.points_matched;
-      row.ms = ms;
-      row.lost = lost;
-      row.uncertain = result.status == edgetrack::TrackingStatus::kUncertain;
-      poses->write(row);
-    }
-    if (overlay) {
-      const RgbImage drawn = overlay->draw(image, model.value(), result.camera_from_model, cone);
-      if (!overlay_dir.empty()) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/overlay%04d.", frame.index);
-        auto written = write_image(overlay_dir + name + overlay_ext, drawn);
-        if (!written.ok()) return report("track", written.error());
-      }
-      if (video) video->write(drawn);
-    }
-    if (progress && (terminal || totals.frames % 50 == 0)) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "%sframe %d %s (%d done, %d uncertain, %d lost), %.1f frames/s%s", terminal ? "\r" : "",
-                   frame.index, edgetrack::status_name(result.status), totals.frames, totals.uncertain, totals.lost, totals.frames / (seconds > 0 ? seconds : 1), terminal ? "   " : "\n");
-    }
-    frame = Frame{};
-    auto more = source.value()->next(frame);
+    const FramePixels& pixels = in.frame.pixels;
+    if (pixels.width != in.full_width || pixels.height != in.full_height)
+      return report("track", {in.frame.name, 0,
+                              "image size " + std::to_string(pixels.width) + "x" + std::to_string(pixels.height) +
+                                  " does not match the camera's " + std::to_string(in.full_width) + "x" +
+                                  std::to_string(in.full_height)});
+    RgbImage small;
+    const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
+    edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app)
+    auto result = in.auto_tracker ? in.auto_tracker->track(tracked) : in.tracker->track(tracked);
+    edgetrack_count_end();
+    if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
+    const edgetrack::FrameResult& r = result.value();
+    count(r, totals);
+    if (request.progress && r.status != edgetrack::TrackingStatus::kTracked) print_status(in.frame.index, r);
+    auto written = write_frame(in.frame.index, tracked, r, in, out);
+    if (!written.ok()) return report("track", written.error());
+    if (request.progress)
+      print_progress(in.frame.index, r.status, totals,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    auto more = in.source->next(in.frame);
     if (!more.ok()) return report("track", more.error());
     if (!more.value()) break;
   }
-  if (progress && terminal) std::fprintf(stderr, "\n");
-  if (poses) {
-    auto closed = poses->close();
+  if (request.progress && isatty(2) != 0) std::fprintf(stderr, "\n");
+  return std::nullopt;
+}
+
+/// Step 5: the outputs closed (a table or video that did not close well is an error).
+std::optional<int> close_outputs(TrackOutputs& out) {
+  if (out.poses) {
+    auto closed = out.poses->close();
     if (!closed.ok()) return report("track", closed.error());
   }
-  if (video) {
-    auto closed = video->close();
+  if (out.video) {
+    auto closed = out.video->close();
     if (!closed.ok()) return report("track", closed.error());
   }
-  if (!overlay_dir.empty()) std::remove((overlay_dir + "/" + kIncompleteMarker).c_str());
-  print_notes(config.value().notes);  // after a run that went through: an error stays one line
+  if (!out.overlay_dir.empty()) std::remove((out.overlay_dir + "/" + kIncompleteMarker).c_str());
+  return std::nullopt;
+}
+
+/// The run as named steps, in the shape of M3T's Tracker::RunTrackerProcess; each step returns
+/// the exit status when the run stops there.
+int track_main(int argc, char** argv) {
+  TrackRequest request;
+  if (auto stop = parse_request(argc, argv, request)) return *stop;
+  TrackInputs inputs;
+  if (auto stop = open_inputs(request, inputs)) return *stop;
+  TrackOutputs outputs;
+  if (auto stop = open_outputs(request, inputs, outputs)) return *stop;
+  RunTotals totals;
+  if (auto stop = run_frames(request, inputs, outputs, totals)) return *stop;
+  if (auto stop = close_outputs(outputs)) return *stop;
+  print_notes(inputs.notes);  // after a run that went through: an error stays one line
   print_table1(totals);
   return 0;
 }

@@ -22,4 +22,10 @@ void downscale_settings(edgetrack::TrackerParams& params, int factor) {
   params.faces.min_polygon_area = params.faces.min_polygon_area / (f * f);
 }
 
+edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, RgbImage& small) {
+  if (factor <= 1) return pixels.view();
+  small = downscale(to_rgb_image(pixels.view()), factor);
+  return edgetrack::packed_frame(small.rgb.data(), small.width, small.height, edgetrack::PixelLayout::kRgb24);
+}
+
 }  // namespace edgetrack_app

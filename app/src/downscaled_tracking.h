@@ -5,6 +5,7 @@
 
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/tracker.h"
+#include "image_io.h"
 
 namespace edgetrack_app {
 
@@ -16,5 +17,9 @@ edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int 
 /// control points on the object and a search that reaches no farther into the scene (the range
 /// rounded down, at least 1 pixel).
 void downscale_settings(edgetrack::TrackerParams& params, int factor);
+
+/// The frame the tracker reads: the read pixels themselves at factor 1, else the frame
+/// `factor` times smaller, as RGB24 in `small`, which the view points into.
+edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, RgbImage& small);
 
 }  // namespace edgetrack_app

@@ -84,7 +84,7 @@ class PatternSource : public FrameSource {
     if (!image.ok()) return image.error();
     frame.index = next_++;
     frame.name = path;
-    frame.image = std::move(image).value();
+    frame.pixels = std::move(image).value();
     return true;
   }
 
@@ -113,7 +113,7 @@ class ListSource : public FrameSource {
     if (!image.ok()) return image.error();
     frame.index = file.number;
     frame.name = file.path;
-    frame.image = std::move(image).value();
+    frame.pixels = std::move(image).value();
     return true;
   }
 
@@ -158,16 +158,18 @@ class VideoSource : public FrameSource {
   Result<bool> next(Frame& frame) override {
     for (;;) {
       if (last_ >= 0 && position_ > last_) return false;
-      if (!input_->read(frame.image)) return false;
+      if (!input_->read(image_)) return false;
       frame.index = position_++;
       if (frame.index >= first_) break;
     }
     frame.name = name_ + ":" + std::to_string(frame.index);
+    frame.pixels = frame_pixels(std::move(image_));
     return true;
   }
 
  private:
   std::unique_ptr<VideoInput> input_;
+  RgbImage image_;
   std::string name_;
   int first_, last_;
   int position_ = 0;
@@ -212,11 +214,13 @@ std::string expand_pattern(const std::string& pattern, int index) {
   return pattern.substr(0, begin) + number + pattern.substr(end);
 }
 
-Result<RgbImage> read_frame_file(const std::string& path, int raw_width, int raw_height) {
+Result<FramePixels> read_frame_file(const std::string& path, int raw_width, int raw_height) {
   const std::string ext = extension_of(path);
   if (is_raw(ext)) return read_raw_rgb565(path, raw_width, raw_height);
-  if (is_netpbm(ext)) return read_netpbm(path);
-  return read_image_any(path);
+  if (is_netpbm(ext)) return read_netpbm_pixels(path);
+  auto image = read_image_any(path);
+  if (!image.ok()) return image.error();
+  return frame_pixels(std::move(image).value());
 }
 
 Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOptions& options) {

@@ -14,7 +14,7 @@ namespace edgetrack_app {
 struct Frame {
   int index = 0;     ///< frame number: the pattern's number, the number ending the file name, or the position
   std::string name;  ///< file name (or "video:N") for messages
-  RgbImage image;
+  FramePixels pixels;
 };
 
 class FrameSource {
@@ -39,7 +39,7 @@ struct SourceOptions {
 edgetrack::Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOptions& options);
 
 /// Reads one image file by its extension: PGM/PPM/PNM and raw RGB565 everywhere, the rest on the host.
-edgetrack::Result<RgbImage> read_frame_file(const std::string& path, int raw_width, int raw_height);
+edgetrack::Result<FramePixels> read_frame_file(const std::string& path, int raw_width, int raw_height);
 
 /// Expands a printf pattern with one integer conversion (%d, %04d, ...) for `index`.
 std::string expand_pattern(const std::string& pattern, int index);

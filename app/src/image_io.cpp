@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "edgetrack/input_file.h"
+#include "visp3/core/vpImageConvert.h"
 
 using edgetrack::Error;
 using edgetrack::Result;
@@ -67,78 +68,165 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-Result<RgbImage> read_netpbm(const std::string& path) {
-  auto loaded = read_bytes(path);
-  if (!loaded.ok()) return loaded.error();
-  const std::vector<uint8_t>& bytes = loaded.value();
+namespace {
+
+/// What a netpbm header says, and where its samples start.
+struct NetpbmHeader {
+  bool colour = false;
+  bool ascii = false;
+  int width = 0, height = 0, maxval = 0;
+  size_t samples_at = 0;
+};
+
+Result<NetpbmHeader> read_netpbm_header(const std::string& path, const std::vector<uint8_t>& bytes) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '3' && bytes[1] != '5' && bytes[1] != '6'))
     return Error{path, 0, "not a PGM or PPM image (no P2, P3, P5 or P6 signature)"};
-  const bool colour = bytes[1] == '3' || bytes[1] == '6';
-  const bool ascii = bytes[1] == '2' || bytes[1] == '3';
+  NetpbmHeader h;
+  h.colour = bytes[1] == '3' || bytes[1] == '6';
+  h.ascii = bytes[1] == '2' || bytes[1] == '3';
   size_t at = 2;
-  int width = 0, height = 0, maxval = 0;
-  if (!header_number(bytes, at, width) || !header_number(bytes, at, height) || !header_number(bytes, at, maxval))
+  if (!header_number(bytes, at, h.width) || !header_number(bytes, at, h.height) || !header_number(bytes, at, h.maxval))
     return Error{path, 0, "malformed PGM/PPM header"};
-  if (!usable_image_size(width, height))
-    return Error{path, 0, "image size " + size_text(width, height) + " is outside 1.." + std::to_string(kMaxImageSide) +
+  if (!usable_image_size(h.width, h.height))
+    return Error{path, 0, "image size " + size_text(h.width, h.height) + " is outside 1.." + std::to_string(kMaxImageSide) +
                               " per side and " + std::to_string(kMaxImagePixels >> 20) + " M pixels"};
-  if (maxval <= 0 || maxval > 65535) return Error{path, 0, "maxval " + std::to_string(maxval) + " is out of range"};
-  const int channels = colour ? 3 : 1;
-  const size_t pixels = static_cast<size_t>(width) * height;
-  const size_t samples = pixels * channels;
-  const size_t bytes_per_sample = maxval > 255 ? 2 : 1;
-  if (!ascii) {
+  if (h.maxval <= 0 || h.maxval > 65535) return Error{path, 0, "maxval " + std::to_string(h.maxval) + " is out of range"};
+  const size_t samples = static_cast<size_t>(h.width) * h.height * (h.colour ? 3 : 1);
+  const size_t bytes_per_sample = h.maxval > 255 ? 2 : 1;
+  if (!h.ascii) {
     ++at;  // the single white space after maxval
     if (bytes.size() < at + samples * bytes_per_sample)
       return Error{path, 0, "the pixel data is truncated (" + std::to_string(bytes.size() - std::min(at, bytes.size())) +
                                 " bytes, " + std::to_string(samples * bytes_per_sample) + " expected)"};
   }
-  // sample -> round(255 * min(sample, maxval) / maxval), one division per level, not per pixel.
-  std::vector<uint8_t> to_8bit(static_cast<size_t>(maxval) + 1);
-  for (int v = 0; v <= maxval; ++v) to_8bit[v] = static_cast<uint8_t>((v * 255 + maxval / 2) / maxval);
-  RgbImage image = make_image(width, height);
-  uint8_t* out = image.rgb.data();
+  h.samples_at = at;
+  return h;
+}
+
+/// The samples of an ASCII or 16-bit file, scaled to 8 bits: round(255 * min(sample, maxval) /
+/// maxval), one division per level, not per pixel.
+Result<std::vector<uint8_t>> decode_netpbm_samples(const std::string& path, const std::vector<uint8_t>& bytes,
+                                                   const NetpbmHeader& h) {
+  const size_t samples = static_cast<size_t>(h.width) * h.height * (h.colour ? 3 : 1);
+  std::vector<uint8_t> to_8bit(static_cast<size_t>(h.maxval) + 1);
+  for (int v = 0; v <= h.maxval; ++v) to_8bit[v] = static_cast<uint8_t>((v * 255 + h.maxval / 2) / h.maxval);
+  std::vector<uint8_t> out(samples);
+  size_t at = h.samples_at;
   for (size_t i = 0; i < samples; ++i) {
     int v = 0;
-    if (ascii) {
+    if (h.ascii) {
       if (!header_number(bytes, at, v)) return Error{path, 0, "the pixel data is truncated or not numbers"};
     } else {
-      v = bytes_per_sample == 1 ? bytes[at + i] : (bytes[at + 2 * i] << 8) | bytes[at + 2 * i + 1];
+      v = h.maxval > 255 ? (bytes[at + 2 * i] << 8) | bytes[at + 2 * i + 1] : bytes[at + i];
     }
-    const uint8_t level = to_8bit[std::min(v, maxval)];
-    if (colour) {
-      *out++ = level;
-    } else {
-      out[0] = out[1] = out[2] = level;
-      out += 3;
+    out[i] = to_8bit[std::min(v, h.maxval)];
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<FramePixels> read_netpbm_pixels(const std::string& path) {
+  auto loaded = read_bytes(path);
+  if (!loaded.ok()) return loaded.error();
+  auto header = read_netpbm_header(path, loaded.value());
+  if (!header.ok()) return header.error();
+  const NetpbmHeader& h = header.value();
+  FramePixels frame;
+  frame.width = h.width;
+  frame.height = h.height;
+  frame.layout = h.colour ? edgetrack::PixelLayout::kRgb24 : edgetrack::PixelLayout::kGrey8;
+  if (!h.ascii && h.maxval == 255) {  // the samples are the pixels
+    frame.bytes = std::move(loaded).value();
+    frame.offset = h.samples_at;
+    return frame;
+  }
+  auto decoded = decode_netpbm_samples(path, loaded.value(), h);
+  if (!decoded.ok()) return decoded.error();
+  frame.bytes = std::move(decoded).value();
+  return frame;
+}
+
+Result<RgbImage> read_netpbm(const std::string& path) {
+  auto frame = read_netpbm_pixels(path);
+  if (!frame.ok()) return frame.error();
+  return to_rgb_image(frame.value().view());
+}
+
+FramePixels frame_pixels(RgbImage image) {
+  FramePixels frame;
+  frame.width = image.width;
+  frame.height = image.height;
+  frame.layout = edgetrack::PixelLayout::kRgb24;
+  frame.bytes = std::move(image.rgb);
+  return frame;
+}
+
+RgbImage to_rgb_image(const edgetrack::FrameView& frame) {
+  RgbImage image = make_image(frame.width, frame.height);
+  uint8_t* out = image.rgb.data();
+  for (int y = 0; y < frame.height; ++y) {
+    const uint8_t* in = frame.row(y);
+    for (int x = 0; x < frame.width; ++x, out += 3) {
+      if (frame.layout == edgetrack::PixelLayout::kGrey8) {
+        out[0] = out[1] = out[2] = in[x];
+      } else if (frame.layout == edgetrack::PixelLayout::kRgb565) {
+        const unsigned p = reinterpret_cast<const uint16_t*>(in)[x];
+        const unsigned r5 = p >> 11, g6 = (p >> 5) & 63u, b5 = p & 31u;
+        out[0] = static_cast<uint8_t>((r5 << 3) | (r5 >> 2));
+        out[1] = static_cast<uint8_t>((g6 << 2) | (g6 >> 4));
+        out[2] = static_cast<uint8_t>((b5 << 3) | (b5 >> 2));
+      } else {
+        std::copy(in + 3 * x, in + 3 * x + 3, out);
+      }
     }
   }
   return image;
 }
 
-Result<bool> write_ppm(const std::string& path, const RgbImage& image) {
+namespace {
+
+/// Writes a binary netpbm file: its header, then `pixels`.
+Result<bool> write_netpbm(const std::string& path, char kind, const RgbImage& image, const std::vector<uint8_t>& pixels) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) return Error{path, 0, "cannot open the file for writing"};
-  bool ok = std::fprintf(file, "P6\n%d %d\n255\n", image.width, image.height) > 0;
-  ok = ok && std::fwrite(image.rgb.data(), 1, image.rgb.size(), file) == image.rgb.size();
+  bool ok = std::fprintf(file, "P%c\n%d %d\n255\n", kind, image.width, image.height) > 0;
+  ok = ok && std::fwrite(pixels.data(), 1, pixels.size(), file) == pixels.size();
   ok = (std::fclose(file) == 0) && ok;
   if (!ok) return Error{path, 0, "write failed"};
   return true;
 }
 
-Result<RgbImage> read_raw_rgb565(const std::string& path, int width, int height) {
+}  // namespace
+
+Result<bool> write_ppm(const std::string& path, const RgbImage& image) { return write_netpbm(path, '6', image, image.rgb); }
+
+Result<bool> write_pgm(const std::string& path, const RgbImage& image) {
+  std::vector<uint8_t> grey(static_cast<size_t>(image.width) * image.height);
+  for (size_t i = 0; i < grey.size(); ++i)
+    grey[i] = vpImageConvert::rgbToGrey(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]);
+  return write_netpbm(path, '5', image, grey);
+}
+
+Result<FramePixels> read_raw_rgb565(const std::string& path, int width, int height) {
   if (width <= 0 || height <= 0) return Error{path, 0, "raw RGB565 frames need --raw-size WIDTHxHEIGHT"};
   if (!usable_image_size(width, height)) return Error{path, 0, "raw frame size " + size_text(width, height) + " is too large"};
   auto loaded = read_bytes(path);
   if (!loaded.ok()) return loaded.error();
-  const std::vector<uint8_t>& bytes = loaded.value();
   const size_t expected = static_cast<size_t>(width) * height * 2;
-  if (bytes.size() != expected)
-    return Error{path, 0, "raw RGB565 file has " + std::to_string(bytes.size()) + " bytes, " + std::to_string(expected) +
-                              " expected for " + std::to_string(width) + "x" + std::to_string(height)};
-  std::vector<uint16_t> pixels(static_cast<size_t>(width) * height);
-  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<uint16_t>(bytes[2 * i] | (bytes[2 * i + 1] << 8));
-  return from_rgb565(pixels, width, height);
+  if (loaded.value().size() != expected)
+    return Error{path, 0, "raw RGB565 file has " + std::to_string(loaded.value().size()) + " bytes, " +
+                              std::to_string(expected) + " expected for " + std::to_string(width) + "x" +
+                              std::to_string(height)};
+  FramePixels frame;
+  frame.width = width;
+  frame.height = height;
+  frame.layout = edgetrack::PixelLayout::kRgb565;
+  frame.bytes = std::move(loaded).value();
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+  for (size_t i = 0; i < expected; i += 2) std::swap(frame.bytes[i], frame.bytes[i + 1]);
+#endif
+  return frame;
 }
 
 Result<bool> write_raw_rgb565(const std::string& path, const std::vector<uint16_t>& pixels) {

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Frames as the application handles them: 8-bit RGB images, our own PGM/PPM reader and writer,
-/// raw RGB565 files, the RGB565 conversion the tracker takes, and integer downscaling.
+/// Frames as the application handles them: the pixels of a frame file in the layout the file
+/// holds (the tracker reads them in place), 8-bit RGB images for drawing, our own PGM/PPM
+/// reader and writer, raw RGB565 files, RGB565 packing and integer downscaling.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "edgetrack/frame_view.h"
 #include "edgetrack/result.h"
 
 namespace edgetrack_app {
@@ -23,6 +25,27 @@ struct RgbImage {
 
 RgbImage make_image(int width, int height);
 
+/// A frame's pixels in the layout its file holds, inside the bytes read: a binary 8-bit PGM is
+/// grey8 and a PPM RGB24 from just after the header, a raw RGB565 file is RGB565 from its first
+/// byte; other files are decoded into `bytes` (grey8 or RGB24).
+struct FramePixels {
+  std::vector<uint8_t> bytes;
+  size_t offset = 0;  ///< of the first pixel in `bytes`
+  int width = 0;
+  int height = 0;
+  edgetrack::PixelLayout layout = edgetrack::PixelLayout::kRgb24;
+
+  edgetrack::FrameView view() const {
+    return edgetrack::packed_frame(bytes.data() + offset, width, height, layout);
+  }
+};
+
+/// The RGB image's pixels as a frame (RGB24), taking its buffer.
+FramePixels frame_pixels(RgbImage image);
+/// The frame as an 8-bit RGB image (grey repeated in the three channels), for drawing on it.
+/// Takes grey8, RGB24 and RGB565 frames (what FramePixels holds).
+RgbImage to_rgb_image(const edgetrack::FrameView& frame);
+
 /// The largest frames accepted from files and options: sides up to 16384 pixels and at most
 /// 64 M pixels (8192 x 8192, or 16384 x 4096), 192 MB as RGB.
 constexpr int kMaxImageSide = 16384;
@@ -31,13 +54,18 @@ constexpr long long kMaxImagePixels = 64LL << 20;
 bool usable_image_size(long long width, long long height);
 
 /// Reads binary or ASCII PGM/PPM (P2, P3, P5, P6), maxval 1..65535 (scaled to 8 bits with
-/// rounding, through a table: no division per pixel).
+/// rounding, through a table: no division per pixel); 8-bit binary files are not copied.
+edgetrack::Result<FramePixels> read_netpbm_pixels(const std::string& path);
+/// The same as an RGB image.
 edgetrack::Result<RgbImage> read_netpbm(const std::string& path);
 /// Writes a binary PPM (P6).
 edgetrack::Result<bool> write_ppm(const std::string& path, const RgbImage& image);
+/// Writes the image's grey (vpImageConvert's rounding rule) as a binary 8-bit PGM (P5).
+edgetrack::Result<bool> write_pgm(const std::string& path, const RgbImage& image);
 
-/// Reads a raw little-endian RGB565 file of exactly width * height pixels.
-edgetrack::Result<RgbImage> read_raw_rgb565(const std::string& path, int width, int height);
+/// Reads a raw little-endian RGB565 file of exactly width * height pixels (not copied on a
+/// little-endian machine).
+edgetrack::Result<FramePixels> read_raw_rgb565(const std::string& path, int width, int height);
 /// Writes a raw little-endian RGB565 file.
 edgetrack::Result<bool> write_raw_rgb565(const std::string& path, const std::vector<uint16_t>& pixels);
 

@@ -15,10 +15,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "edgetrack/model_io.h"
-#include "edgetrack/visp_config.h"
-#include "edgetrack/pose_io.h"
-#include "edgetrack/tracker.h"
+#include "edgetrack/edgetrack.h"
 
 namespace {
 
@@ -117,21 +114,19 @@ int main(int argc, char** argv) {
                             : video.open(argv[5], cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 15, bgr.size())))
     return fail(std::string(argv[5]) + ": cannot write the video");
 
-  std::vector<uint16_t> rgb565(bgr.total());
   for (int index = 0; !bgr.empty(); ++index, capture.read(bgr)) {
-    for (size_t i = 0; i < bgr.total(); ++i) {
-      const cv::Vec3b p = bgr.at<cv::Vec3b>(int(i / bgr.cols), int(i % bgr.cols));
-      rgb565[i] = uint16_t(((p[2] >> 3) << 11) | ((p[1] >> 2) << 5) | (p[0] >> 3));
-    }
-    const edgetrack::FrameResult r = tracker.value().track(rgb565.data());
+    // OpenCV's BGR frame, read in place with its row stride.
+    auto tracked = tracker.value().track({bgr.data, bgr.cols, bgr.rows, int(bgr.step), edgetrack::PixelLayout::kBgr24});
+    if (!tracked.ok()) return fail(tracked.error().text());
+    const edgetrack::FrameResult& r = tracked.value();
     const View view(r.camera_from_model, camera);
     for (const edgetrack::Edge& e : model.value().edges)
       cv::line(bgr, view.pixel(to_cv(model.value().vertices[e.a])), view.pixel(to_cv(model.value().vertices[e.b])),
                cv::Scalar(0, 255, 0), 1, cv::LINE_AA);
     draw_cone(bgr, cone, view);
     const cv::Vec3d t = view.translation, tu = to_cv(r.camera_from_model.theta_u());
-    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s\n", index, t[0], t[1], t[2], tu[0],
-                tu[1], tu[2], r.points_matched, r.points_sampled, r.pose.solved ? "solved" : "not-solved");
+    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s %s\n", index, t[0], t[1], t[2], tu[0],
+                tu[1], tu[2], r.points_matched, r.points_sampled, edgetrack::status_name(r.status), r.pose.solved ? "solved" : "not-solved");
     if (video.isOpened()) {
       video.write(bgr);
     } else {

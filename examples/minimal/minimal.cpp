@@ -8,13 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "edgetrack/model_io.h"
-#include "edgetrack/visp_config.h"
-#include "edgetrack/pose_io.h"
-#include "edgetrack/tracker.h"
+#include "edgetrack/edgetrack.h"
 
-/// Frame `index` of a binary 8-bit PGM sequence, packed into RGB565 (the tracker's layout).
-static bool read_frame(const char* pattern, int index, int& width, int& height, std::vector<uint16_t>& rgb565) {
+/// Frame `index` of a binary 8-bit PGM sequence: its grey bytes, which the tracker reads as they are.
+static bool read_frame(const char* pattern, int index, int& width, int& height, std::vector<unsigned char>& grey) {
   char path[4096];
   std::snprintf(path, sizeof path, pattern, index);
   std::ifstream in(path, std::ios::binary);
@@ -23,18 +20,15 @@ static bool read_frame(const char* pattern, int index, int& width, int& height, 
   in >> magic >> std::ws;
   while (in.peek() == '#') in.ignore(1 << 20, '\n');
   if (magic != "P5" || !(in >> width >> height >> maxval) || maxval != 255 || in.get() == EOF) return false;
-  std::vector<unsigned char> grey(static_cast<size_t>(width) * height);
-  if (!in.read(reinterpret_cast<char*>(grey.data()), grey.size())) return false;
-  rgb565.resize(grey.size());
-  for (size_t i = 0; i < grey.size(); ++i) rgb565[i] = ((grey[i] >> 3) << 11) | ((grey[i] >> 2) << 5) | (grey[i] >> 3);
-  return true;
+  grey.resize(static_cast<size_t>(width) * height);
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(grey.data()), grey.size()));
 }
 
 int main(int argc, char** argv) {
   if (argc < 5) return std::fprintf(stderr, "usage: minimal MODEL CAMERA.xml INIT.pos 'FRAMES%%04d.pgm' [FIRST [LAST]]\n"), 2;
   const int first = argc > 5 ? std::atoi(argv[5]) : 0, last = argc > 6 ? std::atoi(argv[6]) : 1 << 30;
   int width = 0, height = 0;
-  std::vector<uint16_t> frame;
+  std::vector<unsigned char> frame;
   if (!read_frame(argv[4], first, width, height, frame)) return std::fprintf(stderr, "minimal: no 8-bit PGM frame %d\n", first), 1;
 
   auto model = edgetrack::load_model(argv[1]);
@@ -49,11 +43,14 @@ int main(int argc, char** argv) {
   if (!tracker.ok()) return std::fprintf(stderr, "minimal: %s\n", tracker.error().text().c_str()), 1;
 
   for (int index = first; index <= last && read_frame(argv[4], index, width, height, frame); ++index) {
-    const edgetrack::FrameResult r = tracker.value().track(frame.data());
+    // Any camera layout goes the same way: RGB565, RGB24/BGR24, NV21 or I420, with a row stride.
+    auto tracked = tracker.value().track({frame.data(), width, height, width, edgetrack::PixelLayout::kGrey8});
+    if (!tracked.ok()) return std::fprintf(stderr, "minimal: frame %d: %s\n", index, tracked.error().text().c_str()), 1;
+    const edgetrack::FrameResult& r = tracked.value();
     const edgetrack::Vec3 t = r.camera_from_model.translation(), tu = r.camera_from_model.theta_u();
-    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s\n", index, double(t.x), double(t.y),
+    std::printf("frame %d t %.6f %.6f %.6f tu %.6f %.6f %.6f matched %d/%d %s %s\n", index, double(t.x), double(t.y),
                 double(t.z), double(tu.x), double(tu.y), double(tu.z), r.points_matched, r.points_sampled,
-                r.pose.solved ? "solved" : "not-solved");
+                edgetrack::status_name(r.status), r.pose.solved ? "solved" : "not-solved");
   }
   return 0;
 }

@@ -69,7 +69,7 @@ DistractorRun run_with_distractors(Scene scene, int frames, const TrackerParams&
   double alternatives = 0;
   for (int k = 0; k < frames; ++k) {
     renderer.render(scene_model, truth[k], static_cast<uint32_t>(1000 + k), frame);
-    const FrameResult result = tracker.value().track(frame.pixels.data());
+    const FrameResult result = tracker.value().track(rgb565_view(frame)).value();
     run.poses.push_back(result.camera_from_model);
     const Vec3 d = camera_position(result.camera_from_model) - camera_position(truth[k]);
     const double error_mm = 1000 * std::sqrt(static_cast<double>(d.x) * static_cast<double>(d.x) +

@@ -69,7 +69,7 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
                     static_cast<uint32_t>(1000 + k), frame);
     if (content == FrameContent::kNoise || content == FrameContent::kFlat) fill(content, static_cast<uint32_t>(k), frame);
     const Se3 sampling_pose = tracker.value().camera_from_model();
-    const FrameResult result = tracker.value().track(frame.pixels.data());
+    const FrameResult result = tracker.value().track(rgb565_view(frame)).value();
     run.frames.push_back(result);
     const Vec3 d = camera_position(result.camera_from_model) - camera_position(run.truth[k]);
     const double error_mm =

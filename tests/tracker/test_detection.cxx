@@ -55,13 +55,13 @@ void check_scene(Scene scene, const Vec3& axis, const std::vector<Mat33>& symmet
     const uint32_t seed = 11 + static_cast<uint32_t>(k);
     const Se3 truth = random_view(model.value(), camera, params.views, seed);
     render_trial(model.value(), camera, truth, true, kLines, seed, frame);
-    const Detection d = detector.value().detect(frame.pixels.data());
+    const Detection d = detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
     const PoseError e = pose_error(d.camera_from_model, truth, extent.centre, symmetries);
     std::printf("  trial %d: found %d score %.2f error %.3f mm %.3f deg, %zu candidates refined\n", k, d.found,
                 static_cast<double>(d.score), e.centre_mm, e.rotation_deg, d.refined.size());
     right += d.found && e.centre_mm <= 2 && e.rotation_deg <= 2;
     render_trial(model.value(), camera, truth, false, kLines, seed, frame);
-    const Detection none = detector.value().detect(frame.pixels.data());
+    const Detection none = detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
     std::printf("  without the object: found %d score %.2f, %zu candidates refined\n", none.found,
                 static_cast<double>(none.score), none.refined.size());
     false_found += none.found;

@@ -34,7 +34,7 @@ static void test_tracker_allocations() {
   for (int k = 0; k < repeats; ++k) {
     tracker.value().reset(truth[0]);
     before[k] = allocation_count();
-    tracker.value().track(frame.pixels.data());
+    tracker.value().track(rgb565_view(frame)).value();
     after[k] = allocation_count();
   }
   // The first frames may grow buffers the tracker keeps; from the third on, nothing may change.

@@ -67,7 +67,7 @@ static void test_tracker_faces() {
     renderer.render(model.value(), turned(angles[k]), static_cast<uint32_t>(500 + k), image);
     // The rule runs at the frame's starting pose, the previous frame's.
     const double seen_at = face_angle_degrees(model.value(), front, tracker.value().camera_from_model());
-    tracker.value().track(image.pixels.data());
+    tracker.value().track(rgb565_view(image)).value();
     const FaceVisibility& faces = tracker.value().face_visibility();
     const bool visible = faces.face_visible(front);
     const bool expected = was_visible ? seen_at < 75 : seen_at < 65;

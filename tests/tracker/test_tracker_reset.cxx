@@ -30,7 +30,7 @@ static void test_tracker_reset() {
   std::vector<Rgb565Frame> images(frames);
   for (int k = 0; k < frames; ++k) renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), images[k]);
   // The reused tracker runs a few frames first, so its buffers hold an older frame's state.
-  for (int k = 0; k < restart; ++k) reused.value().track(images[k].pixels.data());
+  for (int k = 0; k < restart; ++k) reused.value().track(rgb565_view(images[k])).value();
 
   const Se3 before = reused.value().camera_from_model();
   const Se3 behind(Mat33::identity(), Vec3{real(0), real(0), real(-0.2)});
@@ -41,8 +41,8 @@ static void test_tracker_reset() {
   TEST("and is the pose from then on", bit_identical(reused.value().camera_from_model(), truth[restart]), true);
   int identical = 0, matched = 0;
   for (int k = restart; k < frames; ++k) {
-    const FrameResult a = fresh.value().track(images[k].pixels.data());
-    const FrameResult b = reused.value().track(images[k].pixels.data());
+    const FrameResult a = fresh.value().track(rgb565_view(images[k])).value();
+    const FrameResult b = reused.value().track(rgb565_view(images[k])).value();
     identical += bit_identical(a.camera_from_model, b.camera_from_model) && a.points_matched == b.points_matched;
     matched += b.points_matched;
   }

@@ -46,7 +46,9 @@ Vec3 newell_normal(const std::vector<Vec3>& corners) {
   return n;
 }
 
-real cross2(const Vec2& o, const Vec2& a, const Vec2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+real cross2(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
 
 /// True when p lies inside or on the counter-clockwise triangle abc.
 bool inside_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
@@ -168,13 +170,15 @@ Result<bool> add_circles(const Polygons& polygons, const std::string& source, Ed
     circle.normal = normalized(n);
     const Vec3 u = normalized(to_a), v = cross(circle.normal, u);
     for (int s = 0; s <= kCircleSides; ++s)
-      circle.rim.push_back(on_circle(circle.centre, u, v, record.radius, real(2 * (s % kCircleSides)) * pi / real(kCircleSides)));
+      circle.rim.push_back(
+          on_circle(circle.centre, u, v, record.radius, real(2 * (s % kCircleSides)) * pi / real(kCircleSides)));
     // A circle closing a cylinder's end: the cylinder's own side never hides it (Edge-ID).
     const real tolerance = real(1e-3) * record.radius;
     for (size_t c = 0; c < model.cylinders.size() && circle.cap_of < 0; ++c) {
       const Cylinder& cylinder = model.cylinders[c];
       const Vec3 d = normalized(cylinder.axis_b - cylinder.axis_a);
-      const bool at_end = norm(circle.centre - cylinder.axis_a) < tolerance || norm(circle.centre - cylinder.axis_b) < tolerance;
+      const bool at_end =
+          norm(circle.centre - cylinder.axis_a) < tolerance || norm(circle.centre - cylinder.axis_b) < tolerance;
       if (at_end && fabs(cylinder.radius - record.radius) < tolerance && fabs(dot(d, circle.normal)) > real(0.999))
         circle.cap_of = static_cast<int>(c);
     }
@@ -219,70 +223,74 @@ Result<bool> add_free_lines(const Polygons& polygons, const std::string& source,
   return true;
 }
 
-}  // namespace
+/// The faces' boundaries by sorted end points, and the order in which they were first seen (so
+/// that edge indices are stable).
+struct EdgeUses {
+  std::map<std::pair<int, int>, EdgeUse> by_ends;
+  std::vector<std::pair<int, int>> order;
 
-Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
-  using std::cos;
-  EdgeModel model;
-  model.vertices = polygons.vertices;
-  const int vertex_count = static_cast<int>(model.vertices.size());
-  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
-
-  std::map<std::pair<int, int>, EdgeUse> uses;
-  std::vector<std::pair<int, int>> order;  // edges in first-seen order, so edge indices are stable
-  for (size_t f = 0; f < polygons.faces.size(); ++f) {
-    const std::vector<int>& face = polygons.faces[f];
-    const std::string label = "face " + std::to_string(f);
-    if (face.size() < 3) return fail(label + " has fewer than 3 vertices");
-    for (size_t i = 0; i < face.size(); ++i) {
-      if (face[i] < 0 || face[i] >= vertex_count) return fail(label + " uses vertex " + std::to_string(face[i]) +
-                                                              " of " + std::to_string(vertex_count));
-      for (size_t j = 0; j < i; ++j)
-        if (face[i] == face[j]) return fail(label + " repeats vertex " + std::to_string(face[i]));
+  void add(int a, int b, int face) {
+    const std::pair<int, int> key(a < b ? a : b, a < b ? b : a);
+    auto found = by_ends.find(key);
+    if (found == by_ends.end()) {
+      EdgeUse use;
+      use.faces[0] = face;
+      use.count = 1;
+      use.first_a = a;
+      by_ends.emplace(key, use);
+      order.push_back(key);
+      return;
     }
-    const std::vector<Vec3> corners = normalized_corners(model.vertices, face);
-    const Vec3 area_normal = newell_normal(corners);
-    if (norm(area_normal) == real(0)) return fail(label + " has no area");
-    Face out;
-    out.vertices = face;
-    out.normal = normalized(area_normal);
-    if (f < polygons.face_attributes.size()) out.attributes = polygons.face_attributes[f];
-    std::vector<std::array<int, 3>> pieces;
-    if (!triangulate(corners, area_normal, pieces)) return fail(label + " is not a simple polygon");
-    for (const auto& p : pieces)
-      model.triangles.push_back({face[p[0]], face[p[1]], face[p[2]], static_cast<int>(f)});
-    model.faces.push_back(out);
-
-    for (size_t i = 0; i < face.size(); ++i) {
-      const int a = face[i], b = face[(i + 1) % face.size()];
-      const std::pair<int, int> key(a < b ? a : b, a < b ? b : a);
-      auto found = uses.find(key);
-      if (found == uses.end()) {
-        EdgeUse use;
-        use.faces[0] = static_cast<int>(f);
-        use.count = 1;
-        use.first_a = a;
-        uses.emplace(key, use);
-        order.push_back(key);
-      } else {
-        EdgeUse& use = found->second;
-        if (use.count == 1) {
-          use.faces[1] = static_cast<int>(f);
-          use.same_direction = (use.first_a == a);
-        }
-        ++use.count;
-      }
+    EdgeUse& use = found->second;
+    if (use.count == 1) {
+      use.faces[1] = face;
+      use.same_direction = (use.first_a == a);
     }
+    ++use.count;
   }
+};
 
-  model.closed = !order.empty();
-  for (const auto& key : order) {
-    const EdgeUse& use = uses[key];
+/// Checks face `f` (its vertices, its area, a simple polygon), adds it with its normal and
+/// triangles to the model and its boundary to `uses`.
+Result<bool> add_face(const Polygons& polygons, size_t f, const std::string& source, EdgeUses& uses, EdgeModel& model) {
+  const int vertex_count = static_cast<int>(model.vertices.size());
+  const std::vector<int>& face = polygons.faces[f];
+  const std::string label = "face " + std::to_string(f);
+  auto fail = [&](const std::string& message) { return Error{source, 0, label + message}; };
+  if (face.size() < 3) return fail(" has fewer than 3 vertices");
+  for (size_t i = 0; i < face.size(); ++i) {
+    if (face[i] < 0 || face[i] >= vertex_count)
+      return fail(" uses vertex " + std::to_string(face[i]) + " of " + std::to_string(vertex_count));
+    for (size_t j = 0; j < i; ++j)
+      if (face[i] == face[j]) return fail(" repeats vertex " + std::to_string(face[i]));
+  }
+  const std::vector<Vec3> corners = normalized_corners(model.vertices, face);
+  const Vec3 area_normal = newell_normal(corners);
+  if (norm(area_normal) == real(0)) return fail(" has no area");
+  Face out;
+  out.vertices = face;
+  out.normal = normalized(area_normal);
+  if (f < polygons.face_attributes.size()) out.attributes = polygons.face_attributes[f];
+  std::vector<std::array<int, 3>> pieces;
+  if (!triangulate(corners, area_normal, pieces)) return fail(" is not a simple polygon");
+  for (const auto& p : pieces) model.triangles.push_back({face[p[0]], face[p[1]], face[p[2]], static_cast<int>(f)});
+  model.faces.push_back(out);
+  for (size_t i = 0; i < face.size(); ++i) uses.add(face[i], face[(i + 1) % face.size()], static_cast<int>(f));
+  return true;
+}
+
+/// The model is closed when every boundary joins two faces that run it in opposite directions;
+/// a boundary is tracked when it is an open border or a crease sharper than the rule's angle.
+void add_crease_edges(const EdgeUses& uses, const EdgeRules& rules, EdgeModel& model) {
+  using std::cos;
+  model.closed = !uses.order.empty();
+  for (const auto& key : uses.order) {
+    const EdgeUse& use = uses.by_ends.at(key);
     if (use.count != 2 || use.same_direction) model.closed = false;
   }
   const real crease_cos = cos(rules.crease_angle);
-  for (const auto& key : order) {
-    const EdgeUse& use = uses[key];
+  for (const auto& key : uses.order) {
+    const EdgeUse& use = uses.by_ends.at(key);
     bool tracked = use.count != 2;
     if (use.count == 2) {
       const Vec3& n0 = model.faces[use.faces[0]].normal;
@@ -297,7 +305,21 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
     edge.faces[1] = use.count >= 2 ? use.faces[1] : -1;
     model.edges.push_back(edge);
   }
-  const Result<bool> lines = add_free_lines(polygons, source, uses, model);
+}
+
+}  // namespace
+
+Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
+  EdgeModel model;
+  model.vertices = polygons.vertices;
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+  EdgeUses uses;
+  for (size_t f = 0; f < polygons.faces.size(); ++f) {
+    const Result<bool> face = add_face(polygons, f, source, uses, model);
+    if (!face.ok()) return face.error();
+  }
+  add_crease_edges(uses, rules, model);
+  const Result<bool> lines = add_free_lines(polygons, source, uses.by_ends, model);
   if (!lines.ok()) return lines.error();
   const Result<bool> cylinders = add_cylinders(polygons, source, model);
   if (!cylinders.ok()) return cylinders.error();
@@ -306,7 +328,8 @@ Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& ru
   if (primitive_count(model) == 0) return fail("the model has no edge, cylinder or circle to track");
   if (primitive_count(model) > kMaxEdges)
     return fail("the model has " + std::to_string(primitive_count(model)) +
-                " tracked primitives (edges, 2 per cylinder, circles); Edge-ID codes at most " + std::to_string(kMaxEdges));
+                " tracked primitives (edges, 2 per cylinder, circles); Edge-ID codes at most " +
+                std::to_string(kMaxEdges));
   return model;
 }
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
+#include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
 #include "edgetrack/tracker_params.h"
-#include "visp3/core/vpImageConvert.h"
 
 namespace edgetrack {
 namespace {
@@ -76,20 +76,21 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
       edge_ids_(camera),
       grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
 
-const vpImage<unsigned char>& Tracker::grey_scale(const uint16_t* rgb565, unsigned int& converted) {
+const vpImage<unsigned char>& Tracker::grey_scale(const FrameView& frame, unsigned int& converted) {
+  converted = 0;
+  if (grey_in_place(frame)) {
+    // Only read through const references: the moving edges never write the grey image.
+    grey_in_place_.init(const_cast<unsigned char*>(frame.row(0)), grey_.getHeight(), grey_.getWidth());
+    return grey_in_place_;
+  }
   if (params_.grey == GreyScaling::kWholeFrame) {
-    vpImageConvert::RGB565ToGrey(rgb565, grey_.bitmap, grey_.getSize());
-    converted = grey_.getSize();
+    converted = convert_to_grey(frame, PixelBox{0, 0, frame.height, frame.width}, grey_);
     return grey_;
   }
   // Box by box: boxes of neighbouring points overlap little, so converting an overlap twice
   // costs less than tracking what is done (measured on the cube sequence: vpGreyOnDemand's 8x8
   // tiles converted twice the pixels, at twice the guest instructions).
-  converted = 0;
-  for (const ControlPoint& point : visible_) {
-    const PixelBox box = me_search_box(point, me_);
-    converted += vpImageConvert::RGB565ToGrey(rgb565, grey_, box.top, box.left, box.bottom, box.right);
-  }
+  for (const ControlPoint& point : visible_) converted += convert_to_grey(frame, me_search_box(point, me_), grey_);
   return grey_;
 }
 
@@ -101,7 +102,8 @@ bool Tracker::reset(const Se3& camera_from_model) {
   return true;
 }
 
-FrameResult Tracker::track(const uint16_t* rgb565) {
+Result<FrameResult> Tracker::track(const FrameView& frame) {
+  if (auto problem = check_frame(frame, camera_.width, camera_.height)) return *std::move(problem);
   FrameResult result;
   const std::uint64_t saturations = fixedpoint::saturation_count();
   const Se3 predicted = camera_from_model_;
@@ -117,11 +119,12 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
-  const vpImage<unsigned char>& grey = grey_scale(rgb565, result.grey_pixels);
+  const vpImage<unsigned char>& grey = grey_scale(frame, result.grey_pixels);
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
   matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
+  grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

@@ -3,7 +3,8 @@
 # Prints the markdown section for docs/results/app.md: accuracy of `edgetrack track` against
 # the ground truth of sequences rendered by `edgetrack synth` (OSMesa), for host builds in
 # double and S40.23 and for the ARMv5TE S40.23 build on qemu-arm -cpu pxa270; the real mbt/cube
-# sequence at 640x480 and QVGA; and the GL Edge-ID checks of `edgetrack edgeid`.
+# sequence at 640x480 and QVGA; the GL Edge-ID checks of `edgetrack edgeid`; and the guest
+# instructions of the whole `edgetrack track` frame on qemu-arm against Tracker::track's own.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
@@ -104,3 +105,46 @@ edgeid_row() {
 edgeid_row "60 mm cube, default (truth)" --model "$models/cube60.cao" --camera "$work/paper/camera.xml" --poses "$work/paper/truth.csv"
 edgeid_row "wood toy, default (truth)" --model "$models/wood_toy.cao" --camera "$work/toy/camera.xml" --poses "$work/toy/truth.csv"
 edgeid_row "mbt/cube 640x480 (tracked)" --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --size 640x480 --poses "$work/mbt_640x480_default.csv"
+
+# The whole `edgetrack track` frame on the emulated PXA270 against the tracker's own share: the
+# same generated QVGA cube sequence written as PGM, raw RGB565 and PPM, each run to two lengths
+# under the counter; per frame is the difference of the two runs over the difference of their
+# frames (the start-up work, model, XML and first frame, cancels), for the whole process and for
+# the count window edgetrack track opens around Tracker::track.
+arm_s40_binary=$(bench_tree arm s40_23 edgetrack)/app/edgetrack
+"$host_double" synth --out "$work/pgm" --pgm >/dev/null
+"$host_double" synth --out "$work/raw" --rgb565 >/dev/null
+short=20 long=60
+echo
+echo "### The whole \`edgetrack track\` frame on the emulated PXA270"
+echo
+echo "\`edgetrack track\` (ARMv5TE S40.23 build, \`--quiet --poses OUT.csv\`) on the generated 60 mm cube sequence"
+echo "(QVGA, default settings), its frames read from PGM, raw RGB565 and PPM files; counted by"
+echo "\`toolchains/qemu/count-insns.sh\` over runs of $short and $long frames, per frame = difference of the"
+echo "two counts / $((long - short)). \"tracker\": the count window around \`Tracker::track\`; \"frame\": the"
+echo "whole process (reading the file, tracking, writing the pose row). The frame reaches the tracker"
+echo "in the layout its file holds, pointing into the bytes read (docs/API.md): PGM as grey8 (read"
+echo "in place by the moving edges), raw RGB565 and PPM (RGB24) converted box by box by the grey step."
+echo "Target (issue 11): the whole frame at most 1.25x the tracker's."
+echo
+echo "| frames from | layout | tracker per frame | whole frame | ratio | outside the tracker | soft-float per frame outside the tracker | target |"
+echo "|---|---|---:|---:|---:|---:|---:|---|"
+# frame_row LABEL LAYOUT SEQUENCE EXTENSION: counts both runs and prints a table row.
+frame_row() {
+  local label=$1 layout=$2 seq=$3 ext=$4 frames
+  for frames in $short $long; do
+    "$top/toolchains/qemu/count-insns.sh" --out "$work/count_$frames.sum" "$arm_s40_binary" track \
+      --model "$models/cube60.cao" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
+      --images "$seq/frames/frame%04d.$ext" --raw-size 320x240 --last $((frames - 1)) --quiet \
+      --poses "$work/frame_poses.csv" >/dev/null
+  done
+  cat "$work/count_$short.sum" "$work/count_$long.sum" | tr ' ' '\n' | awk -F= -v label="$label" -v layout="$layout" -v n=$((long - short)) '
+    $1 == "total" { t[++i] = $2 } $1 == "softfloat" { s[i] = $2 } $1 == "window_total" { w[i] = $2 }
+    $1 == "window_softfloat" { ws[i] = $2 }
+    END { tracker = (w[2] - w[1]) / n; whole = (t[2] - t[1]) / n; soft = (s[2] - s[1] - ws[2] + ws[1]) / n
+          printf "| %s | %s | %.3f M | %.3f M | %.3f | %.0f | %.0f | %s |\n", label, layout, tracker / 1e6, whole / 1e6,
+            whole / tracker, whole - tracker, soft, whole <= 1.25 * tracker ? "met" : "not met" }'
+}
+frame_row "PGM (P5, 8-bit)" grey8 "$work/pgm" pgm
+frame_row "raw RGB565" RGB565 "$work/raw" rgb565
+frame_row "PPM (P6, 8-bit)" RGB24 "$work/paper" ppm

@@ -72,12 +72,13 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 bool within(const PoseError& e) { return e.centre_mm <= kRightMm && e.rotation_deg <= kRightDeg; }
 
 /// Six frames of the tracker on `frame` from the true pose, each from the last one's pose.
-PoseError tracked_from_truth(Tracker& tracker, const uint16_t* frame, const Se3& truth, const Vec3& centre,
-                             const std::vector<Mat33>& symmetries) {
+PoseError tracked_from_truth(Tracker& tracker, const uint16_t* frame, int camera_width, int camera_height,
+                             const Se3& truth, const Vec3& centre, const std::vector<Mat33>& symmetries) {
   Se3 pose = truth;
   for (int k = 0; k < 6; ++k) {
     tracker.reset(pose);
-    pose = tracker.track(frame).camera_from_model;
+    const Result<FrameResult> result = tracker.track(packed_frame(frame, camera_width, camera_height, PixelLayout::kRgb565));
+    if (result.ok()) pose = result.value().camera_from_model;
   }
   return pose_error(pose, truth, centre, symmetries);
 }
@@ -125,7 +126,7 @@ int main(int argc, char** argv) {
     start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
     edgetrack_count_begin();
-    const Detection d = detector.value().detect(frame.pixels.data());
+    const Detection d = detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
     edgetrack_count_end();
     const double ms = ms_since(start);
     cpu_ms += 1000.0 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -137,7 +138,8 @@ int main(int argc, char** argv) {
     right += ok;
     refined += static_cast<int>(d.refined.size());
     if (o.from_truth && o.with_object)
-      truth_kept += within(tracked_from_truth(tracker.value(), frame.pixels.data(), truth, extent.centre, symmetries));
+      truth_kept += within(tracked_from_truth(tracker.value(), frame.pixels.data(), frame.width, frame.height, truth,
+                                              extent.centre, symmetries));
     if (!o.quiet)
       std::printf("trial %d (%.0f mm): found %d right %d score %.2f match %.2f candidates %zu error %.2f mm %.2f deg "
                   "%.1f ms\n",

@@ -73,7 +73,7 @@ int main(int argc, char* argv[]) {
       "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels\n");
   for (int k = 0; k < frames; ++k) {
     if (!per_step) edgetrack_count_begin();
-    const FrameResult r = tracker.value().track(images[k].pixels.data());
+    const FrameResult r = tracker.value().track(rgb565_view(images[k])).value();
     if (!per_step) edgetrack_count_end();
     const Vec3 d = camera_position(r.camera_from_model) - camera_position(truth[k]);
     const double error_mm =  // in double: squares of sub-millimetre values underflow in fixed point

@@ -85,7 +85,8 @@ case $name in
       --cone 30 ;;
   track_init_auto_mbt_cube)
     # ViSP's mbt/cube from frame 0 with no pose given: all 218 frames tracked, none lost, and the
-    # cube's centre within 3 mm of the run started from cube.0.pos in every frame.
+    # cube's centre with the run started from cube.0.pos: under 1 mm on average, and under 6 mm
+    # (7 px at 0.5 m, the overlay bound of the other mbt/cube comparisons) in every frame.
     "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-auto --init-distance 0.4:0.6 \
       --images "$mbt/cube/image%04d.pgm" --poses "$work/auto.csv" --quiet >/dev/null || fail "track --init-auto failed"
     "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
@@ -93,7 +94,8 @@ case $name in
     check_poses "$work/auto.csv" 218 40
     read -r worst mean < <(centre_offsets "$work/auto.csv" "$work/pos.csv" "-0.042 0.042 0.042")
     echo "cube centre against the run from cube.0.pos: largest $worst mm, mean $mean mm"
-    less "$worst" 3.0 || fail "the centre strays 3 mm or more from the run from cube.0.pos" ;;
+    less "$mean" 1.0 || fail "the centre is 1 mm or more from the run from cube.0.pos on average"
+    less "$worst" 6.0 || fail "the centre strays 6 mm or more from the run from cube.0.pos" ;;
   *) fail "unknown case" ;;
 esac
 echo "PASS ($name)"

@@ -43,7 +43,7 @@ static void test_frame_source() {
   if (listed.ok()) {
     Frame frame;
     TEST("--first 1 --last 1 of a directory gives one frame", listed.value()->next(frame).value(), true);
-    TEST_EQUAL("the frame numbered 1 in its name (f001.ppm)", int(frame.image.rgb[0]), 1);
+    TEST_EQUAL("the frame numbered 1 in its name (f001.ppm)", int(frame.pixels.view().row(0)[0]), 1);
     TEST_EQUAL("its index is the number in its name", frame.index, 1);
     TEST("and then ends", listed.value()->next(frame).value(), false);
   }
@@ -63,7 +63,7 @@ static void test_frame_source() {
   if (positional.ok()) {
     Frame frame;
     TEST("--first 1 gives a frame", positional.value()->next(frame).value(), true);
-    TEST_EQUAL("the second name in order (beta)", int(frame.image.rgb[0]), int('b'));
+    TEST_EQUAL("the second name in order (beta)", int(frame.pixels.view().row(0)[0]), int('b'));
     TEST_EQUAL("numbered by its place", frame.index, 1);
   }
   options = SourceOptions{};

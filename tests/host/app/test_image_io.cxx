@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Our PGM/PPM and raw RGB565 readers read what the writers wrote, scale other maxvals to 8 bits,
 // and refuse broken files with a message naming the file.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -35,6 +36,32 @@ static void test_image_io() {
     TEST_EQUAL("grey goes to all three channels", int(grey.value().pixel(1, 1)[2]), 170);
   }
 
+  write_text(temp_path("binary.pgm"), "P5\n# c\n3 2\n255\nABCDEF");
+  auto binary = read_netpbm_pixels(temp_path("binary.pgm"));
+  TEST("an 8-bit binary PGM reads", binary.ok(), true);
+  if (binary.ok()) {
+    const edgetrack::FrameView view = binary.value().view();
+    TEST("it goes to the tracker as grey8, 3 bytes a row", view.layout == edgetrack::PixelLayout::kGrey8 && view.row_bytes == 3,
+         true);
+    TEST("its pixels are the file's bytes after the header, not a copy",
+         view.pixels == binary.value().bytes.data() + 15 && view.row(1)[2] == 'F', true);
+  }
+  RgbImage colour = make_image(2, 1);
+  colour.rgb = {1, 2, 3, 4, 5, 6};
+  write_ppm(temp_path("colour.ppm"), colour);
+  auto rgb = read_netpbm_pixels(temp_path("colour.ppm"));
+  TEST("an 8-bit binary PPM goes to the tracker as RGB24 read in place",
+       rgb.ok() && rgb.value().layout == edgetrack::PixelLayout::kRgb24 && rgb.value().offset > 0 &&
+           rgb.value().view().row(0)[5] == 6,
+       true);
+
+  TEST("a PGM is written", write_pgm(temp_path("grey.pgm"), colour).ok(), true);
+  auto grey_back = read_netpbm_pixels(temp_path("grey.pgm"));
+  TEST("the written PGM holds the luma of each pixel (vpImageConvert's rule: 2 and 5)",
+       grey_back.ok() && grey_back.value().layout == edgetrack::PixelLayout::kGrey8 &&
+           grey_back.value().view().row(0)[0] == 2 && grey_back.value().view().row(0)[1] == 5,
+       true);
+
   write_text(temp_path("short.pgm"), std::string("P5\n4 4\n255\n") + std::string(10, 'x'));
   auto truncated = read_netpbm(temp_path("short.pgm"));
   TEST("a truncated PGM is refused", truncated.ok(), false);
@@ -47,7 +74,13 @@ static void test_image_io() {
   TEST("raw RGB565 is written", write_raw_rgb565(temp_path("frame.rgb565"), packed).ok(), true);
   auto raw = read_raw_rgb565(temp_path("frame.rgb565"), 5, 3);
   TEST("raw RGB565 reads back", raw.ok(), true);
-  TEST("raw RGB565 equals the bit-replicated packing", raw.ok() && raw.value().rgb == from_rgb565(packed, 5, 3).rgb, true);
+  TEST("raw RGB565 equals the bit-replicated packing",
+       raw.ok() && to_rgb_image(raw.value().view()).rgb == from_rgb565(packed, 5, 3).rgb, true);
+  TEST("raw RGB565 goes to the tracker as it was read: RGB565 from the file's first byte",
+       raw.ok() && raw.value().layout == edgetrack::PixelLayout::kRgb565 && raw.value().offset == 0 &&
+           raw.value().view().row_bytes == 10 &&
+           std::equal(packed.begin(), packed.end(), reinterpret_cast<const uint16_t*>(raw.value().view().pixels)),
+       true);
   auto wrong = read_raw_rgb565(temp_path("frame.rgb565"), 6, 3);
   TEST("raw RGB565 of the wrong size is refused", wrong.ok(), false);
   TEST("the size message gives the byte counts", wrong.error().message.find("30 bytes, 36 expected") != std::string::npos,

@@ -64,8 +64,10 @@ Figures compare(const edgetrack::EdgeModel& model, const PinholeCamera& camera, 
   edgetrack::EdgeIdBuffer soft(camera);
   for (const std::vector<uint16_t>& frame : frames) {
     const Se3 start = gl_tracker.value().camera_from_model();
-    gl_tracker.value().track(frame.data());
-    soft_tracker.value().track(frame.data());
+    const edgetrack::FrameView view =
+        edgetrack::packed_frame(frame.data(), camera.width, camera.height, edgetrack::PixelLayout::kRgb565);
+    gl_tracker.value().track(view);
+    soft_tracker.value().track(view);
     soft.render(model, start);
     const edgetrack::EdgeIdBuffer& gl = gl_tracker.value().edge_ids();
     long points = 0, agree = 0;
@@ -136,7 +138,7 @@ void real_mbt_cube() {
   Frame frame;
   for (auto got = source.value()->next(frame); got.ok() && got.value(); got = source.value()->next(frame)) {
     frames.emplace_back();
-    to_rgb565(frame.image, frames.back());
+    to_rgb565(to_rgb_image(frame.pixels.view()), frames.back());
   }
   check("mbt/cube", compare(model.value(), camera.value(), initial.value(), frames), 218, 80.0, 1.0, 10.0, 6.0);
 }

@@ -43,6 +43,17 @@ DECLARE(test_real_npolynomial);
 DECLARE(test_finite);
 DECLARE(test_integrant);
 DECLARE(test_container_interface);
+DECLARE(test_arithmetic);
+DECLARE(test_pow_log);
+DECLARE(test_drand48);
+DECLARE(test_sample);
+DECLARE(test_alignment);
+DECLARE(test_sparse_lst_sqr_function);
+DECLARE(test_scalar_join_iterator);
+DECLARE(test_least_squares_cost_function);
+DECLARE(test_bignum);
+DECLARE(test_decnum);
+DECLARE(test_matlab);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -86,6 +97,17 @@ void register_tests() {
   REGISTER(test_finite);
   REGISTER(test_integrant);
   REGISTER(test_container_interface);
+  REGISTER(test_arithmetic);
+  REGISTER(test_pow_log);
+  REGISTER(test_drand48);
+  REGISTER(test_sample);
+  REGISTER(test_alignment);
+  REGISTER(test_sparse_lst_sqr_function);
+  REGISTER(test_scalar_join_iterator);
+  REGISTER(test_least_squares_cost_function);
+  REGISTER(test_bignum);
+  REGISTER(test_decnum);
+  REGISTER(test_matlab);
 }
 
 DEFINE_MAIN

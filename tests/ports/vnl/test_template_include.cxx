@@ -6,6 +6,7 @@
 #include "vnl/vnl_polynomial.hxx"
 #include "vnl/vnl_quaternion.hxx"
 #include "vnl/vnl_rotation_matrix.hxx"
+#include "vnl/vnl_sparse_lst_sqr_function.hxx"
 #include "vnl/vnl_sparse_matrix.hxx"
 #include "vnl/vnl_vector.hxx"
 #include "testlib/testlib_test.h"

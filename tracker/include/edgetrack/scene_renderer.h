@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "edgetrack/edge_model.h"
+#include "edgetrack/frame_view.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
@@ -20,6 +21,11 @@ struct Rgb565Frame {
   int height = 0;
   std::vector<uint16_t> pixels;
 };
+
+/// The frame as the tracker reads it.
+inline FrameView rgb565_view(const Rgb565Frame& frame) {
+  return packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565);
+}
 
 struct SceneStyle {
   int supersample = 2;        ///< samples per pixel along each axis (anti-aliased edges)

@@ -11,6 +11,7 @@
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/face_visibility.h"
+#include "edgetrack/frame_view.h"
 #include "edgetrack/motion_model.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pinhole_camera.h"
@@ -23,7 +24,8 @@
 
 namespace edgetrack {
 
-/// How the grey step turns the RGB565 frame into the grey image the moving edges read.
+/// How the grey step turns the frame into the grey image the moving edges read (a grey8 frame,
+/// or the Y plane of NV21 and I420, packed, is read in place in both modes).
 enum class GreyScaling {
   kOnDemand,   ///< only the boxes the control points' searches read (me_search_box.h)
   kWholeFrame  ///< every pixel, as the paper does
@@ -98,8 +100,9 @@ class Tracker {
   static Result<Tracker> create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params);
 
-  /// Tracks one RGB565 frame of the camera's size (camera.width * camera.height pixels).
-  FrameResult track(const uint16_t* rgb565);
+  /// Tracks one frame of the camera's size, in any layout (frame_view.h); an Error, and nothing
+  /// changes, when check_frame refuses it.
+  Result<FrameResult> track(const FrameView& frame);
 
   /// Visible edges come from `source` from the next frame on (nullptr: the portable
   /// renderer). The source must outlive the tracker or be reset first.
@@ -127,7 +130,7 @@ class Tracker {
  private:
   Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
   /// The grey step: converts what the moving edges will read and returns the image they read.
-  const vpImage<unsigned char>& grey_scale(const uint16_t* rgb565, unsigned int& converted);
+  const vpImage<unsigned char>& grey_scale(const FrameView& frame, unsigned int& converted);
   void begin(Step step) {
     if (step_observer_) step_observer_->begin(step);
   }
@@ -150,6 +153,8 @@ class Tracker {
   StepObserver* step_observer_ = nullptr;
   /// The grey frame; on demand, only the current frame's search boxes are up to date.
   vpImage<unsigned char> grey_;
+  /// Borrows the frame's own grey bytes (grey_in_place) during track only.
+  vpImage<unsigned char> grey_in_place_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
 };

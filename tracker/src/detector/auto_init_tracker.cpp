@@ -19,22 +19,24 @@ Result<AutoInitTracker> AutoInitTracker::create(const EdgeModel& model, const Pi
   return AutoInitTracker(std::move(detector).value(), std::move(tracker).value());
 }
 
-AutoFrame AutoInitTracker::track(const uint16_t* rgb565) {
-  AutoFrame out;
+Result<FrameResult> AutoInitTracker::track(const FrameView& frame) {
+  detected_ = detect_next_;
+  found_ = false;
   if (detect_next_) {
-    out.detected = true;
-    const Detection detection = detector_.detect(rgb565);
-    out.found = detection.found && tracker_.reset(detection.camera_from_model);
-    if (!out.found) {
-      out.frame.camera_from_model = tracker_.camera_from_model();
-      out.frame.status = TrackingStatus::kLost;
-      out.frame.reason = StatusReason::kPoseFailed;
-      return out;
+    const Result<Detection> detection = detector_.detect(frame);
+    if (!detection.ok()) return detection.error();
+    found_ = detection.value().found && tracker_.reset(detection.value().camera_from_model);
+    if (!found_) {
+      FrameResult lost;
+      lost.camera_from_model = tracker_.camera_from_model();
+      lost.status = TrackingStatus::kLost;
+      lost.reason = StatusReason::kPoseFailed;
+      return lost;
     }
   }
-  out.frame = tracker_.track(rgb565);
-  detect_next_ = out.frame.status == TrackingStatus::kLost;
-  return out;
+  Result<FrameResult> result = tracker_.track(frame);
+  if (result.ok()) detect_next_ = result.value().status == TrackingStatus::kLost;
+  return result;
 }
 
 }  // namespace edgetrack

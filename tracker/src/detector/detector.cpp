@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "edgetrack/detector/template_io.h"
-#include "visp3/core/vpImageConvert.h"
+#include "edgetrack/grey_conversion.h"
 
 namespace edgetrack {
 
@@ -80,14 +81,17 @@ Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker 
       tracker_(std::move(tracker)),
       fine_(std::move(fine)) {}
 
-void Detector::match(const uint16_t* rgb565) {
+void Detector::match(const FrameView& frame) {
   const PinholeCamera& camera = templates_.camera;
-  grey_.resize(static_cast<size_t>(camera.width) * camera.height);
-  vpImageConvert::RGB565ToGrey(rgb565, grey_.data(), static_cast<unsigned>(grey_.size()));
+  grey_.resize(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
+  PixelBox whole;
+  whole.bottom = camera.height;
+  whole.right = camera.width;
+  convert_to_grey(frame, whole, grey_);
   const int factor = templates_.params.downscale;
-  const uint8_t* image = grey_.data();
+  const uint8_t* image = grey_.bitmap;
   if (factor > 1) {
-    downscale_grey(grey_.data(), camera.width, camera.height, factor, small_);
+    downscale_grey(grey_.bitmap, camera.width, camera.height, factor, small_);
     image = small_.data();
   }
   quantise_orientations(image, camera.width / factor, camera.height / factor, params_.orientations, scratch_,
@@ -97,22 +101,24 @@ void Detector::match(const uint16_t* rgb565) {
   match_templates(templates_, maps_, params_.matching, scores_, runs_, per_distance_, matches_);
 }
 
-bool Detector::run_frames(Tracker& tracker, const uint16_t* rgb565, int iterations, RefinedCandidate& candidate) {
+bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
   int lost_in_a_row = 0;
   for (int k = 0; k < iterations; ++k) {
     if (!tracker.reset(candidate.camera_from_model)) return false;
-    const FrameResult frame = tracker.track(rgb565);
-    candidate.status = frame.status;
-    candidate.visible = frame.measures.visible;
-    candidate.kept = frame.measures.kept;
-    candidate.kept_share = frame.measures.matched_share;
-    candidate.residual_scale = frame.measures.residual_scale;
-    if (frame.status == TrackingStatus::kLost) {
+    const Result<FrameResult> tracked = tracker.track(frame);
+    if (!tracked.ok()) return false;
+    const FrameResult& result = tracked.value();
+    candidate.status = result.status;
+    candidate.visible = result.measures.visible;
+    candidate.kept = result.measures.kept;
+    candidate.kept_share = result.measures.matched_share;
+    candidate.residual_scale = result.measures.residual_scale;
+    if (result.status == TrackingStatus::kLost) {
       if (++lost_in_a_row == 2) return false;
       continue;
     }
     lost_in_a_row = 0;
-    candidate.camera_from_model = frame.camera_from_model;
+    candidate.camera_from_model = result.camera_from_model;
   }
   measure_support(tracker, candidate);
   return true;
@@ -139,17 +145,17 @@ void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candida
   candidate.support = counted > 0 ? real(supported) / real(counted) : real(0);
 }
 
-RefinedCandidate Detector::refine(const uint16_t* rgb565, const TemplateMatch& match) {
+RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match) {
   RefinedCandidate near;
   near.match = match;
   near.camera_from_model = pose_of_match(templates_, match, params_.spread);
   RefinedCandidate wide = near;
   // The tracking range first: a wider search from a pose that is nearly right lets the moving
   // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
-  const bool near_ran = run_frames(tracker_, rgb565, params_.refine_iterations, near);
+  const bool near_ran = run_frames(tracker_, frame, params_.refine_iterations, near);
   if (!acceptable(near, params_) && params_.wide_iterations > 0 &&
-      run_frames(wide_, rgb565, params_.wide_iterations, wide) &&
-      run_frames(tracker_, rgb565, params_.refine_iterations, wide) && better(wide, near, params_))
+      run_frames(wide_, frame, params_.wide_iterations, wide) &&
+      run_frames(tracker_, frame, params_.refine_iterations, wide) && better(wide, near, params_))
     near = wide;
   else if (!near_ran)
     return near;
@@ -157,19 +163,19 @@ RefinedCandidate Detector::refine(const uint16_t* rgb565, const TemplateMatch& m
   // that narrow finds edges near any pose on a cluttered image.
   if (!acceptable(near, params_)) return near;
   RefinedCandidate settled = near;
-  if (run_frames(fine_, rgb565, params_.fine_iterations, settled) && settled.status == TrackingStatus::kTracked)
+  if (run_frames(fine_, frame, params_.fine_iterations, settled) && settled.status == TrackingStatus::kTracked)
     near.camera_from_model = settled.camera_from_model;
   return near;
 }
 
-std::vector<TemplateMatch> Detector::screen(const uint16_t* rgb565) {
+std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
   if (static_cast<int>(matches_.size()) <= params_.refined_candidates) return matches_;
   std::vector<RefinedCandidate> screened;
   for (const TemplateMatch& m : matches_) {
     RefinedCandidate c;
     c.match = m;
     c.camera_from_model = pose_of_match(templates_, m, params_.spread);
-    if (!run_frames(tracker_, rgb565, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
+    if (!run_frames(tracker_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
     screened.push_back(c);
   }
   // Stable: among equals the better match first.
@@ -183,10 +189,12 @@ std::vector<TemplateMatch> Detector::screen(const uint16_t* rgb565) {
   return kept;
 }
 
-Detection Detector::detect(const uint16_t* rgb565) {
+Result<Detection> Detector::detect(const FrameView& frame) {
+  if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
+    return *refused;
   Detection detection;
-  match(rgb565);
-  for (const TemplateMatch& m : screen(rgb565)) detection.refined.push_back(refine(rgb565, m));
+  match(frame);
+  for (const TemplateMatch& m : screen(frame)) detection.refined.push_back(refine(frame, m));
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;

@@ -93,6 +93,18 @@ class vnl_matrix_fixed {
     }
     return *this;
   }
+  vnl_matrix_fixed& operator+=(T s) {
+    for (auto& row : data_) {
+      for (T& x : row) x += s;
+    }
+    return *this;
+  }
+  vnl_matrix_fixed& operator-=(T s) {
+    for (auto& row : data_) {
+      for (T& x : row) x -= s;
+    }
+    return *this;
+  }
   vnl_matrix_fixed& operator*=(T s) {
     for (auto& row : data_) {
       for (T& x : row) x *= s;
@@ -195,8 +207,44 @@ vnl_matrix_fixed<T, r, c> operator-(vnl_matrix_fixed<T, r, c> a, const vnl_matri
   return a -= b;
 }
 template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator+(vnl_matrix_fixed<T, r, c> m, const T& s) {
+  return m += s;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator+(const T& s, vnl_matrix_fixed<T, r, c> m) {
+  return m += s;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator-(vnl_matrix_fixed<T, r, c> m, const T& s) {
+  return m -= s;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator-(const T& s, const vnl_matrix_fixed<T, r, c>& m) {
+  return -m + s;
+}
+template <class T, unsigned r, unsigned c>
 vnl_matrix_fixed<T, r, c> operator*(vnl_matrix_fixed<T, r, c> m, const T& s) {
   return m *= s;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator/(vnl_matrix_fixed<T, r, c> m, const T& s) {
+  return m /= s;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> element_product(const vnl_matrix_fixed<T, r, c>& a, const vnl_matrix_fixed<T, r, c>& b) {
+  vnl_matrix_fixed<T, r, c> result;
+  for (unsigned i = 0; i < r; ++i) {
+    for (unsigned j = 0; j < c; ++j) result(i, j) = a(i, j) * b(i, j);
+  }
+  return result;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> element_quotient(const vnl_matrix_fixed<T, r, c>& a, const vnl_matrix_fixed<T, r, c>& b) {
+  vnl_matrix_fixed<T, r, c> result;
+  for (unsigned i = 0; i < r; ++i) {
+    for (unsigned j = 0; j < c; ++j) result(i, j) = a(i, j) / b(i, j);
+  }
+  return result;
 }
 template <class T, unsigned r, unsigned c>
 vnl_matrix_fixed<T, r, c> operator*(const T& s, vnl_matrix_fixed<T, r, c> m) {

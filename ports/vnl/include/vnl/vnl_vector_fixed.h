@@ -81,6 +81,14 @@ class vnl_vector_fixed {
     for (unsigned i = 0; i < n; ++i) data_[i] -= rhs.data_[i];
     return *this;
   }
+  vnl_vector_fixed& operator+=(T s) {
+    for (T& x : data_) x += s;
+    return *this;
+  }
+  vnl_vector_fixed& operator-=(T s) {
+    for (T& x : data_) x -= s;
+    return *this;
+  }
   vnl_vector_fixed& operator*=(T s) {
     for (T& x : data_) x *= s;
     return *this;
@@ -151,6 +159,22 @@ vnl_vector_fixed<T, n> operator-(vnl_vector_fixed<T, n> a, const vnl_vector_fixe
   return a -= b;
 }
 template <class T, unsigned int n>
+vnl_vector_fixed<T, n> operator+(vnl_vector_fixed<T, n> v, const T& s) {
+  return v += s;
+}
+template <class T, unsigned int n>
+vnl_vector_fixed<T, n> operator+(const T& s, vnl_vector_fixed<T, n> v) {
+  return v += s;
+}
+template <class T, unsigned int n>
+vnl_vector_fixed<T, n> operator-(vnl_vector_fixed<T, n> v, const T& s) {
+  return v -= s;
+}
+template <class T, unsigned int n>
+vnl_vector_fixed<T, n> operator-(const T& s, const vnl_vector_fixed<T, n>& v) {
+  return -v + s;
+}
+template <class T, unsigned int n>
 vnl_vector_fixed<T, n> operator*(vnl_vector_fixed<T, n> v, const T& s) {
   return v *= s;
 }
@@ -174,6 +198,13 @@ template <class T, unsigned int n>
 vnl_vector_fixed<T, n> element_product(const vnl_vector_fixed<T, n>& a, const vnl_vector_fixed<T, n>& b) {
   vnl_vector_fixed<T, n> result;
   for (unsigned i = 0; i < n; ++i) result[i] = a[i] * b[i];
+  return result;
+}
+
+template <class T, unsigned int n>
+vnl_vector_fixed<T, n> element_quotient(const vnl_vector_fixed<T, n>& a, const vnl_vector_fixed<T, n>& b) {
+  vnl_vector_fixed<T, n> result;
+  for (unsigned i = 0; i < n; ++i) result[i] = a[i] / b[i];
   return result;
 }
 

@@ -10,15 +10,6 @@
 
 namespace edgetrack {
 
-/// One frame of AutoInitTracker::track.
-struct AutoFrame {
-  /// The tracker's result; on a frame where the detector ran and found nothing, a lost frame
-  /// (kPoseFailed) carrying the last pose.
-  FrameResult frame;
-  bool detected = false;  ///< the detector ran on this frame
-  bool found = false;     ///< and found the model (the frame was then tracked from its pose)
-};
-
 class AutoInitTracker {
  public:
   /// The detector (its templates checked against the model and camera) and the tracker, with
@@ -26,9 +17,14 @@ class AutoInitTracker {
   static Result<AutoInitTracker> create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
                                         const DetectorParams& detection, const TrackerParams& tracking);
 
-  /// Detects when there is no pose yet or the last frame was lost, then tracks the frame.
-  AutoFrame track(const uint16_t* rgb565);
+  /// Detects when there is no pose yet or the last frame was lost, then tracks the frame (any
+  /// layout, frame_view.h). On a frame where the detector ran and found nothing: a lost frame
+  /// (kPoseFailed) carrying the last pose. An Error when check_frame refuses the frame.
+  Result<FrameResult> track(const FrameView& frame);
 
+  /// Whether the detector ran on the last frame, and found the model there.
+  bool detected() const { return detected_; }
+  bool found() const { return found_; }
   Tracker& tracker() { return tracker_; }
 
  private:
@@ -37,6 +33,8 @@ class AutoInitTracker {
   Detector detector_;
   Tracker tracker_;
   bool detect_next_ = true;
+  bool detected_ = false;
+  bool found_ = false;
 };
 
 }  // namespace edgetrack

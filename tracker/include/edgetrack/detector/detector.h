@@ -12,6 +12,7 @@
 #include "edgetrack/detector/response_maps.h"
 #include "edgetrack/detector/template_matching.h"
 #include "edgetrack/detector/template_set.h"
+#include "edgetrack/frame_view.h"
 #include "edgetrack/result.h"
 #include "edgetrack/tracker.h"
 
@@ -85,8 +86,9 @@ class Detector {
   static Result<Detector> create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
                                  const DetectorParams& params, const TrackerParams& tracking);
 
-  /// Finds the model in one RGB565 frame of the camera's size.
-  Detection detect(const uint16_t* rgb565);
+  /// Finds the model in one frame of the camera's size, in any layout (frame_view.h); an
+  /// Error when check_frame refuses it.
+  Result<Detection> detect(const FrameView& frame);
 
   /// The template matches of the last frame, best first.
   const std::vector<TemplateMatch>& matches() const { return matches_; }
@@ -96,22 +98,22 @@ class Detector {
  private:
   Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine);
   /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
-  void match(const uint16_t* rgb565);
+  void match(const FrameView& frame);
   /// The trackers run from one match's pose.
-  RefinedCandidate refine(const uint16_t* rgb565, const TemplateMatch& match);
+  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
   /// The matches worth refining in full, best first (all of them when few).
-  std::vector<TemplateMatch> screen(const uint16_t* rgb565);
+  std::vector<TemplateMatch> screen(const FrameView& frame);
   /// candidate.support from `tracker`'s last control points.
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
   /// `iterations` frames of `tracker` from candidate.camera_from_model; false when lost twice in a row.
-  bool run_frames(Tracker& tracker, const uint16_t* rgb565, int iterations, RefinedCandidate& candidate);
+  bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate);
 
   TemplateSet templates_;
   DetectorParams params_;
   Tracker wide_;  ///< the tracking settings with the range widened
   Tracker tracker_;
   Tracker fine_;  ///< the tracking settings with the range narrowed
-  std::vector<uint8_t> grey_;
+  vpImage<unsigned char> grey_;
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;
   OrientationImage orientations_;

@@ -2,8 +2,11 @@
 /// Mirrors ViSP's visp3/core/vpImage.h: a row-major image of `Type` pixels that owns its bitmap.
 /// The subset the moving edges need: sizes, `I[i][j]`, `I(i, j)`, `bitmap`, resize and copy.
 /// Unlike upstream there is no row-pointer table and no display pointer; `I[i]` computes the row.
+/// As upstream, init(array, h, w) without copyData borrows the caller's pixels (a camera buffer
+/// read in place); a copy of such an image owns its pixels.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -15,12 +18,14 @@ class vpImage {
   vpImage() = default;
   vpImage(unsigned int height, unsigned int width) { resize(height, width); }
   vpImage(unsigned int height, unsigned int width, Type value) { resize(height, width, value); }
-  vpImage(const vpImage& other) : pixels_(other.pixels_), height(other.height), width(other.width) {
+  vpImage(Type* const array, unsigned int h, unsigned int w, bool copyData = false) { init(array, h, w, copyData); }
+  vpImage(const vpImage& other) : height(other.height), width(other.width) {
+    pixels_.assign(other.bitmap, other.bitmap + other.getSize());
     bitmap = pixels_.empty() ? nullptr : pixels_.data();
   }
   vpImage& operator=(const vpImage& other) {
     if (this != &other) {
-      pixels_ = other.pixels_;
+      pixels_.assign(other.bitmap, other.bitmap + other.getSize());
       height = other.height;
       width = other.width;
       bitmap = pixels_.empty() ? nullptr : pixels_.data();
@@ -38,6 +43,19 @@ class vpImage {
   }
   void init(unsigned int h, unsigned int w) { resize(h, w); }
   void init(unsigned int h, unsigned int w, Type value) { resize(h, w, value); }
+  /// The h x w pixels at `array`, row after row: copied when copyData, else borrowed (they must
+  /// outlive the image's use; nothing is allocated).
+  void init(Type* const array, unsigned int h, unsigned int w, bool copyData = false) {
+    height = h;
+    width = w;
+    if (copyData) {
+      pixels_.assign(array, array + static_cast<std::size_t>(h) * w);
+      bitmap = pixels_.empty() ? nullptr : pixels_.data();
+    } else {
+      pixels_.clear();
+      bitmap = array;
+    }
+  }
 
   unsigned int getHeight() const { return height; }
   unsigned int getWidth() const { return width; }
@@ -54,7 +72,7 @@ class vpImage {
   void operator()(unsigned int i, unsigned int j, const Type& v) { bitmap[static_cast<std::size_t>(i) * width + j] = v; }
 
   bool operator==(const vpImage& other) const {
-    return height == other.height && width == other.width && pixels_ == other.pixels_;
+    return height == other.height && width == other.width && std::equal(bitmap, bitmap + getSize(), other.bitmap);
   }
   bool operator!=(const vpImage& other) const { return !(*this == other); }
 

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The layouts' names and sizes, and the one check of a frame view.
+#include "edgetrack/frame_view.h"
+
+#include <string>
+
+namespace edgetrack {
+
+const char* layout_name(PixelLayout layout) {
+  switch (layout) {
+    case PixelLayout::kRgb565: return "RGB565";
+    case PixelLayout::kGrey8: return "grey8";
+    case PixelLayout::kRgb24: return "RGB24";
+    case PixelLayout::kBgr24: return "BGR24";
+    case PixelLayout::kNv21: return "NV21";
+    case PixelLayout::kI420: return "I420";
+  }
+  return "?";
+}
+
+int bytes_per_pixel(PixelLayout layout) {
+  switch (layout) {
+    case PixelLayout::kRgb565: return 2;
+    case PixelLayout::kRgb24:
+    case PixelLayout::kBgr24: return 3;
+    case PixelLayout::kGrey8:
+    case PixelLayout::kNv21:
+    case PixelLayout::kI420: return 1;
+  }
+  return 1;
+}
+
+FrameView packed_frame(const void* pixels, int width, int height, PixelLayout layout) {
+  return FrameView{pixels, width, height, width * bytes_per_pixel(layout), layout};
+}
+
+namespace {
+
+/// The start of every message (built on failure only: a good frame allocates nothing).
+std::string frame_named(const FrameView& frame) { return std::string("the ") + layout_name(frame.layout) + " frame"; }
+
+}  // namespace
+
+std::optional<Error> check_frame(const FrameView& frame, int width, int height) {
+  if (frame.pixels == nullptr) return Error{"", 0, frame_named(frame) + " has no pixels (a null pointer)"};
+  if (frame.width != width || frame.height != height)
+    return Error{"", 0, frame_named(frame) + " is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                            ", the camera's images are " + std::to_string(width) + "x" + std::to_string(height)};
+  const long long row = static_cast<long long>(width) * bytes_per_pixel(frame.layout);
+  if (frame.row_bytes < row)
+    return Error{"", 0, frame_named(frame) + "'s rows are " + std::to_string(frame.row_bytes) + " bytes apart, less than the " +
+                            std::to_string(row) + " bytes of a row of pixels"};
+  if (frame.layout == PixelLayout::kRgb565 &&
+      ((reinterpret_cast<std::uintptr_t>(frame.pixels) | static_cast<std::uintptr_t>(frame.row_bytes)) & 1u) != 0)
+    return Error{"", 0, frame_named(frame) + "'s rows do not start on 2-byte boundaries (odd pointer or row stride)"};
+  return std::nullopt;
+}
+
+}  // namespace edgetrack
