@@ -16,6 +16,7 @@
 #include "commands.h"
 #include "configuration.h"
 #include "count_markers.h"
+#include "detection_options.h"
 #include "downscaled_tracking.h"
 #include "edgetrack/edgetrack.h"
 #include "frame_source.h"
@@ -35,7 +36,7 @@ namespace {
 
 const char* const kSynopsis =
     "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt | --init-click I.init "
-    "[--save-clicks P.txt] [--save-pose P.pos]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
+    "[--save-clicks P.txt] [--save-pose P.pos] | --init-auto [--init-distance MIN:MAX] [--templates T]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
     "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config X.xml]";
 
 /// Per-step totals over a run, for the Table 1 summary.
@@ -103,6 +104,7 @@ struct TrackRequest {
   int hypotheses = 1;
   bool from_points = false;  ///< --init with --init-points
   bool clicked = false;      ///< --init-click
+  bool automatic = false;    ///< --init-auto
   bool progress = true;
 };
 
@@ -117,6 +119,7 @@ struct TrackInputs {
   Se3 initial;
   std::unique_ptr<edgetrack::EdgeIdSource> edge_ids;
   std::optional<edgetrack::Tracker> tracker;
+  std::unique_ptr<edgetrack::AutoInitTracker> auto_tracker;  ///< --init-auto: tracks instead of `tracker`
 };
 
 /// What the run writes.
@@ -137,6 +140,9 @@ const std::vector<OptionSpec>& track_options() {
       {"--init", true, "ViSP .init file of 3D points, with --init-points: initial pose from points"},
       {"--init-points", true, "image positions of the .init points, one 'u v' line each (pixels)"},
       {"--init-click", true, "ViSP .init file whose points are clicked on the first frame in a window (host, display)"},
+      {"--init-auto", false, "no initial pose: detect the model on the first frame and after each lost one"},
+      {"--init-distance", true, "with --init-auto: MIN:MAX camera distances (metres) its templates cover"},
+      {"--templates", true, "with --init-auto: templates made by `edgetrack templates` for this model and camera"},
       {"--save-clicks", true, "with --init-click: write the clicked positions (an --init-points file)"},
       {"--save-pose", true, "with --init-click: write the accepted initial pose (a .pos file for --init-pose)"},
       {"--visibility", true, "Edge-ID renderer: soft (portable, the default) or gl (OSMesa, host)"},
@@ -170,8 +176,9 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
   }
   request.from_points = a.has("--init") && a.has("--init-points");
   request.clicked = a.has("--init-click");
+  request.automatic = a.has("--init-auto");
   const bool saves = a.has("--save-clicks") || a.has("--save-pose");
-  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + request.from_points + request.clicked != 1) ||
+  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + request.from_points + request.clicked + request.automatic != 1) ||
       (saves && !request.clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
     std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
     return 2;
@@ -200,12 +207,14 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
 /// The file the initial pose comes from, for messages.
 std::string init_source(const TrackRequest& request) {
   const Args& a = request.args;
+  if (request.automatic) return "--init-auto";
   return request.from_points ? a.text("--init-points") : request.clicked ? a.text("--init-click") : a.text("--init-pose");
 }
 
 /// The initial pose the options name, checked to put the model in front of the camera.
 Result<Se3> initial_pose(const TrackRequest& request, const TrackInputs& in, const PinholeCamera& full_camera) {
   const Args& a = request.args;
+  if (in.auto_tracker) return in.auto_tracker->tracker().camera_from_model();  // a placeholder until found
   auto initial =
       request.from_points ? initial_pose_from_points(a.text("--init"), a.text("--init-points"), full_camera)
       : request.clicked   ? click_initial_pose({a.text("--init-click"), a.text("--save-clicks"), a.text("--save-pose")},
@@ -246,6 +255,11 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
   in.camera = downscaled(full_camera, request.factor);
+  if (request.automatic) {
+    auto made = auto_init_tracker(a, in.model, in.camera, params);
+    if (!made.ok()) return report("track", made.error());
+    in.auto_tracker = std::move(made).value();
+  }
   auto initial = initial_pose(request, in, full_camera);
   if (!initial.ok()) return report("track", initial.error());
   in.initial = initial.value();
@@ -256,6 +270,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   if (!tracker.ok()) return report("track", {init_source(request), 0, tracker.error().message});
   in.tracker.emplace(std::move(tracker).value());
   in.tracker->set_edge_id_source(in.edge_ids.get());
+  if (in.auto_tracker) in.auto_tracker->tracker().set_edge_id_source(in.edge_ids.get());
   return std::nullopt;
 }
 
@@ -351,7 +366,7 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
     RgbImage small;
     const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
     edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app)
-    auto result = in.tracker->track(tracked);
+    auto result = in.auto_tracker ? in.auto_tracker->track(tracked) : in.tracker->track(tracked);
     edgetrack_count_end();
     if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
     const edgetrack::FrameResult& r = result.value();

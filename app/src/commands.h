@@ -22,6 +22,11 @@ struct Command {
 int eval_main(int argc, char** argv);
 /// `track`, when the tracker's frame loop is in the checkout (else empty).
 std::vector<Command> tracking_commands();
+/// `detect` and `templates` (cmd_detect.cpp, cmd_templates.cpp), when the tracker's frame loop
+/// is in the checkout.
+std::vector<Command> detection_commands();
+int detect_main(int argc, char** argv);
+int templates_main(int argc, char** argv);
 /// Commands that need host libraries (OSMesa, OpenCV); empty in the ARM build.
 std::vector<Command> host_commands();
 int edgeid_main(int argc, char** argv);

@@ -10,6 +10,7 @@
 int main(int argc, char** argv) {
   using edgetrack_app::Command;
   std::vector<Command> commands = edgetrack_app::tracking_commands();
+  for (const Command& c : edgetrack_app::detection_commands()) commands.push_back(c);
   commands.push_back(
       {"eval", "compare tracked poses with ground truth; plots like the paper's Fig. 4 and 5", edgetrack_app::eval_main});
   for (const Command& c : edgetrack_app::host_commands()) commands.push_back(c);

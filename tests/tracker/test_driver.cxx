@@ -17,6 +17,8 @@ DECLARE(test_cao_format);
 DECLARE(test_contours);
 DECLARE(test_input_checks);
 DECLARE(test_face_visibility);
+DECLARE(test_detector_core);
+DECLARE(test_template_files);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -34,6 +36,8 @@ void register_tests() {
   REGISTER(test_contours);
   REGISTER(test_input_checks);
   REGISTER(test_face_visibility);
+  REGISTER(test_detector_core);
+  REGISTER(test_template_files);
 }
 
 DEFINE_MAIN

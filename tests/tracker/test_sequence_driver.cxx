@@ -16,6 +16,8 @@ DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
 DECLARE(test_frame_layouts);
+DECLARE(test_detection_cube);
+DECLARE(test_detection_wood_toy);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -32,6 +34,8 @@ void register_tests() {
   REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
   REGISTER(test_frame_layouts);
+  REGISTER(test_detection_cube);
+  REGISTER(test_detection_wood_toy);
 }
 
 DEFINE_MAIN

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The template options of `detect` and `templates`.
+#include "detection_options.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "edgetrack/detector/template_io.h"
+
+using edgetrack::Error;
+using edgetrack::Result;
+using edgetrack::TemplateParams;
+
+namespace edgetrack_app {
+
+namespace {
+
+/// "MIN:MAX" in metres, 0 < MIN <= MAX <= 100, the value of `option`.
+Result<bool> distance_range(const std::string& option, const std::string& text, TemplateParams& params) {
+  double low = 0, high = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf%c", &low, &high, &end) != 2 || !std::isfinite(low) || !std::isfinite(high) ||
+      !(low > 0) || high < low || high > 100)
+    return Error{"", 0, option + " '" + text + "': expected MIN:MAX in metres, 0 < MIN <= MAX <= 100"};
+  params.views.distance_min = real(low);
+  params.views.distance_max = real(high);
+  return true;
+}
+
+Result<bool> view_axis(const std::string& text, TemplateParams& params) {
+  double x = 0, y = 0, z = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &end) != 3 || !std::isfinite(x) || !std::isfinite(y) ||
+      !std::isfinite(z) || std::sqrt(x * x + y * y + z * z) < 1e-6 || std::fabs(x) > 1e3 || std::fabs(y) > 1e3 ||
+      std::fabs(z) > 1e3)
+    return Error{"", 0, "--axis '" + text + "': expected X,Y,Z, a direction in the model frame (not zero)"};
+  params.views.axis = {real(x), real(y), real(z)};
+  return true;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> template_range_specs() {
+  return {
+      {"--distance", true, "MIN:MAX camera distances to the model's centre, metres (default: from the camera and the model's size)"},
+      {"--axis", true, "X,Y,Z the direction (model frame) the view cone is about, from the model towards the camera (default 0,0,1)"},
+      {"--cone", true, "half-angle of the view cone, degrees (default 180: the whole sphere)"},
+      {"--subdivisions", true, "icosahedron subdivisions for the view directions, 0-4 (default 2: 162 directions)"},
+      {"--in-plane", true, "rotations about the optical axis per direction (default 18)"},
+  };
+}
+
+Result<TemplateParams> template_params_from(const Args& args) {
+  TemplateParams params;
+  if (args.has("--distance")) {
+    auto range = distance_range("--distance", args.text("--distance"), params);
+    if (!range.ok()) return range.error();
+  }
+  if (args.has("--axis")) {
+    auto axis = view_axis(args.text("--axis"), params);
+    if (!axis.ok()) return axis.error();
+  }
+  auto cone = args.number("--cone", 180);
+  if (!cone.ok()) return cone.error();
+  if (cone.value() <= 0 || cone.value() > 180) return Error{"", 0, "--cone must be over 0 and at most 180 degrees"};
+  params.views.max_angle = real(cone.value() * 3.141592653589793 / 180);
+  auto subdivisions = args.integer("--subdivisions", params.views.subdivisions);
+  if (!subdivisions.ok()) return subdivisions.error();
+  params.views.subdivisions = subdivisions.value();
+  auto in_plane = args.integer("--in-plane", params.views.in_plane_steps);
+  if (!in_plane.ok()) return in_plane.error();
+  params.views.in_plane_steps = in_plane.value();
+  auto checked = edgetrack::check_template_params(params);
+  if (!checked.ok()) return checked.error();
+  return params;
+}
+
+Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args& args,
+                                                                      const edgetrack::EdgeModel& model,
+                                                                      const edgetrack::PinholeCamera& camera,
+                                                                      const edgetrack::TrackerParams& tracking) {
+  Result<edgetrack::TemplateSet> templates = Error{};
+  if (args.has("--templates")) {
+    if (args.has("--init-distance"))
+      return Error{"", 0, "--init-distance cannot be used with --templates: the file fixes the range"};
+    templates = edgetrack::read_templates(args.text("--templates"), model, camera);
+  } else {
+    TemplateParams params;
+    if (args.has("--init-distance")) {
+      auto range = distance_range("--init-distance", args.text("--init-distance"), params);
+      if (!range.ok()) return range.error();
+    }
+    templates = edgetrack::make_template_set(model, camera, params);
+  }
+  if (!templates.ok()) return templates.error();
+  auto made = edgetrack::AutoInitTracker::create(model, camera, std::move(templates).value(),
+                                                 edgetrack::DetectorParams{}, tracking);
+  if (!made.ok()) return made.error();
+  return std::unique_ptr<edgetrack::AutoInitTracker>(new edgetrack::AutoInitTracker(std::move(made).value()));
+}
+
+Result<edgetrack::TemplateSet> templates_for(const Args& args, const edgetrack::EdgeModel& model,
+                                             const edgetrack::PinholeCamera& camera) {
+  if (args.has("--templates")) {
+    for (const OptionSpec& spec : template_range_specs())
+      if (args.has(spec.name))
+        return Error{"", 0, std::string(spec.name) + " cannot be used with --templates: the file fixes the range"};
+    return edgetrack::read_templates(args.text("--templates"), model, camera);
+  }
+  auto params = template_params_from(args);
+  if (!params.ok()) return params.error();
+  return edgetrack::make_template_set(model, camera, params.value());
+}
+
+}  // namespace edgetrack_app

@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# One command-line test of `detect`, `templates` and `track --init-auto` per call:
+# detect_test.sh EDGETRACK TMPDIR CASE.
+set -u
+edgetrack=$1
+work=$2/$3
+name=$3
+mbt=/usr/share/visp-images-data/ViSP-images/mbt
+data=$(cd "$(dirname "$0")/../../../data" && pwd)
+rm -rf "$work" && mkdir -p "$work"
+
+# fail, expect_error, less
+source "$(dirname "$0")/cli_common.sh"
+
+# centre_offsets A.csv B.csv CENTRE: per frame, the distance (mm) between the model point CENTRE
+# ("x y z", model frame) in the camera frame at the poses of A and B: the same for any symmetric
+# pose of a model symmetric about CENTRE. Both files have the same columns (frame, tx .. tuz
+# first). Prints the largest and the mean.
+centre_offsets() {
+  paste -d, "$1" "$2" | awk -F, -v centre="$3" '
+    function place(t1, t2, t3, w1, w2, w3,   th, k1, k2, k3, c, s, C, x, y, z) {
+      th = sqrt(w1 * w1 + w2 * w2 + w3 * w3); x = P[1]; y = P[2]; z = P[3]
+      if (th < 1e-12) { X = x + t1; Y = y + t2; Z = z + t3; return }
+      k1 = w1 / th; k2 = w2 / th; k3 = w3 / th; c = cos(th); s = sin(th); C = 1 - c
+      X = (c + k1 * k1 * C) * x + (k1 * k2 * C - k3 * s) * y + (k1 * k3 * C + k2 * s) * z + t1
+      Y = (k2 * k1 * C + k3 * s) * x + (c + k2 * k2 * C) * y + (k2 * k3 * C - k1 * s) * z + t2
+      Z = (k3 * k1 * C - k2 * s) * x + (k3 * k2 * C + k1 * s) * y + (c + k3 * k3 * C) * z + t3
+    }
+    BEGIN { split(centre, P, " ") }
+    NR > 1 {
+      place($2, $3, $4, $5, $6, $7); ax = X; ay = Y; az = Z
+      b = NF / 2 + 1
+      place($(b + 1), $(b + 2), $(b + 3), $(b + 4), $(b + 5), $(b + 6))
+      d = 1000 * sqrt((ax - X)^2 + (ay - Y)^2 + (az - Z)^2); s += d; n++
+      if (d > worst) worst = d
+    }
+    END { printf "%.3f %.3f\n", worst, s / n }'
+}
+
+# pos_as_row POS: a .pos file as a poses-CSV row for frame 0.
+pos_as_row() { echo "frame,tx,ty,tz,tux,tuy,tuz"; echo "0,$(tr -s ' \n' ',' <"$1" | sed 's/,$//')"; }
+
+case $name in
+  detect_synthetic_cube)
+    # The generated cube (synth, OSMesa) found from the model alone with the default templates:
+    # its centre (the model's origin) within 2 mm of the truth (any of the 24 symmetric poses).
+    "$edgetrack" synth --out "$work/seq" --frames 1 >/dev/null || fail "synth failed"
+    "$edgetrack" detect --model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" \
+      --image "$work/seq/frames/frame0000.ppm" --out "$work/found.pos" | tee "$work/detect.txt" || fail "not found"
+    grep -q "detect: found=1" "$work/detect.txt" || fail "no found=1 line"
+    pos_as_row "$work/found.pos" >"$work/found.csv"
+    pos_as_row "$work/seq/first.pos" >"$work/truth.csv"
+    read -r worst mean < <(centre_offsets "$work/found.csv" "$work/truth.csv" "0 0 0")
+    echo "centre $worst mm from the truth"
+    less "$worst" 2.0 || fail "the centre is 2 mm or more from the truth" ;;
+  detect_not_found)
+    # A flat grey frame: "not found", exit status 3, no pose file.
+    { printf 'P5\n320 240\n255\n'; head -c $((320 * 240)) /dev/zero | tr '\0' '\200'; } >"$work/flat.pgm"
+    "$edgetrack" synth --out "$work/seq" --frames 1 >/dev/null || fail "synth failed"
+    "$edgetrack" detect --model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" --image "$work/flat.pgm" \
+      --out "$work/found.pos" --subdivisions 1 >"$work/detect.txt"
+    status=$?
+    cat "$work/detect.txt"
+    [ "$status" -eq 3 ] || fail "exit status $status, expected 3"
+    grep -q "detect: found=0" "$work/detect.txt" || fail "no found=0 line"
+    [ ! -e "$work/found.pos" ] || fail "a pose file was written" ;;
+  templates_file_checked)
+    # Templates from a file detect as the same templates made in the run; a file for another
+    # model, of another version, or with range options beside it is refused in one line.
+    "$edgetrack" synth --out "$work/seq" --frames 1 >/dev/null || fail "synth failed"
+    range=(--subdivisions 1 --in-plane 12)
+    args=(--model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" --image "$work/seq/frames/frame0000.ppm")
+    "$edgetrack" templates --model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" --out "$work/t.txt" \
+      "${range[@]}" || fail "templates failed"
+    "$edgetrack" detect "${args[@]}" "${range[@]}" | grep -v 'ms=' >"$work/made.txt"
+    "$edgetrack" detect "${args[@]}" --templates "$work/t.txt" | grep -v 'ms=' >"$work/read.txt"
+    cat "$work/read.txt"
+    cmp -s "$work/made.txt" "$work/read.txt" || fail "templates read from the file detect differently"
+    expect_error "t.txt:2: made for another model" "$edgetrack" detect --model "$data/models/wood_toy.cao" \
+      --camera "$work/seq/camera.xml" --image "$work/seq/frames/frame0000.ppm" --templates "$work/t.txt"
+    sed '1s/ 1$/ 9/' "$work/t.txt" >"$work/v9.txt"
+    expect_error "v9.txt:1: template format version 9" "$edgetrack" detect "${args[@]}" --templates "$work/v9.txt"
+    expect_error "--cone cannot be used with --templates" "$edgetrack" detect "${args[@]}" --templates "$work/t.txt" \
+      --cone 30 ;;
+  track_init_auto_mbt_cube)
+    # ViSP's mbt/cube from frame 0 with no pose given: all 218 frames tracked, none lost, and the
+    # cube's centre with the run started from cube.0.pos: under 1 mm on average, and under 6 mm
+    # (7 px at 0.5 m, the overlay bound of the other mbt/cube comparisons) in every frame.
+    "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-auto --init-distance 0.4:0.6 \
+      --images "$mbt/cube/image%04d.pgm" --poses "$work/auto.csv" --quiet >/dev/null || fail "track --init-auto failed"
+    "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --poses "$work/pos.csv" --quiet >/dev/null || fail "track failed"
+    check_poses "$work/auto.csv" 218 40
+    read -r worst mean < <(centre_offsets "$work/auto.csv" "$work/pos.csv" "-0.042 0.042 0.042")
+    echo "cube centre against the run from cube.0.pos: largest $worst mm, mean $mean mm"
+    less "$mean" 1.0 || fail "the centre is 1 mm or more from the run from cube.0.pos on average"
+    less "$worst" 6.0 || fail "the centre strays 6 mm or more from the run from cube.0.pos" ;;
+  *) fail "unknown case" ;;
+esac
+echo "PASS ($name)"

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Finding the model in a frame with no pose given: LINE-2D matching of the templates
+/// (template_set.h) on the downscaled grey frame, then the best matches refined by the
+/// tracker's own moving edges and robust pose solve; the refined pose that explains the most of
+/// the image's edges wins, and a frame where none explains enough is "not found".
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "edgetrack/detector/gradient_orientations.h"
+#include "edgetrack/detector/response_maps.h"
+#include "edgetrack/detector/template_matching.h"
+#include "edgetrack/detector/template_set.h"
+#include "edgetrack/frame_view.h"
+#include "edgetrack/result.h"
+#include "edgetrack/tracker.h"
+
+namespace edgetrack {
+
+struct DetectorParams {
+  OrientationParams orientations;
+  /// T: orientations spread over T x T pixels and the grid step of the sliding window
+  /// (downscaled pixels). 4 at half resolution tolerates 8 full-resolution pixels.
+  int spread = 4;
+  MatchParams matching;
+  /// Tracker frames run on the same image from each candidate, each starting afresh from the
+  /// last one's pose (Tracker::reset, so each searches twice the configured range):
+  /// `refine_iterations` with the tracking settings' range; when that does not end in an
+  /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
+  /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
+  /// template's), then `refine_iterations` with the tracking range. The better of the two wins
+  /// and, when acceptable, settles with `fine_iterations` at `fine_range` (its pose taken, its
+  /// status not: a search that narrow finds edges near any pose): near the optimum a search as wide as
+  /// the tracking range's start (twice the range) reaches neighbouring edges (parallel inner
+  /// edges, background lines) that pull a single frame's pose away from it, which the next
+  /// frame of a sequence would correct and a lone frame does not.
+  int refine_iterations = 6;
+  int wide_iterations = 4;
+  unsigned wide_range = 6;
+  int fine_iterations = 3;
+  unsigned fine_range = 2;
+  /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
+  /// frames at the tracking range, and only the `refined_candidates` keeping the most control
+  /// points are refined in full (from their match again): the screen's frames already part
+  /// the matches that are near the object from the rest, at a fraction of the full cost.
+  int screen_iterations = 3;
+  int refined_candidates = 4;
+  /// Found: the last refining frame is tracked and the robust solve kept at least this share of
+  /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
+  /// few-matched rule); a right one most.
+  real min_kept_share = real(0.7);
+  /// Found also needs this support (RefinedCandidate::support). Right poses of the generated
+  /// cube and wood toy had 0.5 to 0.95 (an inner edge the light leaves without contrast has
+  /// none), so this only refuses a pose the image's gradients do not show at all.
+  real min_support = real(0.4);
+};
+
+/// One candidate after refinement.
+struct RefinedCandidate {
+  TemplateMatch match;
+  Se3 camera_from_model;  ///< refined
+  TrackingStatus status = TrackingStatus::kLost;
+  int visible = 0;  ///< visible control points of the last refining frame
+  int kept = 0;     ///< of those, the ones the robust solve kept
+  real kept_share{0};
+  real residual_scale{0};
+  /// Of the visible control points at the refined pose, the share whose image pixel (downscaled,
+  /// or one of its 8 neighbours) has their edge's orientation bin: the image's own gradients
+  /// confirming the pose, independently of the moving edges' search.
+  real support{0};
+};
+
+struct Detection {
+  bool found = false;
+  Se3 camera_from_model;  ///< the winner's refined pose (meaningful when found)
+  real score{0};          ///< the winner's kept share, 0 when no candidate
+  real match_share{0};    ///< the winner's template score share
+  int template_index = -1;
+  std::vector<RefinedCandidate> refined;  ///< every candidate refined, in the order tried
+};
+
+class Detector {
+ public:
+  /// Checks that `templates` were made for this model and this camera.
+  static Result<Detector> create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
+                                 const DetectorParams& params, const TrackerParams& tracking);
+
+  /// Finds the model in one frame of the camera's size, in any layout (frame_view.h); an
+  /// Error when check_frame refuses it.
+  Result<Detection> detect(const FrameView& frame);
+
+  /// The template matches of the last frame, best first.
+  const std::vector<TemplateMatch>& matches() const { return matches_; }
+  const TemplateSet& templates() const { return templates_; }
+  const DetectorParams& params() const { return params_; }
+
+ private:
+  Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine);
+  /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
+  void match(const FrameView& frame);
+  /// The trackers run from one match's pose.
+  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
+  /// The matches worth refining in full, best first (all of them when few).
+  std::vector<TemplateMatch> screen(const FrameView& frame);
+  /// candidate.support from `tracker`'s last control points.
+  void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
+  /// `iterations` frames of `tracker` from candidate.camera_from_model; false when lost twice in a row.
+  bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate);
+
+  TemplateSet templates_;
+  DetectorParams params_;
+  Tracker wide_;  ///< the tracking settings with the range widened
+  Tracker tracker_;
+  Tracker fine_;  ///< the tracking settings with the range narrowed
+  vpImage<unsigned char> grey_;
+  std::vector<uint8_t> small_;
+  std::vector<uint8_t> scratch_;
+  OrientationImage orientations_;
+  OrientationImage spread_;
+  ResponseMaps maps_;
+  std::vector<uint32_t> scores_;
+  std::vector<const uint32_t*> runs_;
+  std::vector<std::vector<TemplateMatch>> per_distance_;
+  std::vector<TemplateMatch> matches_;
+};
+
+/// Checks the detector's parameters; an Error names the first one out of its range.
+Result<bool> check_detector_params(const DetectorParams& params);
+
+}  // namespace edgetrack

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Template files (`edgetrack templates`, docs/FORMATS.md): a text header with the format
+/// version, the model's fingerprint, the camera and the parameters the templates were made
+/// with, then one line per template. Reading checks the header against the model and the camera
+/// in use, so a stale file is refused rather than matched.
+#pragma once
+
+#include <string>
+
+#include "edgetrack/detector/template_set.h"
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/result.h"
+
+namespace edgetrack {
+
+/// The format version this build writes and reads.
+constexpr int kTemplateFormatVersion = 1;
+
+/// Writes `set` to `path`; an Error names the file when it cannot be written.
+Result<bool> write_templates(const std::string& path, const TemplateSet& set);
+
+/// Reads the templates of `path`, refusing (with the file and the line) a file that is not a
+/// template file, another format version, templates made for another model or camera, and any
+/// value out of its range.
+Result<TemplateSet> read_templates(const std::string& path, const EdgeModel& model, const PinholeCamera& camera);
+
+/// The camera as the file states it (and as the check compares it): px py u0 v0 to 6 decimals
+/// and the image size.
+std::string camera_description(const PinholeCamera& camera);
+
+}  // namespace edgetrack

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// LINE-2D templates made from the model, with no image rendered: for each viewpoint
+/// (viewpoints.h) the model's edges are projected, Edge-ID keeps their visible points, and each
+/// feature is such a point with the orientation of its projected edge's normal (the direction of
+/// the image gradient the edge makes). A template keeps a bounded number of well-spread features.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "edgetrack/detector/viewpoints.h"
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/result.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+/// How templates are made; stored with them (template_io.h).
+struct TemplateParams {
+  ViewRange views;
+  /// Matching runs on the image downscaled by this factor (1 to 4): half a QVGA frame still
+  /// resolves the edges of an object a third of the image wide, at a quarter of the cost.
+  int downscale = 2;
+  /// Features per template (at most 63: 63 x 4 fits a byte, LINE-2D's bound).
+  int features = 32;
+  /// Views with fewer visible edge points than this are skipped (edge-on, mostly hidden).
+  int min_features = 16;
+  /// Pixels (downscaled) between the edge points features are chosen from.
+  real sample_step = real(2);
+};
+
+/// One feature: its pixel relative to the template's top-left corner and its orientation bin.
+struct TemplateFeature {
+  uint8_t x = 0;
+  uint8_t y = 0;
+  uint8_t bin = 0;
+};
+
+/// One view: its pose, where the model's centre projects (relative to the corner, downscaled
+/// pixels), its features' extent and its features (TemplateSet::features[first, first + count)).
+struct Template {
+  /// The view's rotation (camera_from_model's, as theta u: 3 numbers where a matrix takes 9);
+  /// the model's centre is on the optical axis at `distance` (template_pose).
+  Vec3 theta_u;
+  real distance{0};
+  int distance_index = 0;  ///< which of the range's distances (0: the nearest)
+  Vec2 anchor;
+  int width = 0;   ///< largest feature x + 1
+  int height = 0;  ///< largest feature y + 1
+  int first = 0;
+  int count = 0;
+};
+
+struct TemplateSet {
+  TemplateParams params;
+  PinholeCamera camera;  ///< the full-resolution camera they are made for
+  ModelExtent extent;
+  std::string model_fingerprint;
+  std::vector<Template> templates;
+  std::vector<TemplateFeature> features;
+  int distance_count = 0;  ///< distances of the range: every distance_index is below it
+
+  /// The camera of the downscaled image matching runs on.
+  PinholeCamera matching_camera() const;
+  /// Bytes held by the templates and their features.
+  size_t memory_bytes() const;
+};
+
+/// camera_from_model of a template's view.
+Se3 template_pose(const Template& t, const ModelExtent& extent);
+
+/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5).
+PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
+
+/// A short text that changes when the model's geometry changes: a hash of its vertices (in
+/// micrometres), faces, edges and curved primitives.
+std::string model_fingerprint(const EdgeModel& model);
+
+/// Checks the parameters; an Error names the first one out of its range.
+Result<bool> check_template_params(const TemplateParams& params);
+
+/// Makes the templates of every view of params.views.
+Result<TemplateSet> make_template_set(const EdgeModel& model, const PinholeCamera& camera,
+                                      const TemplateParams& params);
+
+}  // namespace edgetrack

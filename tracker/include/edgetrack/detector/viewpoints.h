@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The viewpoints templates are made from: directions on a sphere around the model (the vertices
+/// of a subdivided icosahedron, nearly even), optionally inside a cone, times in-plane rotations
+/// about the optical axis, times distances spaced by a constant ratio.
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+/// The range of views templates cover.
+struct ViewRange {
+  /// Icosahedron subdivisions: 0 gives 12 directions (63 degrees apart), 1 gives 42 (about 32),
+  /// 2 gives 162 (about 16), 3 gives 642 (about 8).
+  int subdivisions = 2;
+  /// The directions kept: within max_angle (radians) of `axis` (model frame, from the model's
+  /// centre towards the camera). pi keeps the whole sphere.
+  Vec3 axis{real(0), real(0), real(1)};
+  real max_angle = real(3.141592653589793);
+  /// Rotations about the optical axis per direction, evenly over the full turn (18: 20 degrees
+  /// apart, so the nearest is at most 10 degrees off, as the directions are).
+  int in_plane_steps = 18;
+  /// Camera distances to the model's centre (metres); 0 and 0: from the camera and the model's
+  /// size (model_distances).
+  real distance_min{0};
+  real distance_max{0};
+  /// Successive distances differ by this factor (1.1: the image scale of the nearest template is
+  /// at most 5 % off, a few pixels at the object's outline, which the refinement's search
+  /// reaches; at 1.2, 10 %, the refinement failed twice as often on the generated cube).
+  real distance_ratio = real(1.1);
+};
+
+/// The centre of the model's bounding box and the largest distance from it to a vertex.
+struct ModelExtent {
+  Vec3 centre;
+  real radius{0};
+};
+ModelExtent model_extent(const EdgeModel& model);
+
+/// Unit directions: the vertices of the icosahedron subdivided `subdivisions` times.
+std::vector<Vec3> sphere_directions(int subdivisions);
+
+/// Distances from min to max (each ratio times the last, the last one not past max by more than
+/// the ratio's half); when range.distance_min is 0, min and max are where the model's bounding
+/// sphere spans 80 % and 40 % of the image's shorter side.
+std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
+
+/// camera_from_model looking at the model's centre from `direction` (unit, model frame) at
+/// `distance`, turned by `in_plane` radians about the optical axis: the centre is on the
+/// optical axis at depth `distance`.
+Se3 view_pose(const Vec3& direction, const real& in_plane, const real& distance, const Vec3& centre);
+
+struct ViewPose {
+  Se3 camera_from_model;
+  int distance_index = 0;  ///< into view_distances
+};
+
+/// Every pose of the range, distances outermost, then directions, then in-plane rotations.
+std::vector<ViewPose> view_poses(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
+
+}  // namespace edgetrack

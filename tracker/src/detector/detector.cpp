@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The detector: template matching, then refinement by the tracker.
+#include "edgetrack/detector/detector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "edgetrack/detector/template_io.h"
+#include "edgetrack/grey_conversion.h"
+
+namespace edgetrack {
+
+namespace {
+
+bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
+  return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share && c.support >= params.min_support;
+}
+
+/// Better: acceptable over not, then more control points kept (a pose too far away, whose
+/// smaller image lines up with a part of the object's edges, keeps as large a share of fewer
+/// points), then the smaller residual scale.
+bool better(const RefinedCandidate& a, const RefinedCandidate& b, const DetectorParams& params) {
+  const bool aa = acceptable(a, params), ba = acceptable(b, params);
+  if (aa != ba) return aa;
+  if (a.kept != b.kept) return a.kept > b.kept;
+  return a.residual_scale < b.residual_scale;
+}
+
+}  // namespace
+
+Result<bool> check_detector_params(const DetectorParams& p) {
+  auto bad = [](const std::string& what) { return Error{"", 0, "detector parameter out of range: " + what}; };
+  if (p.orientations.min_magnitude < 1 || p.orientations.min_magnitude > 1442)
+    return bad("the gradient threshold must be 1 to 1442");
+  if (p.orientations.min_agreeing < 1 || p.orientations.min_agreeing > 9) return bad("agreeing pixels must be 1 to 9");
+  if (p.spread < 1 || p.spread > 16) return bad("the spread T must be 1 to 16");
+  if (p.matching.max_candidates < 1 || p.matching.max_candidates > 100) return bad("candidates must be 1 to 100");
+  if (!(p.matching.min_share >= real(0)) || p.matching.min_share > real(1)) return bad("the match share must be 0 to 1");
+  if (p.refine_iterations < 1 || p.refine_iterations > 50) return bad("refining frames must be 1 to 50");
+  if (p.wide_iterations < 0 || p.wide_iterations > 50) return bad("wide refining frames must be 0 to 50");
+  if (p.wide_range < 1 || p.wide_range > 64) return bad("the wide range must be 1 to 64 px");
+  if (p.fine_iterations < 0 || p.fine_iterations > 50) return bad("fine refining frames must be 0 to 50");
+  if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
+  if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
+  if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
+  if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
+  return true;
+}
+
+Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
+                                  const DetectorParams& params, const TrackerParams& tracking) {
+  auto checked = check_detector_params(params);
+  if (!checked.ok()) return checked.error();
+  if (templates.model_fingerprint != model_fingerprint(model))
+    return Error{"", 0, "the templates were made for another model (" + templates.model_fingerprint + ", this one is " +
+                            model_fingerprint(model) + ")"};
+  if (camera_description(templates.camera) != camera_description(camera))
+    return Error{"", 0, "the templates were made for another camera (" + camera_description(templates.camera) +
+                            ", this one is " + camera_description(camera) + ")"};
+  const ModelExtent extent = model_extent(model);
+  const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
+  Result<Tracker> tracker = Tracker::create(model, camera, start, tracking);
+  if (!tracker.ok()) return tracker.error();
+  TrackerParams wide_tracking = tracking, fine_tracking = tracking;
+  wide_tracking.me.setRange(params.wide_range);
+  fine_tracking.me.setRange(params.fine_range);
+  Result<Tracker> wide = Tracker::create(model, camera, start, wide_tracking);
+  if (!wide.ok()) return wide.error();
+  Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
+  if (!fine.ok()) return fine.error();
+  return Detector(std::move(templates), params, std::move(wide).value(), std::move(tracker).value(),
+                  std::move(fine).value());
+}
+
+Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine)
+    : templates_(std::move(templates)),
+      params_(params),
+      wide_(std::move(wide)),
+      tracker_(std::move(tracker)),
+      fine_(std::move(fine)) {}
+
+void Detector::match(const FrameView& frame) {
+  const PinholeCamera& camera = templates_.camera;
+  grey_.resize(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
+  PixelBox whole;
+  whole.bottom = camera.height;
+  whole.right = camera.width;
+  convert_to_grey(frame, whole, grey_);
+  const int factor = templates_.params.downscale;
+  const uint8_t* image = grey_.bitmap;
+  if (factor > 1) {
+    downscale_grey(grey_.bitmap, camera.width, camera.height, factor, small_);
+    image = small_.data();
+  }
+  quantise_orientations(image, camera.width / factor, camera.height / factor, params_.orientations, scratch_,
+                        orientations_);
+  spread_orientations(orientations_, params_.spread, scratch_, spread_);
+  maps_.compute(spread_, params_.spread);
+  match_templates(templates_, maps_, params_.matching, scores_, runs_, per_distance_, matches_);
+}
+
+bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
+  int lost_in_a_row = 0;
+  for (int k = 0; k < iterations; ++k) {
+    if (!tracker.reset(candidate.camera_from_model)) return false;
+    const Result<FrameResult> tracked = tracker.track(frame);
+    if (!tracked.ok()) return false;
+    const FrameResult& result = tracked.value();
+    candidate.status = result.status;
+    candidate.visible = result.measures.visible;
+    candidate.kept = result.measures.kept;
+    candidate.kept_share = result.measures.matched_share;
+    candidate.residual_scale = result.measures.residual_scale;
+    if (result.status == TrackingStatus::kLost) {
+      if (++lost_in_a_row == 2) return false;
+      continue;
+    }
+    lost_in_a_row = 0;
+    candidate.camera_from_model = result.camera_from_model;
+  }
+  measure_support(tracker, candidate);
+  return true;
+}
+
+void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candidate) const {
+  using std::floor;
+  const PinholeCamera camera = templates_.matching_camera();
+  const int w = orientations_.width, h = orientations_.height;
+  int supported = 0, counted = 0;
+  for (const ControlPoint& p : tracker.control_points()) {
+    const Vec3 c = candidate.camera_from_model * p.point_in_model;
+    if (!(c.z > real(0))) continue;
+    const Vec2 uv = camera.project(c);
+    const int x = static_cast<int>(floor(uv.x + real(0.5))), y = static_cast<int>(floor(uv.y + real(0.5)));
+    if (x < 1 || y < 1 || x + 1 >= w || y + 1 >= h) continue;
+    const int bin = orientation_bin(static_cast<int32_t>(p.normal.x * real(1024)), static_cast<int32_t>(p.normal.y * real(1024)));
+    uint8_t around = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) around |= orientations_.bits[static_cast<size_t>(y + dy) * w + x + dx];
+    ++counted;
+    supported += similarity(bin, around) == kBestSimilarity;
+  }
+  candidate.support = counted > 0 ? real(supported) / real(counted) : real(0);
+}
+
+RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match) {
+  RefinedCandidate near;
+  near.match = match;
+  near.camera_from_model = pose_of_match(templates_, match, params_.spread);
+  RefinedCandidate wide = near;
+  // The tracking range first: a wider search from a pose that is nearly right lets the moving
+  // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
+  const bool near_ran = run_frames(tracker_, frame, params_.refine_iterations, near);
+  if (!acceptable(near, params_) && params_.wide_iterations > 0 &&
+      run_frames(wide_, frame, params_.wide_iterations, wide) &&
+      run_frames(tracker_, frame, params_.refine_iterations, wide) && better(wide, near, params_))
+    near = wide;
+  else if (!near_ran)
+    return near;
+  // The narrow search settles the pose; the judgement stays the tracking range's, since a search
+  // that narrow finds edges near any pose on a cluttered image.
+  if (!acceptable(near, params_)) return near;
+  RefinedCandidate settled = near;
+  if (run_frames(fine_, frame, params_.fine_iterations, settled) && settled.status == TrackingStatus::kTracked)
+    near.camera_from_model = settled.camera_from_model;
+  return near;
+}
+
+std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
+  if (static_cast<int>(matches_.size()) <= params_.refined_candidates) return matches_;
+  std::vector<RefinedCandidate> screened;
+  for (const TemplateMatch& m : matches_) {
+    RefinedCandidate c;
+    c.match = m;
+    c.camera_from_model = pose_of_match(templates_, m, params_.spread);
+    if (!run_frames(tracker_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
+    screened.push_back(c);
+  }
+  // Stable: among equals the better match first.
+  std::stable_sort(screened.begin(), screened.end(), [](const RefinedCandidate& a, const RefinedCandidate& b) {
+    const bool al = a.status == TrackingStatus::kLost, bl = b.status == TrackingStatus::kLost;
+    if (al != bl) return bl;
+    return a.kept > b.kept;
+  });
+  std::vector<TemplateMatch> kept;
+  for (int k = 0; k < params_.refined_candidates; ++k) kept.push_back(screened[static_cast<size_t>(k)].match);
+  return kept;
+}
+
+Result<Detection> Detector::detect(const FrameView& frame) {
+  if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
+    return *refused;
+  Detection detection;
+  match(frame);
+  for (const TemplateMatch& m : screen(frame)) detection.refined.push_back(refine(frame, m));
+  const RefinedCandidate* best = nullptr;
+  for (const RefinedCandidate& c : detection.refined)
+    if (!best || better(c, *best, params_)) best = &c;
+  if (!best) return detection;
+  detection.camera_from_model = best->camera_from_model;
+  detection.score = best->kept_share;
+  detection.match_share = best->match.share;
+  detection.template_index = best->match.template_index;
+  detection.found = acceptable(*best, params_);
+  return detection;
+}
+
+}  // namespace edgetrack
