@@ -215,6 +215,23 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
     if (matches[i].chosen != 0) distances[i] = distances[i] + dot(matches[i].point.normal, matches[i].used() - matches[i].found);
 }
 
+/// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
+/// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
+int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
+                  std::vector<real>& weights) {
+  using std::fabs;
+  real c = params.tukey_c * real(1.4826) * median_of(distances);
+  if (c < params.tukey_floor) c = params.tukey_floor;
+  int outliers = 0;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    const real u = fabs(distances[i]) / c;
+    matches[i].outlier = u >= real(1);
+    weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
+    outliers += matches[i].outlier;
+  }
+  return outliers;
+}
+
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
@@ -227,6 +244,11 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real> distances(matches.size()), weights;
+  if (robust) {
+    for (size_t i = 0; i < matches.size(); ++i) distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
+    weights.resize(matches.size());
+    tukey_weights(matches, distances, params, weights);
+  }
   Se3 pose;
   if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose, &distances))
     return solution;
@@ -237,18 +259,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     return solution;
   }
 
-  weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
-    real c = params.tukey_c * real(1.4826) * median_of(distances);
-    if (c < params.tukey_floor) c = params.tukey_floor;
-    solution.outliers = 0;
-    for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
-      const real u = fabs(distances[i]) / c;
-      matches[i].outlier = u >= real(1);
-      weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
-      solution.outliers += matches[i].outlier;
-    }
+    solution.outliers = tukey_weights(matches, distances, params, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, solution, pose, &distances))
       break;
