@@ -15,6 +15,7 @@ DECLARE(test_status_leaving_view);
 DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
+DECLARE(test_back_and_forth);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -30,6 +31,7 @@ void register_tests() {
   REGISTER(test_visp_config);
   REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
+  REGISTER(test_back_and_forth);
 }
 
 DEFINE_MAIN
