@@ -2,9 +2,9 @@
 /// Multiple edge hypotheses: on generated sequences with a thin bar a few pixels beyond each
 /// model edge, the bars give the matches alternatives, and with 3 hypotheses per control point
 /// (the pose step using the nearest) the tracker follows the model as closely as with one. Three
-/// hypotheses lowered the error against one while the first pose solve was unweighted; since it
-/// is weighted at the prediction (pose_solver.h), one hypothesis gains more from that than three
-/// (docs/results/tracker.md), so the test states the bound both meet.
+/// hypotheses lowered the error against one while the first pose solve was unweighted and sites
+/// had no contrast test; one hypothesis gains more from both than three (docs/ME.md), so the
+/// test states the bound both meet.
 #include <cstdio>
 #include <string>
 

@@ -16,6 +16,8 @@ DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
 DECLARE(test_back_and_forth);
+DECLARE(test_field_conditions);
+DECLARE(test_edge_contrast);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -32,6 +34,8 @@ void register_tests() {
   REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
   REGISTER(test_back_and_forth);
+  REGISTER(test_field_conditions);
+  REGISTER(test_edge_contrast);
 }
 
 DEFINE_MAIN

@@ -168,22 +168,119 @@ void add_alternatives(vpMeSite& site, const vpImage<unsigned char>& grey, const 
   }
 }
 
+/// +1 or -1: the sign that orients vpMe's mask for the normal angle `alpha` along the normal.
+/// vpMe::maskIndex folds the tangent angle alpha + pi/2 into [0, pi) (180 degrees is mask 0),
+/// and each fold by pi turns the mask, and so the response's sign, over.
+int normal_sign(const real& alpha) {
+  using std::round;
+  real theta = alpha + real(M_PI_2);
+  int sign = 1;
+  if (theta < real(0)) {
+    theta += real(M_PI);
+    sign = -sign;
+  }
+  if (theta > real(M_PI)) {
+    theta -= real(M_PI);
+    sign = -sign;
+  }
+  if (static_cast<int>(round(theta * real(180 / M_PI))) == 180) sign = -sign;
+  return sign;
+}
+
+/// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
+/// (EdgeMatch::contrast) the same model point showed in the last trusted frame: of the local
+/// maxima of |conv| above the threshold on the site's path (visited as path_peaks does), those
+/// whose conv has the reference's sign and lies within (1 - mu1, 1 + mu2) times it, and of
+/// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
+/// where a face turns into view beside a silhouette, its far edge has the silhouette's old
+/// contrast, and on the generated frames that rule followed it off the cube.) False when none
+/// passes (the site's pixel is then left anywhere on the path).
+bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                       const real& reference) {
+  using std::fabs;
+  const int range = static_cast<int>(me.getRange());
+  const real threshold = me.getThreshold();
+  const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
+  const bool positive = reference > real(0);
+  auto conv_at = [&](int k, int& i, int& j) {
+    i = static_cast<int>(point.pixel.y + k * point.normal.y);
+    j = static_cast<int>(point.pixel.x + k * point.normal.x);
+    site.i = i;
+    site.j = j;
+    return static_cast<int>(site.convolution(grey, &me));
+  };
+  int best = 0, best_i = 0, best_j = 0, best_conv = 0;
+  int i = 0, j = 0, next_i = 0, next_j = 0;
+  int before = -1, current_conv = conv_at(-range, i, j);
+  for (int k = -range; k <= range; ++k) {
+    const int after_conv = k < range ? conv_at(k + 1, next_i, next_j) : 0;
+    const int current = current_conv < 0 ? -current_conv : current_conv;
+    const int after = k < range ? (after_conv < 0 ? -after_conv : after_conv) : -1;
+    const real magnitude(current);
+    if (current > before && current >= after && real(2 * current) > threshold && (current_conv > 0) == positive &&
+        magnitude > least && magnitude < most) {
+      if (current > best) {
+        best = current;
+        best_i = i;
+        best_j = j;
+        best_conv = current_conv;
+      }
+    }
+    before = current;
+    current_conv = after_conv;
+    i = next_i;
+    j = next_j;
+  }
+  if (best == 0) return false;
+  site.i = best_i;
+  site.j = best_j;
+  site.convlt = real(best_conv);
+  site.setState(vpMeSite::NO_SUPPRESSION);
+  return true;
+}
+
+/// The site's search: the contrast test with a reference (track_by_contrast), else, or when no
+/// edge passes it (the edge's look changed: a new background behind a silhouette, a shadow), the
+/// strongest edge within the range, as the paper's tracker takes.
+void track_site(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                const real& alpha, int sign, const real& reference) {
+  site.init(point.pixel.y, point.pixel.x, alpha, real(0), sign);
+  if (reference != real(0) && track_by_contrast(site, grey, me, point, reference)) return;
+  site.track(grey, &me, false);
+}
+
 }  // namespace
 
+void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         std::vector<real>& out) {
+  using std::atan2;
+  out.assign(points.size(), real(0));
+  for (size_t p = 0; p < points.size(); ++p) {
+    const ControlPoint& point = points[p];
+    const real alpha = atan2(point.normal.y, point.normal.x);
+    vpMeSite site;
+    site.init(point.pixel.y, point.pixel.x, alpha, real(0), normal_sign(alpha));
+    out[p] = site.convolution(grey, &me);
+  }
+}
+
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses) {
+                                           const vpMe& me, int hypotheses, const std::vector<real>* references) {
   using std::atan2;
   std::vector<EdgeMatch> matches;
   matches.reserve(points.size());
-  for (const ControlPoint& point : points) {
+  for (size_t p = 0; p < points.size(); ++p) {
+    const ControlPoint& point = points[p];
     vpMeSite site;
-    site.init(point.pixel.y, point.pixel.x, atan2(point.normal.y, point.normal.x));
-    site.track(grey, &me, false);
+    const real alpha = atan2(point.normal.y, point.normal.x);
+    const int sign = normal_sign(alpha);
+    track_site(site, grey, me, point, alpha, sign, references ? (*references)[p] : real(0));
     if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
     const int strongest_i = site.get_i(), strongest_j = site.get_j();
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
+    match.contrast = site.convlt;
     match.found = refined_edge_point(site, grey, me, point);
     if (hypotheses > 1) {
       site.i = strongest_i;

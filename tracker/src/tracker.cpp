@@ -98,6 +98,7 @@ bool Tracker::reset(const Se3& camera_from_model) {
   camera_from_model_ = camera_from_model;
   face_visibility_.reset();
   motion_.reset(camera_from_model);
+  contrast_memory_.clear();
   return true;
 }
 
@@ -114,6 +115,7 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   std::vector<ControlPoint> sampled = sample_control_points(model_, camera_, camera_from_model_, sampling_);
   face_visibility_.keep_tracked(sampled);
   visible_ = keep_visible(sampled, edge_ids_);
+  contrast_memory_.references(visible_, camera_, camera_from_model_, sampling_.step, references_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -121,7 +123,9 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses);
+  // After the start, the contrasts where the given pose puts the edges.
+  if (contrast_memory_.empty()) contrasts_at_points(grey, visible_, me_, references_);
+  matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses, &references_);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
@@ -160,6 +164,7 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
   } else {
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.getRange());
+    contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
   }
   camera_from_model_ = motion_.prediction();
 }

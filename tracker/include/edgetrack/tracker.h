@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgetrack/contrast_memory.h"
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
@@ -35,8 +36,8 @@ struct TrackerParams {
   /// The moving edges with upstream's meanings, and the one home of every <ecm> setting: range,
   /// threshold, mask size and number, mu1/mu2 and the sample step that spaces the control
   /// points. The range is the configured one: each frame searches it or wider
-  /// (MotionModel::search_range). mu1/mu2 are not used: sites are re-sampled every frame, so no
-  /// previous contrast exists to test them on.
+  /// (MotionModel::search_range). mu1/mu2 bound the contrast a site accepts against the one
+  /// its model point showed in the last trusted frame (contrast_memory.h).
   vpMe me;
   FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
   int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
@@ -152,6 +153,8 @@ class Tracker {
   vpImage<unsigned char> grey_;
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
+  ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
+  std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
 };
 
 }  // namespace edgetrack
