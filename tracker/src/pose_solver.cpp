@@ -243,11 +243,14 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   if (matches.size() < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
-  std::vector<real> distances(matches.size()), weights;
-  if (robust) {
-    for (size_t i = 0; i < matches.size(); ++i) distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
+  std::vector<real> distances(matches.size()), weights;  // no weights: the first solve is unweighted
+  if (robust && params.weigh_at_start) {
+    // The control points were sampled at `start`: their pixels are its projections.
+    for (size_t i = 0; i < matches.size(); ++i)
+      distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
     weights.resize(matches.size());
     tukey_weights(matches, distances, params, weights);
+    for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
   Se3 pose;
   if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, solution, pose, &distances))
@@ -259,6 +262,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     return solution;
   }
 
+  weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
     solution.outliers = tukey_weights(matches, distances, params, weights);

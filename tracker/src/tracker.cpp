@@ -99,6 +99,7 @@ bool Tracker::reset(const Se3& camera_from_model) {
   face_visibility_.reset();
   motion_.reset(camera_from_model);
   contrast_memory_.clear();
+  started_ = false;
   return true;
 }
 
@@ -115,7 +116,9 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   std::vector<ControlPoint> sampled = sample_control_points(model_, camera_, camera_from_model_, sampling_);
   face_visibility_.keep_tracked(sampled);
   visible_ = keep_visible(sampled, edge_ids_);
-  contrast_memory_.references(visible_, camera_, camera_from_model_, sampling_.step, references_);
+  // After a loss the pose is a guess: the contrasts it would assign are not the edges' there.
+  if (motion_.lost_last_frame()) references_.assign(visible_.size(), real(0));
+  else contrast_memory_.references(visible_, camera_, camera_from_model_, sampling_.step, references_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -123,13 +126,15 @@ FrameResult Tracker::track(const uint16_t* rgb565) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  // After the start, the contrasts where the given pose puts the edges.
-  if (contrast_memory_.empty()) contrasts_at_points(grey, visible_, me_, references_);
+  // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
+  if (!started_) contrasts_at_points(grey, visible_, me_, references_);
   matches_ = search_moving_edges(grey, visible_, me_, params_.hypotheses, &references_);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
-  result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose);
+  PoseParams pose_params = params_.pose;
+  pose_params.weigh_at_start = !motion_.lost_last_frame();
+  result.pose = solve_pose(matches_, camera_, camera_from_model_, pose_params);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
@@ -165,6 +170,7 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.getRange());
     contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
+    started_ = true;
   }
   camera_from_model_ = motion_.prediction();
 }

@@ -17,7 +17,6 @@ class ContrastMemory {
  public:
   /// Forgets every contrast (a new start): the next frame's sites take the strongest edge.
   void clear() { remembered_.clear(); }
-  bool empty() const { return remembered_.empty(); }
   /// Keeps the contrast of each match the pose step kept (outliers are forgotten there).
   void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model, const real& within);
   /// For each point, the contrast remembered at the nearest remembered point of the same

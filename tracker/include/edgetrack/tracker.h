@@ -155,6 +155,7 @@ class Tracker {
   std::vector<EdgeMatch> matches_;
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
+  bool started_ = false;            ///< a frame has been trusted since the start or the last reset
 };
 
 }  // namespace edgetrack
