@@ -105,42 +105,53 @@ struct PathPeak {
   int j = 0;
 };
 
-/// The strongest local maxima (at most `capacity`, strongest first, ties in path order) of the
-/// likelihood |2 conv| above the threshold on the site's search path: the 2 range + 1
-/// candidates pixel + k normal, |k| <= range, truncated to whole pixels, as vpMeSite::track
-/// visits them but with the unit normal in place of (cos alpha, sin alpha), which saves a sine
-/// and a cosine per point and differs by rounding only. A path end counts as a maximum when
-/// its one neighbour is lower, as the site's search keeps an end. Returns the count.
-int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-               PathPeak* peaks, int capacity) {
+/// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
+/// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
+/// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
+/// normal in place of (cos alpha, sin alpha), which saves a sine and a cosine per point and
+/// differs by rounding only. conv is the signed mask response; a path end counts as a maximum
+/// when its one neighbour is lower, as the site's search keeps an end.
+template <class Visit>
+void for_each_path_peak(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                        Visit visit) {
   const int range = static_cast<int>(me.getRange());
   const real threshold = me.getThreshold();
-  auto likelihood_at = [&](int k, int& i, int& j) {
+  auto conv_at = [&](int k, int& i, int& j) {
     i = static_cast<int>(point.pixel.y + k * point.normal.y);
     j = static_cast<int>(point.pixel.x + k * point.normal.x);
     site.i = i;
     site.j = j;
-    const int conv = static_cast<int>(site.convolution(grey, &me));
-    return conv < 0 ? -2 * conv : 2 * conv;
+    return static_cast<int>(site.convolution(grey, &me));
   };
-  int count = 0;
   int i = 0, j = 0, next_i = 0, next_j = 0;
-  int before = -1, current = likelihood_at(-range, i, j);
+  int current_conv = conv_at(-range, i, j);
+  int before = -1, current = current_conv < 0 ? -2 * current_conv : 2 * current_conv;
   for (int k = -range; k <= range; ++k) {
-    const int after = k < range ? likelihood_at(k + 1, next_i, next_j) : -1;
-    if (current > before && current >= after && real(current) > threshold) {
-      int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
-      while (at > 0 && peaks[at - 1].likelihood < current) {
-        if (at < capacity) peaks[at] = peaks[at - 1];
-        --at;
-      }
-      if (at < capacity) peaks[at] = {current, i, j};
-    }
+    const int after_conv = k < range ? conv_at(k + 1, next_i, next_j) : 0;
+    const int after = k < range ? (after_conv < 0 ? -2 * after_conv : 2 * after_conv) : -1;
+    if (current > before && current >= after && real(current) > threshold) visit(current_conv, i, j);
     before = current;
     current = after;
+    current_conv = after_conv;
     i = next_i;
     j = next_j;
   }
+}
+
+/// The strongest local maxima of for_each_path_peak (at most `capacity`, strongest first, ties
+/// in path order). Returns the count.
+int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+               PathPeak* peaks, int capacity) {
+  int count = 0;
+  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+    const int likelihood = conv < 0 ? -2 * conv : 2 * conv;
+    int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
+    while (at > 0 && peaks[at - 1].likelihood < likelihood) {
+      if (at < capacity) peaks[at] = peaks[at - 1];
+      --at;
+    }
+    if (at < capacity) peaks[at] = {likelihood, i, j};
+  });
   return count;
 }
 
@@ -189,7 +200,7 @@ int normal_sign(const real& alpha) {
 
 /// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
 /// (EdgeMatch::contrast) the same model point showed in the last trusted frame: of the local
-/// maxima of |conv| above the threshold on the site's path (visited as path_peaks does), those
+/// maxima of for_each_path_peak, those
 /// whose conv has the reference's sign and lies within (1 - mu1, 1 + mu2) times it, and of
 /// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
 /// where a face turns into view beside a silhouette, its far edge has the silhouette's old
@@ -198,39 +209,17 @@ int normal_sign(const real& alpha) {
 bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
                        const real& reference) {
   using std::fabs;
-  const int range = static_cast<int>(me.getRange());
-  const real threshold = me.getThreshold();
   const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
   const bool positive = reference > real(0);
-  auto conv_at = [&](int k, int& i, int& j) {
-    i = static_cast<int>(point.pixel.y + k * point.normal.y);
-    j = static_cast<int>(point.pixel.x + k * point.normal.x);
-    site.i = i;
-    site.j = j;
-    return static_cast<int>(site.convolution(grey, &me));
-  };
   int best = 0, best_i = 0, best_j = 0, best_conv = 0;
-  int i = 0, j = 0, next_i = 0, next_j = 0;
-  int before = -1, current_conv = conv_at(-range, i, j);
-  for (int k = -range; k <= range; ++k) {
-    const int after_conv = k < range ? conv_at(k + 1, next_i, next_j) : 0;
-    const int current = current_conv < 0 ? -current_conv : current_conv;
-    const int after = k < range ? (after_conv < 0 ? -after_conv : after_conv) : -1;
-    const real magnitude(current);
-    if (current > before && current >= after && real(2 * current) > threshold && (current_conv > 0) == positive &&
-        magnitude > least && magnitude < most) {
-      if (current > best) {
-        best = current;
-        best_i = i;
-        best_j = j;
-        best_conv = current_conv;
-      }
-    }
-    before = current;
-    current_conv = after_conv;
-    i = next_i;
-    j = next_j;
-  }
+  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+    const int magnitude = conv < 0 ? -conv : conv;
+    if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most) || magnitude <= best) return;
+    best = magnitude;
+    best_i = i;
+    best_j = j;
+    best_conv = conv;
+  });
   if (best == 0) return false;
   site.i = best_i;
   site.j = best_j;
