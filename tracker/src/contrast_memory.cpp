@@ -15,7 +15,8 @@ real taxicab(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model, const real& within) {
+void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
+                              const Se3& camera_from_model, const real& within) {
   using std::fabs;
   remembered_.clear();
   // Mean |contrast| per primitive over the kept matches (matches come grouped by primitive).
@@ -48,8 +49,8 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
     const ControlPoint& point = points[p];
     const real depth = (camera_from_model * point.point_in_model).z;
     if (depth <= real(0)) continue;
-    // reach pixels at this depth, metres; the taxicab distance is at most sqrt(3) times the
-    // straight one, so a point at `reach` straight never fails by it.
+    // `reach` pixels at this depth, in metres, doubled: the bound is on the taxicab distance,
+    // 1 to sqrt(3) times the straight one, so every point within reach passes it.
     real nearest = real(2) * reach * depth / camera.px;
     for (const Remembered& r : remembered_) {
       if (r.edge != point.edge) continue;

@@ -17,8 +17,13 @@ class ContrastMemory {
  public:
   /// Forgets every contrast (a new start): the next frame's sites take the strongest edge.
   void clear() { remembered_.clear(); }
-  /// Keeps the contrast of each match the pose step kept (outliers are forgotten there).
-  void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model, const real& within);
+  /// Replaces the memory with the contrast of each match that the pose step kept, that lies
+  /// within `within` pixels (along its normal) of its projection at camera_from_model, the
+  /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
+  /// matches (a point under an occluder matched to noise by chance is not its edge). `matches`
+  /// come grouped by primitive, as the sampling orders them.
+  void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model,
+                const real& within);
   /// For each point, the contrast remembered at the nearest remembered point of the same
   /// primitive, when that lies within `reach` pixels of it at camera_from_model (about one
   /// sample step: where the edge was sampled last time); 0 where nothing is remembered.
