@@ -45,19 +45,29 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
 void ContrastMemory::references(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
                                 const Se3& camera_from_model, const real& reach, std::vector<real>& out) const {
   out.assign(points.size(), real(0));
+  // The remembered points come grouped by primitive: [first, end) are those of the current
+  // point's, found again only when the primitive changes.
+  size_t first = 0, end = 0;
+  int edge = -1;
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
+    if (point.edge != edge) {
+      edge = point.edge;
+      for (first = 0; first < remembered_.size() && remembered_[first].edge != edge; ++first) {
+      }
+      for (end = first; end < remembered_.size() && remembered_[end].edge == edge; ++end) {
+      }
+    }
     const real depth = (camera_from_model * point.point_in_model).z;
     if (depth <= real(0)) continue;
     // `reach` pixels at this depth, in metres, doubled: the bound is on the taxicab distance,
     // 1 to sqrt(3) times the straight one, so every point within reach passes it.
     real nearest = real(2) * reach * depth / camera.px;
-    for (const Remembered& r : remembered_) {
-      if (r.edge != point.edge) continue;
-      const real d = taxicab(r.point_in_model, point.point_in_model);
+    for (size_t k = first; k < end; ++k) {
+      const real d = taxicab(remembered_[k].point_in_model, point.point_in_model);
       if (d < nearest) {
         nearest = d;
-        out[p] = r.contrast;
+        out[p] = remembered_[k].contrast;
       }
     }
   }
