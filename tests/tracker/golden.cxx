@@ -16,6 +16,17 @@ std::string golden_name(Scene scene, int subsample, int hypotheses) {
   return base + speed + "_double_positions.txt";
 }
 
+SequenceSpec covered_spec() {
+  SequenceSpec spec;
+  spec.cover = kCoveredShare;
+  return spec;
+}
+
+std::string covered_golden_name(Scene scene) {
+  return std::string(scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder") +
+         "_cover30_double_positions.txt";
+}
+
 bool write_golden(const std::string& path, const SequenceRun& run) {
   std::FILE* file = std::fopen(path.c_str(), "w");
   if (!file) return false;

@@ -18,6 +18,13 @@ constexpr int kFastSpeedUp = 5;
 /// The edge hypotheses of the golden runs besides the default single one.
 constexpr int kMultipleHypotheses = 3;
 
+/// The covered sequences (test_field_conditions.cxx): kGoldenFrames frames, a board covering
+/// this share of the object's image.
+constexpr double kCoveredShare = 0.3;
+/// The spec of the covered sequence, and its golden file's name.
+SequenceSpec covered_spec();
+std::string covered_golden_name(Scene scene);
+
 /// The scene's golden file; `subsample` > 1 names the sped-up sequence's, `hypotheses` other
 /// than the default (TrackerParams) that run's.
 std::string golden_name(Scene scene, int subsample = 1, int hypotheses = edgetrack::TrackerParams{}.hypotheses);

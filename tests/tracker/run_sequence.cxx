@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "edgetrack/model_io.h"
+#include "edgetrack/scene_extras.h"
 #include "edgetrack/scene_renderer.h"
 
 using namespace edgetrack;
@@ -61,12 +62,21 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
   run.loaded = true;
   SceneRenderer renderer(camera, SceneStyle{});
   Rgb565Frame frame;
+  const std::vector<Segment3> clutter = parallel_clutter(model.value(), real(spec.clutter));
+  SceneAdditions additions;
+  if (spec.clutter > 0) additions.clutter = &clutter;
+  std::vector<uint8_t> mask;
+  std::vector<int> columns;
   const real margin = real(0.02);
   double error_sum = 0, points_sum = 0;
   for (int k = 0; k < frames; ++k) {
     const FrameContent content = k < static_cast<int>(spec.content.size()) ? spec.content[k] : FrameContent::kScene;
+    if (spec.cover > 0) {
+      silhouette_columns(model.value(), camera, run.truth[k], mask, columns);
+      additions.band = occluder_band(columns, sweeping_centre(columns, k, frames), real(spec.cover));
+    }
     renderer.render(content == FrameContent::kNoObject ? nothing : model.value(), run.truth[k],
-                    static_cast<uint32_t>(1000 + k), frame);
+                    static_cast<uint32_t>(1000 + k), additions, frame);
     if (content == FrameContent::kNoise || content == FrameContent::kFlat) fill(content, static_cast<uint32_t>(k), frame);
     const Se3 sampling_pose = tracker.value().camera_from_model();
     const FrameResult result = tracker.value().track(rgb565_view(frame)).value();

@@ -25,6 +25,11 @@ struct SequenceSpec {
   int subsample = 1;
   std::vector<FrameContent> content;
   std::vector<edgetrack::Se3> poses;
+  /// As `edgetrack synth --cover` and `--clutter` (scene_extras.h): a dark board in front
+  /// covering this share of the object's image, sweeping across it (0: none), and dark lines
+  /// this many metres beside every model edge (0: none).
+  double cover = 0;
+  double clutter = 0;
 };
 
 struct SequenceRun {

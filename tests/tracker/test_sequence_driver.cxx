@@ -18,6 +18,9 @@ DECLARE(test_hypotheses);
 DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
+DECLARE(test_back_and_forth);
+DECLARE(test_field_conditions);
+DECLARE(test_edge_contrast);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -36,6 +39,9 @@ void register_tests() {
   REGISTER(test_frame_layouts);
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);
+  REGISTER(test_back_and_forth);
+  REGISTER(test_field_conditions);
+  REGISTER(test_edge_contrast);
 }
 
 DEFINE_MAIN

@@ -66,6 +66,21 @@ static void test_status_rule() {
   TEST("under half the visible points kept: uncertain",
        is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kFewMatched), true);
   m = tracked_frame();
+  m.visible = 12;
+  m.matched = 11;
+  m.kept = 11;
+  m.matched_share = real(11.0 / 12.0);
+  m.inlier_share = real(1);
+  TEST("11 matches fitting well: too few to tell a fit from chance, uncertain",
+       is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kFewToCheck), true);
+  m.after_loss = true;
+  TEST("and after a loss, lost", judge_frame(m, params, min_points).status, TrackingStatus::kLost);
+  m = tracked_frame();
+  m.kept = 12;
+  m.visible = m.matched = 12;
+  m.matched_share = m.inlier_share = real(1);
+  TEST("12 are enough", judge_frame(m, params, min_points).status, TrackingStatus::kTracked);
+  m = tracked_frame();
   m.inlier_share = real(0.45);
   TEST("half the matches outliers: uncertain",
        is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kManyOutliers), true);
@@ -85,7 +100,8 @@ static void test_status_rule() {
        is(judge_frame(m, params, min_points), TrackingStatus::kLost, StatusReason::kNotReacquired), true);
   m.residual_scale = real(0.4);
   TEST("after a loss, a tracked frame is tracked", judge_frame(m, params, min_points).status, TrackingStatus::kTracked);
-  TEST("every reason has a name", std::string(reason_name(StatusReason::kNotReacquired)) != "?", true);
+  for (int r = 0; r < kStatusReasonCount; ++r)
+    TEST("every reason has a name", std::string(reason_name(static_cast<StatusReason>(r))) != "?", true);
 }
 
 TESTMAIN(test_status_rule)

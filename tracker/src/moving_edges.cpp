@@ -105,42 +105,53 @@ struct PathPeak {
   int j = 0;
 };
 
-/// The strongest local maxima (at most `capacity`, strongest first, ties in path order) of the
-/// likelihood |2 conv| above the threshold on the site's search path: the 2 range + 1
-/// candidates pixel + k normal, |k| <= range, truncated to whole pixels, as vpMeSite::track
-/// visits them but with the unit normal in place of (cos alpha, sin alpha), which saves a sine
-/// and a cosine per point and differs by rounding only. A path end counts as a maximum when
-/// its one neighbour is lower, as the site's search keeps an end. Returns the count.
-int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-               PathPeak* peaks, int capacity) {
+/// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
+/// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
+/// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
+/// normal in place of (cos alpha, sin alpha), which saves a sine and a cosine per point and
+/// differs by rounding only. conv is the signed mask response; a path end counts as a maximum
+/// when its one neighbour is lower, as the site's search keeps an end.
+template <class Visit>
+void for_each_path_peak(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                        Visit visit) {
   const int range = static_cast<int>(me.getRange());
   const real threshold = me.getThreshold();
-  auto likelihood_at = [&](int k, int& i, int& j) {
+  auto conv_at = [&](int k, int& i, int& j) {
     i = static_cast<int>(point.pixel.y + k * point.normal.y);
     j = static_cast<int>(point.pixel.x + k * point.normal.x);
     site.i = i;
     site.j = j;
-    const int conv = static_cast<int>(site.convolution(grey, &me));
-    return conv < 0 ? -2 * conv : 2 * conv;
+    return static_cast<int>(site.convolution(grey, &me));
   };
-  int count = 0;
   int i = 0, j = 0, next_i = 0, next_j = 0;
-  int before = -1, current = likelihood_at(-range, i, j);
+  int current_conv = conv_at(-range, i, j);
+  int before = -1, current = current_conv < 0 ? -2 * current_conv : 2 * current_conv;
   for (int k = -range; k <= range; ++k) {
-    const int after = k < range ? likelihood_at(k + 1, next_i, next_j) : -1;
-    if (current > before && current >= after && real(current) > threshold) {
-      int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
-      while (at > 0 && peaks[at - 1].likelihood < current) {
-        if (at < capacity) peaks[at] = peaks[at - 1];
-        --at;
-      }
-      if (at < capacity) peaks[at] = {current, i, j};
-    }
+    const int after_conv = k < range ? conv_at(k + 1, next_i, next_j) : 0;
+    const int after = k < range ? (after_conv < 0 ? -2 * after_conv : 2 * after_conv) : -1;
+    if (current > before && current >= after && real(current) > threshold) visit(current_conv, i, j);
     before = current;
     current = after;
+    current_conv = after_conv;
     i = next_i;
     j = next_j;
   }
+}
+
+/// The strongest local maxima of for_each_path_peak (at most `capacity`, strongest first, ties
+/// in path order). Returns the count.
+int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+               PathPeak* peaks, int capacity) {
+  int count = 0;
+  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+    const int likelihood = conv < 0 ? -2 * conv : 2 * conv;
+    int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
+    while (at > 0 && peaks[at - 1].likelihood < likelihood) {
+      if (at < capacity) peaks[at] = peaks[at - 1];
+      --at;
+    }
+    if (at < capacity) peaks[at] = {likelihood, i, j};
+  });
   return count;
 }
 
@@ -168,29 +179,104 @@ void add_alternatives(vpMeSite& site, const vpImage<unsigned char>& grey, const 
   }
 }
 
+/// +1 or -1: the sign that orients vpMe's mask for the normal angle `alpha` along the normal.
+/// vpMe::maskIndex folds the tangent angle alpha + pi/2 into [0, pi) (180 degrees is mask 0),
+/// and each fold by pi turns the mask, and so the response's sign, over.
+int normal_sign(const real& alpha) {
+  using std::round;
+  real theta = alpha + real(M_PI_2);
+  int sign = 1;
+  if (theta < real(0)) {
+    theta += real(M_PI);
+    sign = -sign;
+  }
+  if (theta > real(M_PI)) {
+    theta -= real(M_PI);
+    sign = -sign;
+  }
+  if (static_cast<int>(round(theta * real(180 / M_PI))) == 180) sign = -sign;
+  return sign;
+}
+
+/// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
+/// (EdgeMatch::contrast) the same model point showed in the last trusted frame: of the local
+/// maxima of for_each_path_peak, those
+/// whose conv has the reference's sign and lies within (1 - mu1, 1 + mu2) times it, and of
+/// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
+/// where a face turns into view beside a silhouette, its far edge has the silhouette's old
+/// contrast, and on the generated frames that rule followed it off the cube.) False when none
+/// passes (the site's pixel is then left anywhere on the path).
+bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                       const real& reference) {
+  using std::fabs;
+  const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
+  const bool positive = reference > real(0);
+  int best = 0, best_i = 0, best_j = 0, best_conv = 0;
+  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+    const int magnitude = conv < 0 ? -conv : conv;
+    if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most) || magnitude <= best) return;
+    best = magnitude;
+    best_i = i;
+    best_j = j;
+    best_conv = conv;
+  });
+  if (best == 0) return false;
+  site.i = best_i;
+  site.j = best_j;
+  site.convlt = real(best_conv);
+  site.setState(vpMeSite::NO_SUPPRESSION);
+  return true;
+}
+
+/// The site's search: the contrast test with a reference (track_by_contrast), else, or when no
+/// edge passes it (the edge's look changed: a new background behind a silhouette, a shadow), the
+/// strongest edge within the range, as the paper's tracker takes.
+void track_site(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
+                const real& alpha, int sign, const real& reference) {
+  site.init(point.pixel.y, point.pixel.x, alpha, real(0), sign);
+  if (reference != real(0) && track_by_contrast(site, grey, me, point, reference)) return;
+  site.track(grey, &me, false);
+}
+
 }  // namespace
 
+void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         std::vector<real>& out) {
+  using std::atan2;
+  out.assign(points.size(), real(0));
+  for (size_t p = 0; p < points.size(); ++p) {
+    const ControlPoint& point = points[p];
+    const real alpha = atan2(point.normal.y, point.normal.x);
+    vpMeSite site;
+    site.init(point.pixel.y, point.pixel.x, alpha, real(0), normal_sign(alpha));
+    out[p] = site.convolution(grey, &me);
+  }
+}
+
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses) {
+                                           const vpMe& me, int hypotheses, const std::vector<real>* references) {
   std::vector<EdgeMatch> matches;
-  search_moving_edges(grey, points, me, hypotheses, matches);
+  search_moving_edges(grey, points, me, hypotheses, matches, references);
   return matches;
 }
 
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches) {
+                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references) {
   using std::atan2;
   matches.clear();
   matches.reserve(points.size());
-  for (const ControlPoint& point : points) {
+  for (size_t p = 0; p < points.size(); ++p) {
+    const ControlPoint& point = points[p];
     vpMeSite site;
-    site.init(point.pixel.y, point.pixel.x, atan2(point.normal.y, point.normal.x));
-    site.track(grey, &me, false);
+    const real alpha = atan2(point.normal.y, point.normal.x);
+    const int sign = normal_sign(alpha);
+    track_site(site, grey, me, point, alpha, sign, references ? (*references)[p] : real(0));
     if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
     const int strongest_i = site.get_i(), strongest_j = site.get_j();
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
+    match.contrast = site.convlt;
     match.found = refined_edge_point(site, grey, me, point);
     if (hypotheses > 1) {
       site.i = strongest_i;

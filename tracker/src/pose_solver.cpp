@@ -280,6 +280,23 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
     if (matches[i].chosen != 0) distances[i] = distances[i] + dot(matches[i].point.normal, matches[i].used() - matches[i].found);
 }
 
+/// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
+/// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
+int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
+                  std::vector<real>& scratch, std::vector<real>& weights) {
+  using std::fabs;
+  real c = params.tukey_c * real(1.4826) * median_of(distances, scratch);
+  if (c < params.tukey_floor) c = params.tukey_floor;
+  int outliers = 0;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    const real u = fabs(distances[i]) / c;
+    matches[i].outlier = u >= real(1);
+    weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
+    outliers += matches[i].outlier;
+  }
+  return outliers;
+}
+
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
@@ -300,7 +317,15 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   std::vector<real>& distances = workspace.distances;
   std::vector<real>& weights = workspace.weights;
   distances.resize(matches.size());
-  weights.clear();
+  weights.clear();  // no weights: the first solve is unweighted
+  if (robust && params.weigh_at_start) {
+    // The control points were sampled at `start`: their pixels are its projections.
+    for (size_t i = 0; i < matches.size(); ++i)
+      distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
+    weights.resize(matches.size());
+    tukey_weights(matches, distances, params, workspace.magnitudes, weights);
+    for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
+  }
   Se3 pose;
   if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, workspace, solution, pose,
                   &distances))
@@ -315,15 +340,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
-    real c = params.tukey_c * real(1.4826) * median_of(distances, workspace.magnitudes);
-    if (c < params.tukey_floor) c = params.tukey_floor;
-    solution.outliers = 0;
-    for (size_t i = 0; i < matches.size(); ++i) {  // square roots of Tukey's weights: 1 - (d / c)^2
-      const real u = fabs(distances[i]) / c;
-      matches[i].outlier = u >= real(1);
-      weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
-      solution.outliers += matches[i].outlier;
-    }
+    solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, workspace, solution, pose,
                     &distances))

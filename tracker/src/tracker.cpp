@@ -94,11 +94,14 @@ const vpImage<unsigned char>& Tracker::grey_scale(const FrameView& frame, unsign
   return grey_;
 }
 
-bool Tracker::reset(const Se3& camera_from_model) {
+bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
   if (camera_from_model.translation().z <= real(0)) return false;
+  start_is_guess_ = start == StartPose::kGuess;
   camera_from_model_ = camera_from_model;
   face_visibility_.reset();
   motion_.reset(camera_from_model);
+  contrast_memory_.clear();
+  started_ = false;
   return true;
 }
 
@@ -116,6 +119,11 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   sample_control_points(model_, camera_, camera_from_model_, sampling_, sampled_);
   face_visibility_.keep_tracked(sampled_);
   keep_visible(sampled_, edge_ids_, visible_);
+  // After a loss, or from a guessed start, the pose is a guess: the contrasts it would assign are
+  // not the edges' there, nor do the distances to it tell the good matches from the bad.
+  const bool guessing = motion_.lost_last_frame() || (!started_ && start_is_guess_);
+  if (guessing) references_.assign(visible_.size(), real(0));
+  else contrast_memory_.references(visible_, camera_, camera_from_model_, sampling_.step, references_);
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -123,12 +131,16 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
-  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_);
+  // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
+  if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
+  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
-  result.pose = solve_pose(matches_, camera_, camera_from_model_, params_.pose, pose_workspace_);
+  PoseParams pose_params = params_.pose;
+  pose_params.weigh_at_start = !guessing;
+  result.pose = solve_pose(matches_, camera_, camera_from_model_, pose_params, pose_workspace_);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
@@ -163,6 +175,8 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
   } else {
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.getRange());
+    contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
+    started_ = true;
   }
   camera_from_model_ = motion_.prediction();
 }

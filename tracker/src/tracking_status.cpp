@@ -21,6 +21,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kChanceResiduals: return "residuals at chance level";
     case StatusReason::kFewMatched: return "under half the visible points matched";
     case StatusReason::kManyOutliers: return "half or more of the matches outliers";
+    case StatusReason::kFewToCheck: return "too few matches to check the fit";
     case StatusReason::kLooseFit: return "residual scale above a tracked frame's";
     case StatusReason::kNotReacquired: return "not found again after a loss";
     case StatusReason::kLargeCorrection: return "pose moved farther than the search range";
@@ -40,6 +41,7 @@ FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int 
   real lost_scale = params.lost_range_share * real(static_cast<int>(m.range));
   if (lost_scale < params.lost_scale_floor_px) lost_scale = params.lost_scale_floor_px;
   if (m.residual_scale > lost_scale) return lost(StatusReason::kChanceResiduals);
+  if (m.kept < 2 * min_points) return uncertain(StatusReason::kFewToCheck);
   if (m.matched_share < params.min_matched_share) return uncertain(StatusReason::kFewMatched);
   if (m.inlier_share < params.min_inlier_share) return uncertain(StatusReason::kManyOutliers);
   if (m.residual_scale > params.tracked_scale_px) return uncertain(StatusReason::kLooseFit);

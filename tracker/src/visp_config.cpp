@@ -135,7 +135,6 @@ class Reading {
           if (e.name == "edge_threshold") me.setThreshold(got.value());
           else if (e.name == "mu1") me.setMu1(got.value());
           else me.setMu2(got.value());
-          if (e.name != "edge_threshold") note(where);
         } else {
           continue;
         }

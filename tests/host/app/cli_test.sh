@@ -164,7 +164,7 @@ case $name in
     # cube.xml alone applies all its blocks (ViSP's loadConfigFile): its step 4 samples about 2.5
     # times the points of a camera-only file (ViSP's default step 10), and the run stays with
     # that one. --config over it changes nothing when it is the same file, and puts cube.xml's
-    # settings over a camera-only --camera; mu1/mu2 are named once on stderr.
+    # settings over a camera-only --camera; nothing is named as not applied.
     sed -n '1,2p;/<camera>/,/<\/camera>/p;$p' "$mbt/cube.xml" >"$work/camera_only.xml"
     track_cube --init-pose "$mbt/cube.0.pos" --poses "$work/cube.csv" 2>"$work/cube.err" || fail "track failed"
     "$edgetrack" track --model "$mbt/cube.cao" --camera "$work/camera_only.xml" --images "$mbt/cube/image%04d.pgm" \
@@ -185,8 +185,7 @@ case $name in
         fail "--config cube.xml ($run) does not give cube.xml's poses"
     done
     cat "$work/twice.err"
-    [ "$(grep -c '<mu1>' "$work/twice.err")" -eq 1 ] && [ "$(grep -c '<mu2>' "$work/twice.err")" -eq 1 ] &&
-      [ "$(wc -l <"$work/twice.err")" -eq 2 ] || fail "mu1/mu2 are not named exactly once each"
+    [ ! -s "$work/twice.err" ] || fail "cube.xml read twice gives notes: $(cat "$work/twice.err")"
     sed 's:<edge_threshold>5000<:<edge_threshold>100000000<:' "$mbt/cube.xml" >"$work/blind.xml"
     track_cube --init-pose "$mbt/cube.0.pos" --config "$work/blind.xml" --poses "$work/blind.csv" ||
       fail "track --config blind.xml failed"

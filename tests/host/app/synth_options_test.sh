@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The evaluation options of `edgetrack synth`, one case per call: synth_options_test.sh EDGETRACK
 # TMPDIR CASE. What synth measures and prints (motion, covered share, clutter offset) must be
-# what was asked for; bad values are refused with one line.
+# what was asked for; bad values are refused with one line; a fast sequence is tracked.
 set -u
 edgetrack=$1
 work=$2/$3
@@ -40,6 +40,18 @@ case $name in
     cmp -s "$work/plain/frames/frame0000.ppm" "$work/seq/frames/frame0000.ppm" && fail "the clutter is not drawn"
     cmp -s "$work/plain/truth.csv" "$work/seq/truth.csv" || fail "the clutter changed the truth"
     echo "ok: clutter drawn, truth unchanged" ;;
+  track_fast_cube)
+    # 12 px per QVGA frame over synth's cluttered backdrop: a good prediction, wide ranges that
+    # reach background lines beside weak silhouette edges, and no frame lost for it.
+    synth --out "$work/seq" --frames 20 --speed 4.2 >/dev/null || fail "synth --speed failed"
+    "$edgetrack" track --model "$(dirname "$0")/../../../data/models/cube60.cao" --camera "$work/seq/camera.xml" \
+      --init-pose "$work/seq/first.pos" --images "$work/seq/frames/frame%04d.ppm" --poses "$work/poses.csv" --quiet \
+      >/dev/null || fail "track failed"
+    "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/seq/truth.csv" | tee "$work/eval.txt" || fail "eval failed"
+    lost=$(sed -n 's/.* lost=\([0-9]*\) .*/\1/p' "$work/eval.txt")
+    mm=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/eval.txt")
+    [ "$lost" = 0 ] || fail "$lost frames lost"
+    less "$mm" 0.5 || fail "mean camera position error $mm mm, expected under 0.5 mm" ;;
   error_synth_bad_cover)
     expect_error "--cover must be a share" "$edgetrack" synth --out "$work/seq" --cover 1.5 ;;
   error_synth_bad_speed)

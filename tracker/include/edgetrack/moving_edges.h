@@ -43,9 +43,15 @@ constexpr int kRefinementReachAcross = 1;
 /// among them (EdgeMatch::chosen); `found` is the strongest, so hypotheses = 1 is the
 /// single-hypothesis search.
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses = 1);
+                                           const vpMe& me, int hypotheses = 1,
+                                           const std::vector<real>* references = nullptr);
 /// The same into `matches` (emptied first, memory reused).
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches);
+                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr);
+
+/// The mask response at each point's own pixel, oriented along its normal (EdgeMatch::contrast):
+/// the contrast of the edge where a trusted pose projects it.
+void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         std::vector<real>& out);
 
 }  // namespace edgetrack

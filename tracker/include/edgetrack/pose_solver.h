@@ -48,6 +48,13 @@ struct PoseParams {
   /// 61 of 64 runs (docs/ARCHITECTURE.md). tukey_c = 0 or robust_rounds = 0 is the paper's
   /// tracker.
   int robust_rounds = 3;
+  /// With robust rounds, the first solve too is weighted by Tukey's biweight (as below) of the
+  /// distances at `start`, which the matches' control points were sampled at: where the start is
+  /// a good prediction, a whole edge matched to a line a few pixels beside it stands out there,
+  /// while unweighted the first solve followed it in depth and the prediction carried that on
+  /// (docs/ARCHITECTURE.md). Where the start's error is larger, the median and so c grow with
+  /// it. The tracker turns it off after a lost frame, whose start is a guess.
+  bool weigh_at_start = true;
   real tukey_c = real(4.685);
   real tukey_floor = real(1.5);
 };

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgetrack/contrast_memory.h"
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
@@ -37,8 +38,8 @@ struct TrackerParams {
   /// The moving edges with upstream's meanings, and the one home of every <ecm> setting: range,
   /// threshold, mask size and number, mu1/mu2 and the sample step that spaces the control
   /// points. The range is the configured one: each frame searches it or wider
-  /// (MotionModel::search_range). mu1/mu2 are not used: sites are re-sampled every frame, so no
-  /// previous contrast exists to test them on.
+  /// (MotionModel::search_range). mu1/mu2 bound the contrast a site accepts against the one
+  /// its model point showed in the last trusted frame (contrast_memory.h).
   vpMe me;
   FaceVisibilityParams faces;  ///< <face> and <lod>: face angles, clipping, level of detail
   int border = 10;             ///< control points nearer the image border than this (pixels) are dropped
@@ -118,7 +119,12 @@ class Tracker {
   /// the parameters and the Edge-ID source, and starts the faces' visibility afresh (all
   /// hidden, as a new tracker's). False, and nothing changes, when the pose puts the model
   /// behind the camera.
-  bool reset(const Se3& camera_from_model);
+  /// A given pose (a .pos file, a click, a refined detection) is where the edges are: the first
+  /// frame takes their contrast there and weighs the matches by their distance to it. A guess
+  /// (a detector's unrefined candidate) is trusted for neither, as the prediction after a lost
+  /// frame is not, until a frame is tracked from it.
+  enum class StartPose { kGiven, kGuess };
+  bool reset(const Se3& camera_from_model, StartPose start = StartPose::kGiven);
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
   const std::vector<ControlPoint>& control_points() const { return visible_; }
@@ -161,6 +167,10 @@ class Tracker {
   std::vector<ControlPoint> visible_;
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
+  ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
+  std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
+  bool started_ = false;            ///< a frame has been trusted since the start or the last reset
+  bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
 };
 
 }  // namespace edgetrack

@@ -19,6 +19,7 @@ enum class StatusReason {
   kChanceResiduals,   ///< lost: the residuals are spread as matches at chance over the range
   kFewMatched,        ///< uncertain: under half the visible control points matched and kept
   kManyOutliers,      ///< uncertain: the robust solve gave half or more of the matches no weight
+  kFewToCheck,        ///< uncertain: too few matches kept to tell a fit from chance
   kLooseFit,          ///< uncertain: the robust residual scale is above a tracked frame's
   kNotReacquired,     ///< lost: after a lost frame, only a frame that would be tracked counts as found again
   kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
@@ -70,7 +71,9 @@ struct FrameStatus {
 /// residuals look like chance; uncertain when the pose rests on a minority of the model, fits
 /// loosely, moved farther than the search reaches, or fixed point saturated; tracked otherwise.
 /// After a lost frame an uncertain one stays lost: the prediction it started from is weak, and
-/// a wider search on clutter finds fits that are loose but not at chance.
+/// a wider search on clutter finds fits that are loose but not at chance. Fewer kept matches
+/// than twice `min_points` (12 for six pose parameters) leave too few residual degrees of
+/// freedom for the fit to say anything: uncertain.
 /// `min_points` is the pose step's minimum (PoseParams::min_points).
 FrameStatus judge_frame(const FrameMeasures& measures, const StatusParams& params, int min_points);
 

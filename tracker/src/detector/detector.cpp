@@ -104,7 +104,7 @@ void Detector::match(const FrameView& frame) {
 bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
   int lost_in_a_row = 0;
   for (int k = 0; k < iterations; ++k) {
-    if (!tracker.reset(candidate.camera_from_model)) return false;
+    if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();

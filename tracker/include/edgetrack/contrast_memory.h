@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The contrast of the edges found in the last trusted frame, kept at their model points, so that
+/// the next frame's sites can refuse an edge of another polarity or contrast: ViSP's mu1/mu2
+/// test, whose sites live from frame to frame, for control points sampled afresh every frame.
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/control_points.h"
+#include "edgetrack/edge_match.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+class ContrastMemory {
+ public:
+  /// Forgets every contrast (a new start): the next frame's sites take the strongest edge.
+  void clear() { remembered_.clear(); }
+  /// Replaces the memory with the contrast of each match that the pose step kept, that lies
+  /// within `within` pixels (along its normal) of its projection at camera_from_model, the
+  /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
+  /// matches (a point under an occluder matched to noise by chance is not its edge). `matches`
+  /// come grouped by primitive, as the sampling orders them.
+  void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model,
+                const real& within);
+  /// For each point, the contrast remembered at the nearest remembered point of the same
+  /// primitive, when that lies within `reach` pixels of it at camera_from_model (about one
+  /// sample step: where the edge was sampled last time); 0 where nothing is remembered.
+  void references(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
+                  const real& reach, std::vector<real>& out) const;
+
+ private:
+  struct Remembered {
+    int edge = 0;
+    Vec3 point_in_model;
+    real contrast{0};
+  };
+  std::vector<Remembered> remembered_;
+};
+
+}  // namespace edgetrack
