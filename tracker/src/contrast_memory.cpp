@@ -19,6 +19,8 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
                               const Se3& camera_from_model, const real& within) {
   using std::fabs;
   remembered_.clear();
+  // Sized by the matches, so that it grows only on a frame with more matches than any before.
+  remembered_.reserve(matches.size());
   // Mean |contrast| per primitive over the kept matches (matches come grouped by primitive).
   size_t first = 0;
   while (first < matches.size()) {

@@ -52,6 +52,7 @@ class PointToLineProblem {
       w.turned[k].resize(count_);
       w.moved[k].resize(count_);
     }
+    w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     for (size_t i = 0; i < count_; ++i) {
       const EdgeMatch& m = matches[i];
       const Vec3 rotated = start.rotation() * (real(kMillimetresPerMetre) * m.point.point_in_model);
@@ -118,7 +119,6 @@ class PointToLineProblem {
     return true;
   }
   real* scratch() {
-    w_.scratch.resize(count_);
     return w_.scratch.data();
   }
 
