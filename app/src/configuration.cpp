@@ -11,11 +11,7 @@ using edgetrack::TrackerConfig;
 namespace edgetrack_app {
 namespace {
 
-std::string not_applied_note(const std::string& element) {
-  const bool contrast = element.find("<mu") != std::string::npos;
-  return element + " is read but not applied" +
-         (contrast ? ": sites are sampled afresh every frame, so there is no previous contrast to compare with" : "");
-}
+std::string not_applied_note(const std::string& element) { return element + " is read but not applied"; }
 
 std::string default_camera_note(const edgetrack::PinholeCamera& camera) {
   char text[160];
@@ -36,10 +32,12 @@ Result<Configuration> read_configuration(const std::string& camera_path, const s
   auto first = edgetrack::apply_visp_config(camera_path, read.config);
   if (!first.ok()) return first.error();
   std::vector<std::string> not_applied = first.value().not_applied;
+  read.notes = first.value().cut_to_whole;
   bool camera_block = first.value().camera_block;
   if (!config_path.empty()) {
     auto second = edgetrack::apply_visp_config(config_path, read.config);
     if (!second.ok()) return second.error();
+    for (const std::string& cut : second.value().cut_to_whole) read.notes.push_back(cut);
     for (const std::string& element : second.value().not_applied)
       if (std::find(not_applied.begin(), not_applied.end(), element) == not_applied.end()) not_applied.push_back(element);
     camera_block = camera_block || second.value().camera_block;
@@ -53,6 +51,7 @@ Result<edgetrack::PinholeCamera> read_camera(const std::string& path, int width,
   TrackerConfig config;
   auto read = edgetrack::apply_visp_config(path, config);
   if (!read.ok()) return read.error();
+  print_notes(read.value().cut_to_whole);
   if (!read.value().camera_block) print_notes({default_camera_note(config.camera)});
   edgetrack::PinholeCamera camera = config.camera;
   if (camera.width == 0) camera.width = width;

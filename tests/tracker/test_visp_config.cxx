@@ -74,6 +74,24 @@ void blocks() {
                                                      "<sample><step>8</step></sample></conf>"), both);
   TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.getSampleStep() == real(8), true);
 
+  TrackerConfig cut;
+  read = apply_visp_config(write("fraction.xml", "<conf><ecm><sample><step>4.5</step></sample>"
+                                                 "<range><tracking>7.9</tracking></range></ecm></conf>"), cut);
+  TEST("a decimal fraction where ViSP reads an integer is cut to its whole part, as ViSP does",
+       read.ok() && cut.params.me.getSampleStep() == real(4) && cut.params.me.getRange() == 7u, true);
+  TEST("and each is named in the notes", read.ok() && read.value().cut_to_whole.size() == 2 &&
+                                             read.value().cut_to_whole[0].find("<ecm><sample><step> '4.5' is read as 4") == 0,
+       true);
+  for (const char* text : {"4abc", ".5", "4.5e1", "x", "4,5"}) {
+    TrackerConfig refused;
+    read = apply_visp_config(write("not_whole.xml", std::string("<conf><ecm><sample><step>") + text +
+                                                        "</step></sample></ecm></conf>"), refused);
+    TEST("other text where ViSP reads an integer is refused", !read.ok() &&
+             read.error().message.find("is not a whole number") != std::string::npos, true);
+  }
+  read = apply_visp_config(write("half.xml", "<conf><ecm><sample><step>0.5</step></sample></ecm></conf>"), cut);
+  TEST("a fraction cut to 0 meets the step's limit", !read.ok(), true);
+
   TrackerConfig lod;
   read = apply_visp_config(write("lod.xml", "<conf><lod><use_lod>1</use_lod><min_line_length_threshold>30"
                                             "</min_line_length_threshold><min_polygon_area_threshold>900"
@@ -135,7 +153,7 @@ void bad_values() {
   refused("mask.xml", "<conf>\n<ecm>\n<mask>\n<size>1</size>\n</mask>\n</ecm>\n</conf>\n", 4, "<ecm><mask><size>");
   refused("step.xml", "<conf>\n<ecm>\n<range><tracking>5</tracking></range>\n<sample><step>0</step></sample>\n</ecm>\n</conf>\n",
           4, "<ecm><sample><step>");
-  refused("half_step.xml", "<conf>\n<sample>\n<step>2.5</step>\n</sample>\n</conf>\n", 3, "<sample><step>");
+  refused("half_step.xml", "<conf>\n<sample>\n<step>2.5px</step>\n</sample>\n</conf>\n", 3, "<sample><step>");
   refused("threshold.xml", "<conf><ecm><contrast>\n<edge_threshold>-1</edge_threshold>\n</contrast></ecm></conf>", 2,
           "<ecm><contrast><edge_threshold>");
   refused("mu.xml", "<conf><ecm><contrast>\n\n<mu1>1.5</mu1></contrast></ecm></conf>", 3, "<ecm><contrast><mu1>");

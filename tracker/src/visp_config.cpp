@@ -7,7 +7,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cctype>
 #include <cstdlib>
+#include <string>
 
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/xml_document.h"
@@ -56,16 +58,26 @@ class Reading {
       return bad(e, where, "is not a number: '" + e.text + "'");
     return value;
   }
-  /// The element's text as a whole number, where ViSP reads an integer.
-  Result<long> whole(const XmlElement& e, const std::string& where) const {
+  /// The element's text as a whole number, where ViSP reads an integer. ViSP's reading stops at
+  /// the first character that is not a digit, so a decimal fraction ("4.5") counts as its whole
+  /// part; it is taken so, and named in the notes. Any other text is refused.
+  Result<long> whole(const XmlElement& e, const std::string& where) {
     errno = 0;
     char* end = nullptr;
     const long value = std::strtol(e.text.c_str(), &end, 10);
-    if (e.text.empty() || *end != '\0' || errno == ERANGE) return bad(e, where, "is not a whole number: '" + e.text + "'");
+    const bool digits_before = end != e.text.c_str() && std::isdigit(static_cast<unsigned char>(end[-1]));
+    const char* fraction = end;
+    if (digits_before && *fraction == '.')
+      while (std::isdigit(static_cast<unsigned char>(*++fraction))) {
+      }
+    if (e.text.empty() || !digits_before || *fraction != '\0' || errno == ERANGE)
+      return bad(e, where, "is not a whole number: '" + e.text + "'");
+    if (fraction != end) notes_.cut_to_whole.push_back(where + " '" + e.text + "' is read as " + std::to_string(value) +
+                                                        ", as ViSP reads a whole number there");
     return value;
   }
   /// A whole number that must not be negative (ViSP reads these as unsigned).
-  Result<unsigned> count(const XmlElement& e, const std::string& where) const {
+  Result<unsigned> count(const XmlElement& e, const std::string& where) {
     auto value = whole(e, where);
     if (!value.ok()) return value.error();
     if (value.value() < 0 || value.value() > 1000000) return bad(e, where, "must be a count, not " + e.text);
@@ -158,7 +170,7 @@ class Reading {
   }
 
   /// A whole number read as a switch: non-zero is on, as ViSP reads it.
-  Result<bool> flag(const XmlElement& e, const std::string& where, bool& out) const {
+  Result<bool> flag(const XmlElement& e, const std::string& where, bool& out) {
     auto got = whole(e, where);
     if (!got.ok()) return got.error();
     out = got.value() != 0;

@@ -27,11 +27,14 @@ struct ConfigNotes {
   bool camera_block = false;  ///< it had a <camera> block
   /// Elements read and not applied, as "<ecm><contrast><mu1>", each once.
   std::vector<std::string> not_applied;
+  /// Decimal fractions where ViSP reads a whole number, each as "<ecm><sample><step> '4.5' is
+  /// read as 4, ...": ViSP cuts them to their whole part, and so does this reader.
+  std::vector<std::string> cut_to_whole;
 };
 
-/// Applies the file at `path` onto `config`. A value that is not a number (or not a whole number
-/// where ViSP reads an integer) or outside check_tracker_params' limits is an Error naming the
-/// file, the line and the element; nothing is applied then. Unknown elements and blocks for
+/// Applies the file at `path` onto `config`. A value that is not a number (or, where ViSP reads
+/// an integer, neither a whole number nor a decimal fraction) or outside check_tracker_params'
+/// limits is an Error naming the file, the line and the element; nothing is applied then. Unknown elements and blocks for
 /// ViSP's other trackers (<klt>, <depth_normal>, <depth_dense>) are passed over, as ViSP's edge
 /// tracker does.
 Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config);
