@@ -102,7 +102,6 @@ struct TrackRequest {
   SourceOptions source;
   int factor = 1;  ///< --downscale
   int hypotheses = 1;
-  bool edge_profiles = false;  ///< --edge-profiles
   bool from_points = false;  ///< --init with --init-points
   bool clicked = false;      ///< --init-click
   bool automatic = false;    ///< --init-auto
@@ -159,7 +158,6 @@ const std::vector<OptionSpec>& track_options() {
       {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
       {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
-      {"--edge-profiles", false, "choose each edge by its grey profile across the edge, fitted to the last trusted frame's (docs/ME.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -203,7 +201,6 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
   request.factor = factor.value();
   request.hypotheses = hypotheses.value();
   request.progress = !a.has("--quiet");
-  request.edge_profiles = a.has("--edge-profiles");
   return std::nullopt;
 }
 
@@ -241,7 +238,6 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   in.notes = config.value().notes;
   edgetrack::TrackerParams params = config.value().config.params;
   params.hypotheses = request.hypotheses;
-  params.edge_profiles = request.edge_profiles;
   downscale_settings(params, request.factor);  // in pixels of the input frames
   auto source = open_frame_source(request.source);
   if (!source.ok()) return report("track", source.error());

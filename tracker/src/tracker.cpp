@@ -101,7 +101,6 @@ bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
   face_visibility_.reset();
   motion_.reset(camera_from_model);
   contrast_memory_.clear();
-  profile_memory_.clear();
   started_ = false;
   return true;
 }
@@ -135,11 +134,6 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
   search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_);
-  if (params_.edge_profiles) {
-    profile_memory_.sample(grey, matches_, static_cast<int>(me_.getMaskSize()), static_cast<int>(me_.getRange()));
-    if (!started_ && !guessing) profile_memory_.remember_at_points(matches_);
-    if (!guessing) profile_memory_.relocate(camera_, camera_from_model_, sampling_.step, matches_);
-  }
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
@@ -182,7 +176,6 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.getRange());
     contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
-    if (params_.edge_profiles) profile_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
     started_ = true;
   }
   camera_from_model_ = motion_.prediction();

@@ -11,7 +11,9 @@ source "$here/../lib.sh"
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracking_eval.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-edgetrack=$(bench_tree host double edgetrack)/app/edgetrack
+bench=$(bench_tree host double edgetrack tracking_eval_me_offsets)
+edgetrack=$bench/app/edgetrack
+offsets=$bench/tests/bench/tracking_eval/tracking_eval_me_offsets
 if ! "$edgetrack" compare --help >/dev/null 2>&1; then
   echo "tracking_eval: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
   exit 1
@@ -81,10 +83,10 @@ ours_eval() {
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
 }
 
-# clutter_row LABEL MM NAME MODEL: ours with 1 and 3 hypotheses and with the edge profiles, and ViSP.
+# clutter_row LABEL MM NAME MODEL: ours with 1 and 3 hypotheses, and ViSP.
 clutter_row() {
   local label=$1 mm=$2 seq=$work/$3 model=$4 cells=""
-  for options in "" "--hypotheses 3" "--edge-profiles"; do
+  for options in "" "--hypotheses 3"; do
     # shellcheck disable=SC2086
     ours_eval "$3" "$model" $options
     cells+=$(printf ' %d | %.3f | %.3f |' "$(value lost "$work/eval.txt")" "$(value distance_mm "$work/eval.txt")" \
@@ -149,16 +151,27 @@ done
 echo
 echo "Clutter at several distances (\`--clutter MM\`, the lines as above; px: their mean image distance from"
 echo "the model's edges in the first frame), from the true first pose with the camera-only XML: ours with"
-echo "the defaults (one edge hypothesis), with \`--hypotheses 3\`, and with \`--edge-profiles\` (each edge"
-echo "chosen by its grey profile across the edge, docs/ME.md); ViSP 3.5 as above. Lost, mean and largest"
-echo "camera position error (mm)."
+echo "the defaults (one edge hypothesis) and with \`--hypotheses 3\`; ViSP 3.5 as above. Lost, mean and"
+echo "largest camera position error (mm). Then where the moving edges put their matches at the true poses"
+echo "(\`tracking_eval_me_offsets\`, docs/ME.md): share within a pixel of the edge, mean offset outwards."
 echo
-echo "| sequence | clutter mm | px off edges | K=1 lost | K=1 mean mm | K=1 largest mm | K=3 lost | K=3 mean mm | K=3 largest mm | profiles lost | profiles mean mm | profiles largest mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| sequence | clutter mm | px off edges | K=1 lost | K=1 mean mm | K=1 largest mm | K=3 lost | K=3 mean mm | K=3 largest mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
   [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
   for mm in $clutter_offsets; do
     [ "$mm" = "$clutter_mm" ] && seq="${model}_clutter" || seq="${model}_clutter$mm"
     clutter_row "$name" "$mm" "$seq" "$models/$model.cao"
+  done
+done
+echo
+echo "| sequence | clutter mm | strongest, no contrast test | strongest passing the contrast test (K=1) | nearest of 4 hypotheses, no contrast test | nearest of 4, with it |"
+echo "|---|---:|---|---|---|---|"
+for model in cube60 wood_toy; do
+  [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
+  for mm in 0 $clutter_offsets; do
+    if [ "$mm" = 0 ]; then seq="${model}_slow"; elif [ "$mm" = "$clutter_mm" ]; then seq="${model}_clutter"; else seq="${model}_clutter$mm"; fi
+    "$offsets" "$models/$model.cao" "$work/$seq" >"$work/offsets.txt"
+    printf '| %s | %s |%s\n' "$name" "$mm" "$(sed -n 's/.*matches, \([0-9.]*\) % within a pixel of the edge, mean offset \([-+0-9.]*\) px outwards.*/ \1 %, \2 px |/p' "$work/offsets.txt" | tr -d '\n')"
   done
 done

@@ -11,7 +11,6 @@
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/edge_model.h"
-#include "edgetrack/edge_profile_memory.h"
 #include "edgetrack/face_visibility.h"
 #include "edgetrack/frame_view.h"
 #include "edgetrack/motion_model.h"
@@ -52,11 +51,6 @@ struct TrackerParams {
   /// ViSP's textured mbt/cube at QVGA it let the pose follow the cube's printed inner edges off
   /// the cube (docs/results/tracker.md).
   int hypotheses = 1;
-  /// Choose each edge by its grey profile across the edge, fitted to the one remembered from the
-  /// last trusted frame (edge_profile_memory.h). Off by default: it lowers the error next to
-  /// parallel lines that move with the object, but not to the paper's accuracy, and raised it on
-  /// the covered cube (docs/results/tracking_eval.md).
-  bool edge_profiles = false;
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it
   StatusParams status;  ///< the tracked / uncertain / lost rule
@@ -174,7 +168,6 @@ class Tracker {
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
-  EdgeProfileMemory profile_memory_;  ///< the last trusted frame's edge profiles
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
