@@ -83,6 +83,14 @@ ours_eval() {
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
 }
 
+# model_name MODEL: the model's name in the tables.
+model_name() { [ "$1" = cube60 ] && echo "60 mm cube" || echo "wood toy"; }
+
+# clutter_sequence MODEL MM: the sequence with clutter MM mm beside the edges (0: the slow one).
+clutter_sequence() {
+  if [ "$2" = 0 ]; then echo "${1}_slow"; elif [ "$2" = "$clutter_mm" ]; then echo "${1}_clutter"; else echo "${1}_clutter$2"; fi
+}
+
 # clutter_row LABEL MM NAME MODEL: ours with 1 and 3 hypotheses, and ViSP.
 clutter_row() {
   local label=$1 mm=$2 seq=$work/$3 model=$4 cells=""
@@ -158,20 +166,14 @@ echo
 echo "| sequence | clutter mm | px off edges | K=1 lost | K=1 mean mm | K=1 largest mm | K=3 lost | K=3 mean mm | K=3 largest mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
-  [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
-  for mm in $clutter_offsets; do
-    [ "$mm" = "$clutter_mm" ] && seq="${model}_clutter" || seq="${model}_clutter$mm"
-    clutter_row "$name" "$mm" "$seq" "$models/$model.cao"
-  done
+  for mm in $clutter_offsets; do clutter_row "$(model_name "$model")" "$mm" "$(clutter_sequence "$model" "$mm")" "$models/$model.cao"; done
 done
 echo
 echo "| sequence | clutter mm | strongest, no contrast test | strongest passing the contrast test (K=1) | nearest of 4 hypotheses, no contrast test | nearest of 4, with it |"
 echo "|---|---:|---|---|---|---|"
 for model in cube60 wood_toy; do
-  [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
   for mm in 0 $clutter_offsets; do
-    if [ "$mm" = 0 ]; then seq="${model}_slow"; elif [ "$mm" = "$clutter_mm" ]; then seq="${model}_clutter"; else seq="${model}_clutter$mm"; fi
-    "$offsets" "$models/$model.cao" "$work/$seq" >"$work/offsets.txt"
-    printf '| %s | %s |%s\n' "$name" "$mm" "$(sed -n 's/.*matches, \([0-9.]*\) % within a pixel of the edge, mean offset \([-+0-9.]*\) px outwards.*/ \1 %, \2 px |/p' "$work/offsets.txt" | tr -d '\n')"
+    "$offsets" "$models/$model.cao" "$work/$(clutter_sequence "$model" "$mm")" >"$work/offsets.txt"
+    printf '| %s | %s |%s\n' "$(model_name "$model")" "$mm" "$(sed -n 's/.*matches, \([0-9.]*\) % within a pixel of the edge, mean offset \([-+0-9.]*\) px outwards.*/ \1 %, \2 px |/p' "$work/offsets.txt" | tr -d '\n')"
   done
 done
