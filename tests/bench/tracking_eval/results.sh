@@ -11,7 +11,9 @@ source "$here/../lib.sh"
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracking_eval.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-edgetrack=$(bench_tree host double edgetrack)/app/edgetrack
+bench=$(bench_tree host double edgetrack tracking_eval_me_offsets)
+edgetrack=$bench/app/edgetrack
+offsets=$bench/tests/bench/tracking_eval/tracking_eval_me_offsets
 if ! "$edgetrack" compare --help >/dev/null 2>&1; then
   echo "tracking_eval: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
   exit 1
@@ -21,6 +23,7 @@ models=$top/data/models
 fast_speed=4.2   # the paper's path 4.2 times faster: about 12 px per QVGA frame
 cover_share=0.3
 clutter_mm=3
+clutter_offsets="3 5 8"   # mm beside the edges: where each tracker breaks
 
 # value KEY FILE: the value of KEY=... on the first line of FILE that has it.
 value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }
@@ -71,7 +74,43 @@ mbt_row() {
     "$(value ours_points "$work/compare.txt")" "$(value visp_points "$work/compare.txt")"
 }
 
+# ours_eval NAME MODEL OPTIONS...: `track` with OPTIONS, then `eval`, into $work/eval.txt.
+ours_eval() {
+  local seq=$work/$1 model=$2
+  shift 2
+  "$edgetrack" track --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
+    --images "$seq/frames/frame%04d.ppm" --poses "$work/poses.csv" --quiet "$@" >/dev/null
+  "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
+}
+
+# model_name MODEL: the model's name in the tables.
+model_name() { [ "$1" = cube60 ] && echo "60 mm cube" || echo "wood toy"; }
+
+# clutter_sequence MODEL MM: the sequence with clutter MM mm beside the edges (0: the slow one).
+clutter_sequence() {
+  if [ "$2" = 0 ]; then echo "${1}_slow"; elif [ "$2" = "$clutter_mm" ]; then echo "${1}_clutter"; else echo "${1}_clutter$2"; fi
+}
+
+# clutter_row LABEL MM NAME MODEL: ours with 1 and 3 hypotheses, and ViSP.
+clutter_row() {
+  local label=$1 mm=$2 seq=$work/$3 model=$4 cells=""
+  for options in "" "--hypotheses 3"; do
+    # shellcheck disable=SC2086
+    ours_eval "$3" "$model" $options
+    cells+=$(printf ' %d | %.3f | %.3f |' "$(value lost "$work/eval.txt")" "$(value distance_mm "$work/eval.txt")" \
+      "$(value max_distance_mm "$work/eval.txt")")
+  done
+  "$edgetrack" compare --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
+    --images "$seq/frames/frame%04d.ppm" --truth "$seq/truth.csv" 2>/dev/null >"$work/compare.txt"
+  printf '| %s | %s | %s |%s %d | %.3f | %.3f |\n' "$label" "$mm" \
+    "$(sed -n 's/.* \([0-9.]*\) px off them.*/\1/p' "$seq.txt")" "$cells" "$(value visp_lost "$work/compare.txt")" \
+    "$(value visp_distance_mm "$work/compare.txt")" "$(value visp_max_distance_mm "$work/compare.txt")"
+}
+
 for model in cube60 wood_toy; do
+  for mm in $clutter_offsets; do
+    [ "$mm" = "$clutter_mm" ] || synth_kind "${model}_clutter$mm" "$models/$model.cao" --clutter "$mm"
+  done
   synth_kind "${model}_slow" "$models/$model.cao"
   synth_kind "${model}_fast" "$models/$model.cao" --speed "$fast_speed"
   synth_kind "${model}_cover" "$models/$model.cao" --cover "$cover_share"
@@ -116,4 +155,25 @@ echo "| model | size | track lost | compare: ours lost | ViSP lost | corner px m
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube.cao cube_and_cylinder.cao; do
   for factor in 1 2; do mbt_row "$model" "$factor"; done
+done
+echo
+echo "Clutter at several distances (\`--clutter MM\`, the lines as above; px: their mean image distance from"
+echo "the model's edges in the first frame), from the true first pose with the camera-only XML: ours with"
+echo "the defaults (one edge hypothesis) and with \`--hypotheses 3\`; ViSP 3.5 as above. Lost, mean and"
+echo "largest camera position error (mm). Then where the moving edges put their matches at the true poses"
+echo "(\`tracking_eval_me_offsets\`, docs/ME.md): share within a pixel of the edge, mean offset outwards."
+echo
+echo "| sequence | clutter mm | px off edges | K=1 lost | K=1 mean mm | K=1 largest mm | K=3 lost | K=3 mean mm | K=3 largest mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for model in cube60 wood_toy; do
+  for mm in $clutter_offsets; do clutter_row "$(model_name "$model")" "$mm" "$(clutter_sequence "$model" "$mm")" "$models/$model.cao"; done
+done
+echo
+echo "| sequence | clutter mm | strongest, no contrast test | strongest passing the contrast test (K=1) | nearest of 4 hypotheses, no contrast test | nearest of 4, with it |"
+echo "|---|---:|---|---|---|---|"
+for model in cube60 wood_toy; do
+  for mm in 0 $clutter_offsets; do
+    "$offsets" "$models/$model.cao" "$work/$(clutter_sequence "$model" "$mm")" >"$work/offsets.txt"
+    printf '| %s | %s |%s\n' "$(model_name "$model")" "$mm" "$(sed -n 's/.*matches, \([0-9.]*\) % within a pixel of the edge, mean offset \([-+0-9.]*\) px outwards.*/ \1 %, \2 px |/p' "$work/offsets.txt" | tr -d '\n')"
+  done
 done

@@ -47,9 +47,9 @@ struct TrackerParams {
   /// Edge hypotheses each control point keeps (1 to kMaxHypotheses): the strongest edge along
   /// its normal and the next local maxima of the likelihood; the pose step uses the one nearest
   /// to the projection (moving_edges.h, pose_solver.h). 1 is the paper's single match, and the
-  /// default: 3 lowers the error where parallel distractor edges lie within the range, but on
-  /// ViSP's textured mbt/cube at QVGA it let the pose follow the cube's printed inner edges off
-  /// the cube (docs/results/tracker.md).
+  /// default: 3 lower the error where a parallel distractor edge lies inside the range but
+  /// beyond the edge's own mask response, and raise it slightly on the plain generated
+  /// sequences (docs/ME.md).
   int hypotheses = 1;
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Where the moving edges put their matches on a generated sequence, at the true pose of every
+/// frame: the control points are sampled at the true pose, so each match's distance along the
+/// normal from its control point is its error. Signed outwards (from the model's projected
+/// centre), where `synth --clutter` puts its lines. Prints, for the contrast test against the
+/// response at the true projection (what the tracker does from a given pose) and without it:
+/// the strongest maximum (the single-hypothesis match), and the nearest of up to 4 hypotheses.
+///   tracking_eval_me_offsets MODEL.cao SEQUENCE_DIR   (synth's camera.xml, truth.csv, frames/)
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "edgetrack/grey_conversion.h"
+#include "edgetrack/model_io.h"
+#include "edgetrack/moving_edges.h"
+#include "edgetrack/tracker.h"
+#include "edgetrack/visp_config.h"
+#include "image_io.h"
+
+using namespace edgetrack;
+
+namespace {
+
+std::vector<Se3> read_truth(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // the header
+  std::vector<Se3> poses;
+  while (std::getline(in, line)) {
+    for (char& c : line) c = c == ',' ? ' ' : c;
+    std::istringstream fields(line);
+    double frame, t[3], w[3];
+    if (!(fields >> frame >> t[0] >> t[1] >> t[2] >> w[0] >> w[1] >> w[2])) break;
+    poses.emplace_back(rotation_exp(Vec3{real(w[0]), real(w[1]), real(w[2])}), Vec3{real(t[0]), real(t[1]), real(t[2])});
+  }
+  return poses;
+}
+
+/// Offsets of one way of matching, pixels.
+struct Tally {
+  int count = 0;
+  int within_pixel = 0;  ///< |offset| < 1
+  double sum = 0;        ///< signed, outwards
+  double sum_abs = 0;
+  void add(double offset) {
+    ++count;
+    within_pixel += std::fabs(offset) < 1;
+    sum += offset;
+    sum_abs += std::fabs(offset);
+  }
+  void print(const char* label) const {
+    std::printf("%s: %d matches, %.1f %% within a pixel of the edge, mean offset %+.3f px outwards, mean |offset| %.3f px\n",
+                label, count, 100.0 * within_pixel / (count ? count : 1), sum / (count ? count : 1),
+                sum_abs / (count ? count : 1));
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: %s MODEL.cao SEQUENCE_DIR\n", argv[0]);
+    return 2;
+  }
+  const std::string sequence = argv[2];
+  const Result<EdgeModel> model = load_model(argv[1]);
+  TrackerConfig config;
+  const auto notes = apply_visp_config(sequence + "/camera.xml", config);
+  const std::vector<Se3> truth = read_truth(sequence + "/truth.csv");
+  if (!model.ok() || !notes.ok() || truth.empty()) {
+    std::fprintf(stderr, "%s: cannot read the model, camera.xml or truth.csv\n", argv[0]);
+    return 1;
+  }
+  Vec3 centre;
+  for (const Vec3& v : model.value().vertices) centre = centre + v;
+  centre = (real(1) / real(static_cast<int>(model.value().vertices.size()))) * centre;
+  Result<Tracker> tracker = Tracker::create(model.value(), config.camera, truth[0], config.params);
+  const vpMe& me = config.params.me;
+  vpImage<unsigned char> grey(static_cast<unsigned>(config.camera.height), static_cast<unsigned>(config.camera.width));
+  std::vector<real> references;
+  std::vector<EdgeMatch> matches;
+  Tally strongest[2], nearest[2];  // [0]: without the contrast test, [1]: with it
+  for (size_t k = 0; k < truth.size(); ++k) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/frames/frame%04zu.ppm", k);
+    const auto pixels = edgetrack_app::read_netpbm_pixels(sequence + name);
+    if (!pixels.ok()) break;
+    const FrameView frame = pixels.value().view();
+    // The tracker samples its visible control points at the pose it is reset to.
+    tracker.value().reset(truth[k]);
+    if (!tracker.value().track(frame).ok()) break;
+    const std::vector<ControlPoint>& points = tracker.value().control_points();
+    convert_to_grey(frame, PixelBox{0, 0, frame.height, frame.width}, grey);
+    const Vec2 middle = config.camera.project(truth[k] * centre);
+    for (int test = 0; test < 2; ++test) {
+      if (test) contrasts_at_points(grey, points, me, references);
+      search_moving_edges(grey, points, me, kMaxHypotheses, matches, test ? &references : nullptr);
+      for (const EdgeMatch& m : matches) {
+        const real outwards = dot(m.point.normal, m.point.pixel - middle) < real(0) ? real(-1) : real(1);
+        const double found = static_cast<double>(outwards * dot(m.point.normal, m.found - m.point.pixel));
+        double best = found;
+        for (int a = 0; a < m.alternative_count; ++a) {
+          const double d = static_cast<double>(outwards * dot(m.point.normal, m.alternatives[a] - m.point.pixel));
+          if (std::fabs(d) < std::fabs(best)) best = d;
+        }
+        strongest[test].add(found);
+        nearest[test].add(best);
+      }
+    }
+  }
+  std::printf("%s, %zu frames at the true pose, range %d, mask %d px\n", sequence.c_str(), truth.size(),
+              static_cast<int>(me.getRange()), static_cast<int>(me.getMaskSize()));
+  strongest[0].print("strongest edge, no contrast test");
+  strongest[1].print("strongest passing the contrast test (the single hypothesis)");
+  nearest[0].print("nearest of 4 hypotheses, no contrast test");
+  nearest[1].print("nearest of 4 hypotheses, with the contrast test");
+  return 0;
+}
