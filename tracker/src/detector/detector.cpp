@@ -45,6 +45,9 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
   if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
   if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
+  if (!(p.settled_px >= real(0)) || p.settled_px > real(10)) return bad("the settled move must be 0 to 10 px");
+  if (!(p.refine_sample_step >= real(2)) || p.refine_sample_step > real(50))
+    return bad("the refining sample step must be 2 to 50 px");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   return true;
 }
@@ -61,22 +64,31 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
                             ", this one is " + camera_description(camera) + ")"};
   const ModelExtent extent = model_extent(model);
   const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
-  Result<Tracker> tracker = Tracker::create(model, camera, start, tracking);
-  if (!tracker.ok()) return tracker.error();
-  TrackerParams wide_tracking = tracking, fine_tracking = tracking;
+  // One image, so nothing moves between its frames: no velocity is predicted.
+  TrackerParams still = tracking;
+  still.motion.velocity_share = real(0);
+  TrackerParams refining = still;
+  refining.me.setSampleStep(params.refine_sample_step);
+  TrackerParams wide_tracking = refining, fine_tracking = refining;
   wide_tracking.me.setRange(params.wide_range);
   fine_tracking.me.setRange(params.fine_range);
+  Result<Tracker> screen = Tracker::create(model, camera, start, still);
+  if (!screen.ok()) return screen.error();
+  Result<Tracker> tracker = Tracker::create(model, camera, start, refining);
+  if (!tracker.ok()) return tracker.error();
   Result<Tracker> wide = Tracker::create(model, camera, start, wide_tracking);
   if (!wide.ok()) return wide.error();
   Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
   if (!fine.ok()) return fine.error();
-  return Detector(std::move(templates), params, std::move(wide).value(), std::move(tracker).value(),
-                  std::move(fine).value());
+  return Detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
+                  std::move(tracker).value(), std::move(fine).value());
 }
 
-Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine)
+Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
+                   Tracker fine)
     : templates_(std::move(templates)),
       params_(params),
+      screen_(std::move(screen)),
       wide_(std::move(wide)),
       tracker_(std::move(tracker)),
       fine_(std::move(fine)) {}
@@ -103,8 +115,8 @@ void Detector::match(const FrameView& frame) {
 
 bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
   int lost_in_a_row = 0;
+  if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
   for (int k = 0; k < iterations; ++k) {
-    if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();
@@ -119,6 +131,7 @@ bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iteratio
     }
     lost_in_a_row = 0;
     candidate.camera_from_model = result.camera_from_model;
+    if (result.status == TrackingStatus::kTracked && result.measures.correction_px <= params_.settled_px) break;
   }
   measure_support(tracker, candidate);
   return true;
@@ -175,7 +188,7 @@ std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
     RefinedCandidate c;
     c.match = m;
     c.camera_from_model = pose_of_match(templates_, m, params_.spread);
-    if (!run_frames(tracker_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
+    if (!run_frames(screen_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
     screened.push_back(c);
   }
   // Stable: among equals the better match first.
@@ -194,7 +207,10 @@ Result<Detection> Detector::detect(const FrameView& frame) {
     return *refused;
   Detection detection;
   match(frame);
-  for (const TemplateMatch& m : screen(frame)) detection.refined.push_back(refine(frame, m));
+  // The trackers read the grey image matching made, in place: no frame is converted again.
+  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+                                      PixelLayout::kGrey8);
+  for (const TemplateMatch& m : screen(grey)) detection.refined.push_back(refine(grey, m));
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;
