@@ -44,17 +44,32 @@ struct DetectorParams {
   /// along its normal than this (pixels): the pose has settled, and the next frame on the same
   /// image would start where this one ended.
   real settled_px = real(0.25);
-  /// Control points of the refining runs every this many pixels along the edges (the tracking
-  /// settings' sample step spaces the screening's): one frame has to fix all six degrees of
-  /// freedom, and an inner edge the light leaves faint holds only a few points at the tracking
-  /// step, too few to hold the pose against the outline's slack.
+  /// Control points of the refining runs every this many pixels along the edges: one image has
+  /// to fix all six degrees of freedom, and an inner edge the light leaves faint holds only a
+  /// few points at the tracking step (10), too few to hold the pose against the outline's slack.
   real refine_sample_step = real(5);
+  /// The screening only ranks the matches by the control points they keep, which a third of
+  /// the tracking step's points do as well.
+  real screen_sample_step = real(15);
+  /// Robust rounds per frame (PoseParams::robust_rounds) of the refining and screening runs:
+  /// a run's next frame starts its first solve weighted at this one's pose, so the frames carry
+  /// the re-weighting on and each needs fewer rounds than a tracked sequence's frame.
+  int refine_robust_rounds = 2;
+  int screen_robust_rounds = 1;
   /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
   /// frames at the tracking range, and only the `refined_candidates` keeping the most control
   /// points are refined in full (from their match again): the screen's frames already part
   /// the matches that are near the object from the rest, at a fraction of the full cost.
   int screen_iterations = 3;
   int refined_candidates = 4;
+  /// Before screening, a match whose pose is within `suppress_deg` of rotation and
+  /// `suppress_radii` model radii of centre of a better one's is dropped (non-maximum
+  /// suppression over the pose): neighbouring templates matching the same place refine to the
+  /// same pose, and screening each costs frames that a different candidate could use. 16 degrees
+  /// is a step of the sphere's directions at 2 subdivisions; a quarter of the radius is about the
+  /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
+  real suppress_deg = real(16);
+  real suppress_radii = real(0.25);
   /// Found: the last refining frame is tracked and the robust solve kept at least this share of
   /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
   /// few-matched rule); a right one most.
@@ -111,6 +126,8 @@ class Detector {
   void match(const FrameView& frame);
   /// The trackers run from one match's pose.
   RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
+  /// matches_ without the ones near a better one's pose (DetectorParams::suppress_deg).
+  void suppress_neighbours();
   /// The matches worth refining in full, best first (all of them when few).
   std::vector<TemplateMatch> screen(const FrameView& frame);
   /// candidate.support from `tracker`'s last control points.
