@@ -2,12 +2,14 @@
 /// The detector's portable core on known inputs: the orientation bins of known gradients, the
 /// quantised orientations of step edges, spreading over T x T, the similarity table and the
 /// linearised memory's layout, a hand-made template found where it was drawn, the viewpoint
-/// sphere, and the templates made from the cube (bounded, well spread, within 4 MB).
+/// sphere, the templates made from the cube (bounded, well spread, within 4 MB), and the
+/// detector's parameter limits.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
+#include "edgetrack/detector/detector.h"
 #include "edgetrack/detector/gradient_orientations.h"
 #include "edgetrack/detector/response_maps.h"
 #include "edgetrack/detector/template_matching.h"
@@ -248,6 +250,21 @@ void test_cube_templates() {
   TEST("a template with its features takes under 256 bytes", per_template < 256, true);
 }
 
+void test_detector_params() {
+  TEST("the default detector parameters are accepted", check_detector_params(DetectorParams{}).ok(), true);
+  auto refused = [](void (*change)(DetectorParams&)) {
+    DetectorParams p;
+    change(p);
+    return !check_detector_params(p).ok();
+  };
+  TEST("a refining sample step under 2 px is refused", refused([](DetectorParams& p) { p.refine_sample_step = real(1); }), true);
+  TEST("a screening sample step over 50 px is refused", refused([](DetectorParams& p) { p.screen_sample_step = real(60); }), true);
+  TEST("negative robust rounds are refused", refused([](DetectorParams& p) { p.screen_robust_rounds = -1; }), true);
+  TEST("a suppressed angle over 180 degrees is refused", refused([](DetectorParams& p) { p.suppress_deg = real(200); }), true);
+  TEST("a negative suppressed distance is refused", refused([](DetectorParams& p) { p.suppress_radii = real(-1); }), true);
+  TEST("a negative settled move is refused", refused([](DetectorParams& p) { p.settled_px = real(-1); }), true);
+}
+
 }  // namespace
 
 static void test_detector_core() {
@@ -258,6 +275,7 @@ static void test_detector_core() {
   test_template_found_in_place();
   test_viewpoints();
   test_cube_templates();
+  test_detector_params();
 }
 
 TESTMAIN(test_detector_core)
