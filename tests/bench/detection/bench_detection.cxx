@@ -215,6 +215,7 @@ int main(int argc, char** argv) {
   }
   const std::vector<Mat33> symmetries = o.scene == Scene::kCube ? cube_symmetries() : std::vector<Mat33>{Mat33::identity()};
   int found = 0, right = 0, refined = 0, truth_kept = 0;
+  long long points = 0;
   int failures[kFailures] = {0};
   GridReach reach;
   if (o.diagnose && o.with_object)
@@ -239,6 +240,7 @@ int main(int argc, char** argv) {
     found += d.found;
     right += ok;
     refined += static_cast<int>(d.refined.size());
+    points += d.points_searched;
     const Failure failure =
         o.diagnose && o.with_object ? classify(detector.value(), d, truth, extent.centre, symmetries, reach)
                                     : Failure::kNone;
@@ -256,10 +258,10 @@ int main(int argc, char** argv) {
   }
   std::printf("detection: scene=%s object=%d trials=%d found=%d right=%d rate_percent=%.1f wrong=%d truth_kept=%d "
               "templates=%zu template_bytes=%zu make_ms=%.0f mean_ms=%.2f worst_ms=%.2f cpu_ms=%.2f "
-              "refined_per_trial=%.1f real=%s",
+              "refined_per_trial=%.1f points_per_trial=%.0f real=%s",
               o.scene == Scene::kCube ? "cube" : "wood_toy", o.with_object, o.trials, found, right,
               100.0 * right / o.trials, found - right, o.from_truth ? truth_kept : -1, template_count, bytes, make_ms,
-              total_ms / o.trials, worst_ms, cpu_ms / o.trials, static_cast<double>(refined) / o.trials, real_name());
+              total_ms / o.trials, worst_ms, cpu_ms / o.trials, static_cast<double>(refined) / o.trials, static_cast<double>(points) / o.trials, real_name());
   if (o.diagnose) {
     std::printf(" reach_deg=%.1f reach_mm=%.1f", reach.rotation_deg, reach.centre_mm);
     for (int f = 1; f < kFailures; ++f) std::printf(" %s=%d", failure_key(static_cast<Failure>(f)), failures[f]);

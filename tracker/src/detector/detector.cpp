@@ -130,6 +130,7 @@ bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iteratio
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();
+    points_searched_ += result.measures.visible;
     candidate.status = result.status;
     candidate.visible = result.measures.visible;
     candidate.kept = result.measures.kept;
@@ -239,11 +240,13 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
     return *refused;
   Detection detection;
+  points_searched_ = 0;
   match(frame);
   // The trackers read the grey image matching made, in place: no frame is converted again.
   const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   for (const TemplateMatch& m : screen(grey)) detection.refined.push_back(refine(grey, m));
+  detection.points_searched = points_searched_;
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;

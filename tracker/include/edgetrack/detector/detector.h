@@ -102,6 +102,9 @@ struct Detection {
   real match_share{0};    ///< the winner's template score share
   int template_index = -1;
   std::vector<RefinedCandidate> refined;  ///< every candidate refined, in the order tried
+  /// Control points of every screening and refining frame: a detection's guest cost past the
+  /// matching is about proportional to it (docs/results/detection.md).
+  int points_searched = 0;
 };
 
 class Detector {
@@ -152,6 +155,7 @@ class Detector {
   std::vector<const uint32_t*> runs_;
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
+  int points_searched_ = 0;  ///< this detection's, so far
 };
 
 /// Checks the detector's parameters; an Error names the first one out of its range.
