@@ -44,7 +44,8 @@ int unsuppressed_pairs(const Detector& detector) {
     for (size_t j = i + 1; j < matches.size(); ++j) {
       const Se3 a = pose_of_match(detector.templates(), matches[i], p.spread);
       const Se3 b = pose_of_match(detector.templates(), matches[j], p.spread);
-      const double angle = static_cast<double>(norm(rotation_log(a.rotation().transpose() * b.rotation()))) * 180 / 3.141592653589793;
+      const Vec3 turn = rotation_log(a.rotation().transpose() * b.rotation());
+      const double angle = static_cast<double>(norm(turn)) * 180 / 3.141592653589793;
       const double apart = static_cast<double>(norm(a * extent.centre - b * extent.centre));
       pairs += angle < static_cast<double>(p.suppress_deg) - 0.01 &&
                apart < static_cast<double>(p.suppress_radii * extent.radius) - 1e-4;

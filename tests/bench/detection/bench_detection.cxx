@@ -8,7 +8,7 @@
 /// under toolchains/qemu/count-insns.sh the windows hold the guest instructions of detection only.
 ///
 /// usage: bench_detection cube|wood_toy TRIALS [--no-object] [--from-truth] [--diagnose]
-///        [--subdivisions N] [--in-plane N] [--seed S] [--quiet]
+///        [--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--quiet]
 /// --from-truth also runs the refinement's tracking from the true pose (how often the tracker
 /// itself keeps a single frame within 2 mm and 2 degrees: the ceiling of the detection rate).
 /// --diagnose says, for each trial that is not right, where it failed (Failure), prints the
@@ -63,6 +63,7 @@ bool parse(int argc, char** argv, Options& o) {
     else if (a == "--diagnose") o.diagnose = true;
     else if (a == "--subdivisions" && value) o.templates.views.subdivisions = std::atoi(argv[++i]);
     else if (a == "--in-plane" && value) o.templates.views.in_plane_steps = std::atoi(argv[++i]);
+    else if (a == "--distance-ratio" && value) o.templates.views.distance_ratio = real(std::atof(argv[++i]));
     else if (a == "--seed" && value) o.seed = static_cast<uint32_t>(std::atoi(argv[++i]));
     else return false;
   }
@@ -111,7 +112,8 @@ GridReach grid_reach(const TemplateSet& set, const EdgeModel& model, const ViewR
   }
   const double far = static_cast<double>(range.distance_max);
   const double step = static_cast<double>(set.params.downscale) * t / static_cast<double>(set.camera.px);
-  reach.centre_mm = 1000 * far * ((std::sqrt(static_cast<double>(range.distance_ratio)) - 1) + std::sqrt(2.0) / 2 * step);
+  const double half_step = std::sqrt(static_cast<double>(range.distance_ratio)) - 1;
+  reach.centre_mm = 1000 * far * (half_step + std::sqrt(2.0) / 2 * step);
   return reach;
 }
 
@@ -186,7 +188,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     std::fprintf(stderr, "usage: bench_detection cube|wood_toy TRIALS [--no-object] [--from-truth] [--diagnose] "
-                         "[--subdivisions N] [--in-plane N] [--seed S] [--quiet]\n");
+                         "[--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--quiet]\n");
     return 2;
   }
   const Result<EdgeModel> model = load_model(model_path(o.scene));
@@ -261,7 +263,8 @@ int main(int argc, char** argv) {
               "refined_per_trial=%.1f points_per_trial=%.0f real=%s",
               o.scene == Scene::kCube ? "cube" : "wood_toy", o.with_object, o.trials, found, right,
               100.0 * right / o.trials, found - right, o.from_truth ? truth_kept : -1, template_count, bytes, make_ms,
-              total_ms / o.trials, worst_ms, cpu_ms / o.trials, static_cast<double>(refined) / o.trials, static_cast<double>(points) / o.trials, real_name());
+              total_ms / o.trials, worst_ms, cpu_ms / o.trials, static_cast<double>(refined) / o.trials,
+              static_cast<double>(points) / o.trials, real_name());
   if (o.diagnose) {
     std::printf(" reach_deg=%.1f reach_mm=%.1f", reach.rotation_deg, reach.centre_mm);
     for (int f = 1; f < kFailures; ++f) std::printf(" %s=%d", failure_key(static_cast<Failure>(f)), failures[f]);

@@ -45,8 +45,10 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
   if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
   if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
-  if (!(p.suppress_deg >= real(0)) || p.suppress_deg > real(180)) return bad("the suppressed angle must be 0 to 180 degrees");
-  if (!(p.suppress_radii >= real(0)) || p.suppress_radii > real(10)) return bad("the suppressed distance must be 0 to 10 radii");
+  if (!(p.suppress_deg >= real(0)) || p.suppress_deg > real(180))
+    return bad("the suppressed angle must be 0 to 180 degrees");
+  if (!(p.suppress_radii >= real(0)) || p.suppress_radii > real(10))
+    return bad("the suppressed distance must be 0 to 10 radii");
   if (!(p.settled_px >= real(0)) || p.settled_px > real(10)) return bad("the settled move must be 0 to 10 px");
   if (!(p.refine_sample_step >= real(2)) || p.refine_sample_step > real(50) || !(p.screen_sample_step >= real(2)) ||
       p.screen_sample_step > real(50))
