@@ -3,7 +3,7 @@
 /// poses inside a small template range (a 25-degree cone of views, 140-170 mm), over a textured
 /// background with distractor lines, are found within 2 mm and 2 degrees of the truth (for the
 /// cube, of any of its 24 symmetric poses) at the rate the evaluation measures (about 80 % for
-/// the cube, 85 % for the wood toy: docs/results/detection.md), so at least 3 of 4 trials; no two
+/// the cube and the wood toy: docs/results/detection.md), so at least 3 of 4 trials; no two
 /// of a frame's template matches stand for the same pose (the suppression before screening);
 /// frames with the background and the lines but no object are "not found", every one.
 #include <cstdio>
