@@ -154,16 +154,21 @@ TemplateSet square_template(int side) {
   return set;
 }
 
-void test_template_found_in_place() {
-  const int w = 160, h = 120, t = 4;
-  // A bright square whose outline pixels (the template's features) are at 48..71 x 28..51.
-  const std::vector<uint8_t> grey = rectangle_image(w, h, 48, 28, 72, 52, 60, 190);
+/// The response maps of `grey` with the default orientation settings, spread over t x t.
+void compute_maps(const std::vector<uint8_t>& grey, int w, int h, int t, ResponseMaps& maps) {
   std::vector<uint8_t> scratch;
   OrientationImage q, spread;
   quantise_orientations(grey.data(), w, h, OrientationParams{}, scratch, q);
   spread_orientations(q, t, scratch, spread);
-  ResponseMaps maps;
   maps.compute(spread, t);
+}
+
+void test_template_found_in_place() {
+  const int w = 160, h = 120, t = 4;
+  // A bright square whose outline pixels (the template's features) are at 48..71 x 28..51.
+  const std::vector<uint8_t> grey = rectangle_image(w, h, 48, 28, 72, 52, 60, 190);
+  ResponseMaps maps;
+  compute_maps(grey, w, h, t, maps);
   const TemplateSet set = square_template(24);
   std::vector<uint32_t> scores;
   std::vector<const uint32_t*> runs;
@@ -225,12 +230,8 @@ void test_matching_equals_direct_sums() {
       for (int x = x0; x < x0 + 30 - k && x < w; ++x)
         grey[static_cast<size_t>(y) * w + x] = static_cast<uint8_t>(30 + 17 * k);
   }
-  std::vector<uint8_t> scratch;
-  OrientationImage q, spread;
-  quantise_orientations(grey.data(), w, h, OrientationParams{}, scratch, q);
-  spread_orientations(q, t, scratch, spread);
   ResponseMaps maps;
-  maps.compute(spread, t);
+  compute_maps(grey, w, h, t, maps);
   std::vector<uint32_t> scores;
   std::vector<const uint32_t*> runs;
   std::vector<std::vector<TemplateMatch>> per_distance;
