@@ -2,12 +2,14 @@
 /// The detector's portable core on known inputs: the orientation bins of known gradients, the
 /// quantised orientations of step edges, spreading over T x T, the similarity table and the
 /// linearised memory's layout, a hand-made template found where it was drawn, the viewpoint
-/// sphere, and the templates made from the cube (bounded, well spread, within 4 MB).
+/// sphere, the templates made from the cube (bounded, well spread, within 4 MB), and the
+/// detector's parameter limits.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
+#include "edgetrack/detector/detector.h"
 #include "edgetrack/detector/gradient_orientations.h"
 #include "edgetrack/detector/response_maps.h"
 #include "edgetrack/detector/template_matching.h"
@@ -152,16 +154,21 @@ TemplateSet square_template(int side) {
   return set;
 }
 
-void test_template_found_in_place() {
-  const int w = 160, h = 120, t = 4;
-  // A bright square whose outline pixels (the template's features) are at 48..71 x 28..51.
-  const std::vector<uint8_t> grey = rectangle_image(w, h, 48, 28, 72, 52, 60, 190);
+/// The response maps of `grey` with the default orientation settings, spread over t x t.
+void compute_maps(const std::vector<uint8_t>& grey, int w, int h, int t, ResponseMaps& maps) {
   std::vector<uint8_t> scratch;
   OrientationImage q, spread;
   quantise_orientations(grey.data(), w, h, OrientationParams{}, scratch, q);
   spread_orientations(q, t, scratch, spread);
-  ResponseMaps maps;
   maps.compute(spread, t);
+}
+
+void test_template_found_in_place() {
+  const int w = 160, h = 120, t = 4;
+  // A bright square whose outline pixels (the template's features) are at 48..71 x 28..51.
+  const std::vector<uint8_t> grey = rectangle_image(w, h, 48, 28, 72, 52, 60, 190);
+  ResponseMaps maps;
+  compute_maps(grey, w, h, t, maps);
   const TemplateSet set = square_template(24);
   std::vector<uint32_t> scores;
   std::vector<const uint32_t*> runs;
@@ -175,6 +182,83 @@ void test_template_found_in_place() {
   TEST("found within one grid step of where it was drawn",
        matches[0].x >= 48 - t && matches[0].x <= 48 && matches[0].y >= 28 - t && matches[0].y <= 28, true);
   TEST("with nearly every feature on its orientation", matches[0].share >= real(0.9), true);
+}
+
+/// The best grid position and score of template `tp` by a direct sum over every position.
+TemplateMatch direct_best(const TemplateSet& set, const ResponseMaps& maps, size_t index) {
+  const Template& tp = set.templates[index];
+  const int t = maps.step(), gw = maps.grid_width(), gh = maps.grid_height();
+  TemplateMatch best;
+  best.score = -1;
+  for (int j = 0; j < gh - (tp.height - 1) / t; ++j)
+    for (int i = 0; i < gw - (tp.width - 1) / t; ++i) {
+      int score = 0;
+      for (int f = tp.first; f < tp.first + tp.count; ++f) {
+        const TemplateFeature& a = set.features[static_cast<size_t>(f)];
+        score += maps.linear(a.bin, a.x % t, a.y % t)[static_cast<size_t>(j + a.y / t) * gw + i + a.x / t];
+      }
+      if (score > best.score) {
+        best.score = score;
+        best.x = i * t;
+        best.y = j * t;
+      }
+    }
+  return best;
+}
+
+/// Matching every cube template on a cluttered image, with match shares that let the matching
+/// pass over low words (0.6, 0.3) and one that makes it look at every position (0: 32 features
+/// reach 128 over a threshold of 0), gives each kept template the direct sum's best position and
+/// score.
+void test_matching_equals_direct_sums() {
+  const Result<EdgeModel> model = load_model(std::string(EDGETRACK_DATA_DIR) + "/models/cube60.cao");
+  if (!model.ok()) return;
+  TemplateParams params;
+  params.views.subdivisions = 0;
+  params.views.in_plane_steps = 4;
+  const PinholeCamera camera{real(220), real(220), real(160), real(120), 320, 240};
+  const Result<TemplateSet> set = make_template_set(model.value(), camera, params);
+  if (!set.ok()) return;
+  const int w = 160, h = 120, t = 4;
+  std::vector<uint8_t> grey(static_cast<size_t>(w) * h);
+  uint32_t state = 12345;
+  for (uint8_t& g : grey) g = static_cast<uint8_t>(100 + ((state = state * 1103515245u + 12345u) >> 28));
+  for (int k = 0; k < 12; ++k) {
+    state = state * 1103515245u + 12345u;
+    const int x0 = static_cast<int>(state >> 25) % (w - 30), y0 = static_cast<int>(state >> 9) % (h - 30);
+    for (int y = y0; y < y0 + 10 + k * 2 && y < h; ++y)
+      for (int x = x0; x < x0 + 30 - k && x < w; ++x)
+        grey[static_cast<size_t>(y) * w + x] = static_cast<uint8_t>(30 + 17 * k);
+  }
+  ResponseMaps maps;
+  compute_maps(grey, w, h, t, maps);
+  std::vector<uint32_t> scores;
+  std::vector<const uint32_t*> runs;
+  std::vector<std::vector<TemplateMatch>> per_distance;
+  std::vector<TemplateMatch> matches;
+  for (const real share : {real(0.6), real(0.3), real(0)}) {
+    MatchParams match_params;
+    match_params.min_share = share;
+    match_params.max_candidates = 100;
+    match_templates(set.value(), maps, match_params, scores, runs, per_distance, matches);
+    int differ = 0, expected = 0;
+    for (size_t index = 0; index < set.value().templates.size(); ++index) {
+      const TemplateMatch direct = direct_best(set.value(), maps, index);
+      const int count = set.value().templates[index].count;
+      if (real(direct.score) / real(kBestSimilarity * count) < share) continue;
+      ++expected;
+      bool same = false;
+      for (const TemplateMatch& m : matches)
+        same = same || (m.template_index == static_cast<int>(index) && m.score == direct.score &&
+                        m.x == direct.x && m.y == direct.y);
+      differ += !same;
+    }
+    std::printf("share %.1f: %d of %zu templates kept, %zu matches\n", static_cast<double>(share), expected,
+                set.value().templates.size(), matches.size());
+    TEST("some templates reach the share", expected > 0, true);
+    TEST_EQUAL("matching keeps exactly the templates the direct sums do", static_cast<int>(matches.size()), expected);
+    TEST_EQUAL("each at the direct sums' first best position and score", differ, 0);
+  }
 }
 
 void test_viewpoints() {
@@ -248,6 +332,27 @@ void test_cube_templates() {
   TEST("a template with its features takes under 256 bytes", per_template < 256, true);
 }
 
+void test_detector_params() {
+  TEST("the default detector parameters are accepted", check_detector_params(DetectorParams{}).ok(), true);
+  auto refused = [](void (*change)(DetectorParams&)) {
+    DetectorParams p;
+    change(p);
+    return !check_detector_params(p).ok();
+  };
+  TEST("a refining sample step under 2 px is refused",
+       refused([](DetectorParams& p) { p.refine_sample_step = real(1); }), true);
+  TEST("a screening sample step over 50 px is refused",
+       refused([](DetectorParams& p) { p.screen_sample_step = real(60); }), true);
+  TEST("negative robust rounds are refused",
+       refused([](DetectorParams& p) { p.screen_robust_rounds = -1; }), true);
+  TEST("a suppressed angle over 180 degrees is refused",
+       refused([](DetectorParams& p) { p.suppress_deg = real(200); }), true);
+  TEST("a negative suppressed distance is refused",
+       refused([](DetectorParams& p) { p.suppress_radii = real(-1); }), true);
+  TEST("a negative settled move is refused",
+       refused([](DetectorParams& p) { p.settled_px = real(-1); }), true);
+}
+
 }  // namespace
 
 static void test_detector_core() {
@@ -256,8 +361,10 @@ static void test_detector_core() {
   test_spreading();
   test_response_maps();
   test_template_found_in_place();
+  test_matching_equals_direct_sums();
   test_viewpoints();
   test_cube_templates();
+  test_detector_params();
 }
 
 TESTMAIN(test_detector_core)

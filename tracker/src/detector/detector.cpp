@@ -45,6 +45,17 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
   if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
   if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
+  if (!(p.suppress_deg >= real(0)) || p.suppress_deg > real(180))
+    return bad("the suppressed angle must be 0 to 180 degrees");
+  if (!(p.suppress_radii >= real(0)) || p.suppress_radii > real(10))
+    return bad("the suppressed distance must be 0 to 10 radii");
+  if (!(p.settled_px >= real(0)) || p.settled_px > real(10)) return bad("the settled move must be 0 to 10 px");
+  if (!(p.refine_sample_step >= real(2)) || p.refine_sample_step > real(50) || !(p.screen_sample_step >= real(2)) ||
+      p.screen_sample_step > real(50))
+    return bad("the refining and screening sample steps must be 2 to 50 px");
+  if (p.screen_robust_rounds < 0 || p.screen_robust_rounds > 10 || p.refine_robust_rounds < 0 ||
+      p.refine_robust_rounds > 10)
+    return bad("the screening and refining robust rounds must be 0 to 10");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   return true;
 }
@@ -61,22 +72,34 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
                             ", this one is " + camera_description(camera) + ")"};
   const ModelExtent extent = model_extent(model);
   const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
-  Result<Tracker> tracker = Tracker::create(model, camera, start, tracking);
-  if (!tracker.ok()) return tracker.error();
-  TrackerParams wide_tracking = tracking, fine_tracking = tracking;
+  // One image, so nothing moves between its frames: no velocity is predicted; and each frame's
+  // first solve is weighted at the last one's pose, so the run's frames carry the re-weighting on.
+  TrackerParams screening = tracking, refining = tracking;
+  screening.motion.velocity_share = refining.motion.velocity_share = real(0);
+  screening.me.setSampleStep(params.screen_sample_step);
+  screening.pose.robust_rounds = params.screen_robust_rounds;
+  refining.me.setSampleStep(params.refine_sample_step);
+  refining.pose.robust_rounds = params.refine_robust_rounds;
+  TrackerParams wide_tracking = refining, fine_tracking = refining;
   wide_tracking.me.setRange(params.wide_range);
   fine_tracking.me.setRange(params.fine_range);
+  Result<Tracker> screen = Tracker::create(model, camera, start, screening);
+  if (!screen.ok()) return screen.error();
+  Result<Tracker> tracker = Tracker::create(model, camera, start, refining);
+  if (!tracker.ok()) return tracker.error();
   Result<Tracker> wide = Tracker::create(model, camera, start, wide_tracking);
   if (!wide.ok()) return wide.error();
   Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
   if (!fine.ok()) return fine.error();
-  return Detector(std::move(templates), params, std::move(wide).value(), std::move(tracker).value(),
-                  std::move(fine).value());
+  return Detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
+                  std::move(tracker).value(), std::move(fine).value());
 }
 
-Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine)
+Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
+                   Tracker fine)
     : templates_(std::move(templates)),
       params_(params),
+      screen_(std::move(screen)),
       wide_(std::move(wide)),
       tracker_(std::move(tracker)),
       fine_(std::move(fine)) {}
@@ -99,15 +122,17 @@ void Detector::match(const FrameView& frame) {
   spread_orientations(orientations_, params_.spread, scratch_, spread_);
   maps_.compute(spread_, params_.spread);
   match_templates(templates_, maps_, params_.matching, scores_, runs_, per_distance_, matches_);
+  suppress_neighbours();
 }
 
 bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
   int lost_in_a_row = 0;
+  if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
   for (int k = 0; k < iterations; ++k) {
-    if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();
+    points_searched_ += result.measures.visible;
     candidate.status = result.status;
     candidate.visible = result.measures.visible;
     candidate.kept = result.measures.kept;
@@ -119,6 +144,7 @@ bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iteratio
     }
     lost_in_a_row = 0;
     candidate.camera_from_model = result.camera_from_model;
+    if (result.status == TrackingStatus::kTracked && result.measures.correction_px <= params_.settled_px) break;
   }
   measure_support(tracker, candidate);
   return true;
@@ -168,6 +194,29 @@ RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& m
   return near;
 }
 
+void Detector::suppress_neighbours() {
+  const real cos_half = cos(real(0.5) * params_.suppress_deg * real(0.017453292519943295));
+  const real reach = params_.suppress_radii * templates_.extent.radius;
+  std::vector<Se3> kept_poses;
+  size_t kept = 0;
+  for (const TemplateMatch& m : matches_) {
+    const Se3 pose = pose_of_match(templates_, m, params_.spread);
+    const Vec3 centre = pose * templates_.extent.centre;
+    bool near = false;
+    for (const Se3& other : kept_poses) {
+      // cos(angle / 2) of the relative rotation is its quaternion's w: sqrt(1 + trace) / 2.
+      const Mat33 relative = other.rotation().transpose() * pose.rotation();
+      const real trace = relative.m[0][0] + relative.m[1][1] + relative.m[2][2];
+      const real w2 = (real(1) + trace) / real(4);
+      near = near || (w2 >= cos_half * cos_half && norm(other * templates_.extent.centre - centre) <= reach);
+    }
+    if (near) continue;
+    kept_poses.push_back(pose);
+    matches_[kept++] = m;
+  }
+  matches_.resize(kept);
+}
+
 std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
   if (static_cast<int>(matches_.size()) <= params_.refined_candidates) return matches_;
   std::vector<RefinedCandidate> screened;
@@ -175,7 +224,7 @@ std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
     RefinedCandidate c;
     c.match = m;
     c.camera_from_model = pose_of_match(templates_, m, params_.spread);
-    if (!run_frames(tracker_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
+    if (!run_frames(screen_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
     screened.push_back(c);
   }
   // Stable: among equals the better match first.
@@ -193,8 +242,13 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
     return *refused;
   Detection detection;
+  points_searched_ = 0;
   match(frame);
-  for (const TemplateMatch& m : screen(frame)) detection.refined.push_back(refine(frame, m));
+  // The trackers read the grey image matching made, in place: no frame is converted again.
+  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+                                      PixelLayout::kGrey8);
+  for (const TemplateMatch& m : screen(grey)) detection.refined.push_back(refine(grey, m));
+  detection.points_searched = points_searched_;
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;

@@ -40,6 +40,49 @@ void sum_runs(const std::vector<const uint32_t*>& runs, size_t count, uint32_t* 
   }
 }
 
+struct BestPosition {
+  int score = -1;  ///< -1: no position reaches the least score asked for
+  size_t index = 0;
+};
+
+/// The first highest score of bytes[0, span) at a valid position (index % gw < valid_w), among
+/// those reaching `least`; every score is at most `most`. Where most - least < 128 and least
+/// <= 128, a word whose four scores all stay under `least` is passed over with one add and one
+/// test: adding 128 - least to each byte sets its top bit exactly when it reaches `least`, and
+/// no byte carries into the next. Most words of most templates are passed over so.
+BestPosition best_position(const uint8_t* bytes, size_t span, int gw, int valid_w, int least, int most) {
+  BestPosition best;
+  auto consider = [&](size_t k) {
+    if (bytes[k] >= least && bytes[k] > best.score && static_cast<int>(k % static_cast<size_t>(gw)) < valid_w) {
+      best.score = bytes[k];
+      best.index = k;
+    }
+  };
+  if (least > 128 || most - least > 127) {
+    for (size_t k = 0; k < span; ++k) consider(k);
+    return best;
+  }
+  const uint32_t lift = static_cast<uint32_t>(128 - least) * 0x01010101u;
+  const uint32_t* words = reinterpret_cast<const uint32_t*>(bytes);
+  for (size_t w = 0; w < (span + 3) / 4; ++w) {
+    if (((words[w] + lift) & 0x80808080u) == 0) continue;
+    for (size_t k = 4 * w; k < 4 * w + 4 && k < span; ++k) consider(k);
+  }
+  return best;
+}
+
+/// least[count]: the smallest score whose share of a template of `count` features reaches
+/// min_share, computed as the match's share is, so that passing over lower scores changes nothing.
+void least_scores(const real& min_share, int (&least)[64]) {
+  for (int count = 1; count < 64; ++count) {
+    const real full(kBestSimilarity * count);
+    int s = 0;
+    while (s <= kBestSimilarity * count && real(s) / full < min_share) ++s;
+    least[count] = s;
+  }
+  least[0] = 0;
+}
+
 bool better(const TemplateMatch& a, const TemplateMatch& b) {
   return a.share > b.share || (a.share == b.share && a.template_index < b.template_index);
 }
@@ -62,6 +105,8 @@ void match_templates(const TemplateSet& set, const ResponseMaps& maps, const Mat
   const int t = maps.step(), gw = maps.grid_width(), gh = maps.grid_height();
   scores.resize((static_cast<size_t>(gw) * gh + 3) / 4 + kRunPadWords);
   const uint8_t* score_bytes = reinterpret_cast<const uint8_t*>(scores.data());
+  int least[64];
+  least_scores(params.min_share, least);
   for (size_t index = 0; index < set.templates.size(); ++index) {
     const Template& tp = set.templates[index];
     const int valid_w = gw - (tp.width - 1) / t, valid_h = gh - (tp.height - 1) / t;
@@ -74,23 +119,15 @@ void match_templates(const TemplateSet& set, const ResponseMaps& maps, const Mat
       runs.push_back(maps.words(feature.bin, feature.x % t, feature.y % t, start));
     }
     sum_runs(runs, words, scores.data());
-    int best = -1, best_i = 0, best_j = 0;
-    for (int j = 0; j < valid_h; ++j) {
-      const uint8_t* row = &score_bytes[static_cast<size_t>(j) * gw];
-      for (int i = 0; i < valid_w; ++i) {
-        if (row[i] > best) {
-          best = row[i];
-          best_i = i;
-          best_j = j;
-        }
-      }
-    }
+    const BestPosition best =
+        best_position(score_bytes, span, gw, valid_w, least[tp.count], kBestSimilarity * tp.count);
+    if (best.score < 0) continue;
     TemplateMatch m;
     m.template_index = static_cast<int>(index);
-    m.x = best_i * t;
-    m.y = best_j * t;
-    m.score = best;
-    m.share = real(best) / real(kBestSimilarity * tp.count);
+    m.x = static_cast<int>(best.index % static_cast<size_t>(gw)) * t;
+    m.y = static_cast<int>(best.index / static_cast<size_t>(gw)) * t;
+    m.score = best.score;
+    m.share = real(best.score) / real(kBestSimilarity * tp.count);
     if (m.share >= params.min_share)
       keep_best(m, params.max_candidates, per_distance[static_cast<size_t>(tp.distance_index)]);
   }

@@ -24,28 +24,52 @@ struct DetectorParams {
   /// (downscaled pixels). 4 at half resolution tolerates 8 full-resolution pixels.
   int spread = 4;
   MatchParams matching;
-  /// Tracker frames run on the same image from each candidate, each starting afresh from the
-  /// last one's pose (Tracker::reset, so each searches twice the configured range):
+  /// Tracker frames run on the same image from each candidate, as a tracker on a still scene
+  /// (no velocity predicted; the first frame from the match's pose as a guess, each next one
+  /// from the last, with the contrasts and weights a tracked frame gives it):
   /// `refine_iterations` with the tracking settings' range; when that does not end in an
   /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
   /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
   /// template's), then `refine_iterations` with the tracking range. The better of the two wins
   /// and, when acceptable, settles with `fine_iterations` at `fine_range` (its pose taken, its
-  /// status not: a search that narrow finds edges near any pose): near the optimum a search as wide as
-  /// the tracking range's start (twice the range) reaches neighbouring edges (parallel inner
-  /// edges, background lines) that pull a single frame's pose away from it, which the next
-  /// frame of a sequence would correct and a lone frame does not.
+  /// status not: a search that narrow finds edges near any pose): near the optimum a search as
+  /// wide as the tracking range's start (twice the range) reaches neighbouring edges (parallel
+  /// inner edges, background lines) that pull a single frame's pose away from it.
   int refine_iterations = 6;
   int wide_iterations = 4;
   unsigned wide_range = 6;
   int fine_iterations = 3;
   unsigned fine_range = 2;
+  /// A run stops before its last frame once a tracked frame moved no control point farther
+  /// along its normal than this (pixels): the pose has settled, and the next frame on the same
+  /// image would start where this one ended.
+  real settled_px = real(0.25);
+  /// Control points of the refining runs every this many pixels along the edges: one image has
+  /// to fix all six degrees of freedom, and an inner edge the light leaves faint holds only a
+  /// few points at the tracking step (10), too few to hold the pose against the outline's slack.
+  real refine_sample_step = real(5);
+  /// The screening only ranks the matches by the control points they keep, which a third of
+  /// the tracking step's points do as well.
+  real screen_sample_step = real(15);
+  /// Robust rounds per frame (PoseParams::robust_rounds) of the refining and screening runs:
+  /// a run's next frame starts its first solve weighted at this one's pose, so the frames carry
+  /// the re-weighting on and each needs fewer rounds than a tracked sequence's frame.
+  int refine_robust_rounds = 2;
+  int screen_robust_rounds = 1;
   /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
   /// frames at the tracking range, and only the `refined_candidates` keeping the most control
   /// points are refined in full (from their match again): the screen's frames already part
   /// the matches that are near the object from the rest, at a fraction of the full cost.
   int screen_iterations = 3;
   int refined_candidates = 4;
+  /// Before screening, a match whose pose is within `suppress_deg` of rotation and
+  /// `suppress_radii` model radii of centre of a better one's is dropped (non-maximum
+  /// suppression over the pose): neighbouring templates matching the same place refine to the
+  /// same pose, and screening each costs frames that a different candidate could use. 16 degrees
+  /// is a step of the sphere's directions at 2 subdivisions; a quarter of the radius is about the
+  /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
+  real suppress_deg = real(16);
+  real suppress_radii = real(0.25);
   /// Found: the last refining frame is tracked and the robust solve kept at least this share of
   /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
   /// few-matched rule); a right one most.
@@ -78,6 +102,9 @@ struct Detection {
   real match_share{0};    ///< the winner's template score share
   int template_index = -1;
   std::vector<RefinedCandidate> refined;  ///< every candidate refined, in the order tried
+  /// Control points of every screening and refining frame: a detection's guest cost past the
+  /// matching is about proportional to it (docs/results/detection.md).
+  int points_searched = 0;
 };
 
 class Detector {
@@ -96,23 +123,28 @@ class Detector {
   const DetectorParams& params() const { return params_; }
 
  private:
-  Detector(TemplateSet templates, const DetectorParams& params, Tracker wide, Tracker tracker, Tracker fine);
+  Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
+           Tracker fine);
   /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
   void match(const FrameView& frame);
   /// The trackers run from one match's pose.
   RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
+  /// matches_ without the ones near a better one's pose (DetectorParams::suppress_deg).
+  void suppress_neighbours();
   /// The matches worth refining in full, best first (all of them when few).
   std::vector<TemplateMatch> screen(const FrameView& frame);
   /// candidate.support from `tracker`'s last control points.
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
-  /// `iterations` frames of `tracker` from candidate.camera_from_model; false when lost twice in a row.
+  /// Up to `iterations` frames of `tracker` from candidate.camera_from_model (a guess), each from
+  /// the last; false when lost twice in a row.
   bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate);
 
   TemplateSet templates_;
   DetectorParams params_;
-  Tracker wide_;  ///< the tracking settings with the range widened
-  Tracker tracker_;
-  Tracker fine_;  ///< the tracking settings with the range narrowed
+  Tracker screen_;   ///< the tracking settings, on a still scene
+  Tracker wide_;     ///< refining: the range widened
+  Tracker tracker_;  ///< refining: the tracking range
+  Tracker fine_;     ///< refining: the range narrowed
   vpImage<unsigned char> grey_;
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;
@@ -123,6 +155,7 @@ class Detector {
   std::vector<const uint32_t*> runs_;
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
+  int points_searched_ = 0;  ///< this detection's, so far
 };
 
 /// Checks the detector's parameters; an Error names the first one out of its range.
