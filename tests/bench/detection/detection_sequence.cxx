@@ -218,7 +218,7 @@ double corner_difference(const EdgeModel& model, const PinholeCamera& camera, co
 int corners_main(int argc, char** argv) {
   if (argc != 7) return usage();
   const Result<EdgeModel> model = load_model(argv[2]);
-  const auto camera = edgetrack_app::read_camera(argv[3], 0, 0);
+  const auto camera = edgetrack_app::read_camera(argv[3], 1, 1);  // the image size plays no part here
   auto a = read_rows(argv[5]), b = read_rows(argv[6]);
   for (const Error* bad : {&model.error(), &camera.error(), &a.error(), &b.error()})
     if (!bad->message.empty()) return std::fprintf(stderr, "%s\n", bad->text().c_str()), 1;

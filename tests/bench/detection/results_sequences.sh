@@ -54,6 +54,7 @@ sequence_row() {
   local rows=$frames
   [ "$kind" = fast ] && rows=$((fast_speed * (frames - 1) + 1))
   "$helper" trajectory "$model" "$shape" "$seed" "$rows" "$work/trajectory.csv" >"$work/trajectory.txt"
+  rm -rf "$work/seq"  # the frames of a longer sequence before would follow this one's
   "$edgetrack" synth --out "$work/seq" --model "$models/$model.cao" --trajectory "$work/trajectory.csv" \
     --frames "$frames" --seed "$seed" "${synth_args[@]}" >"$work/synth.txt"
   if [ "$kind" = leave ]; then

@@ -26,8 +26,12 @@ Result<FrameResult> AutoInitTracker::track(const FrameView& frame) {
   Result<FrameResult> own = tracker_.track(frame);
   if (!own.ok()) return own;
   const TrackingStatus status = own.value().status;
-  if (status == TrackingStatus::kTracked) confirmed_ = true;
-  if (status == TrackingStatus::kTracked || (status == TrackingStatus::kUncertain && confirmed_)) return own;
+  if (status == TrackingStatus::kTracked) {
+    confirmed_ = true;
+    doubted_ = 0;
+    return own;
+  }
+  if (status == TrackingStatus::kUncertain && confirmed_ && ++doubted_ % kDoubtFrames != 0) return own;
   return detect(frame, &own.value());
 }
 
@@ -46,6 +50,7 @@ Result<FrameResult> AutoInitTracker::detect(const FrameView& frame, const FrameR
   }
   has_pose_ = true;
   confirmed_ = false;
+  doubted_ = 0;
   Result<FrameResult> result = tracker_.track(frame);
   if (result.ok() && result.value().status != TrackingStatus::kLost) {
     result.value().status = TrackingStatus::kUncertain;

@@ -19,14 +19,17 @@ class AutoInitTracker {
 
   /// Tracks the frame (any layout, frame_view.h) and detects on it, in this order:
   /// - With no pose found yet: detects only.
-  /// - Else the tracker goes first, from its prediction. Its tracked frame confirms the pose; its
-  ///   uncertain frame stands once a frame confirmed the pose (the tracker's own doubt, which it
-  ///   recovers from or loses); its lost frame, or an uncertain one before any confirmation, is
-  ///   detected on at once, so every such frame gets a detection.
+  /// - Else the tracker goes first, from its prediction. Its tracked frame confirms the pose. Its
+  ///   lost frame, or an uncertain one before any confirmation, is detected on at once, so every
+  ///   such frame gets a detection. Its uncertain frame after a confirmation stands (the
+  ///   tracker's own doubt, which it recovers from or loses), except every kDoubtFrames-th one in
+  ///   a row: a pose doubted that long is mostly held in a wrong minimum beside the object, which
+  ///   no further frame corrects, and the detection is the way out.
   /// A detection the tracker then tracks on the frame is reported uncertain (kUnconfirmed): the
   /// detector refined its pose on this very image, so only the next frames, tracked from it,
-  /// say it is right. One it does not find: the tracker's own frame, or a lost one (kNotDetected)
-  /// carrying the last pose when there was none. An Error when check_frame refuses the frame.
+  /// say it is right. One it does not find leaves the tracker as it was: the tracker's own frame,
+  /// or a lost one (kNotDetected) carrying the last pose when there was none. An Error when
+  /// check_frame refuses the frame.
   Result<FrameResult> track(const FrameView& frame);
 
   /// Whether the detector ran on the last frame, and found the model there.
@@ -35,6 +38,12 @@ class AutoInitTracker {
   /// Whether a tracked frame has followed the last detection.
   bool confirmed() const { return confirmed_; }
   Tracker& tracker() { return tracker_; }
+
+  /// Uncertain frames in a row, after a confirmation, between detections: a handful of frames
+  /// (a sixth of a second at 30 Hz) lets the tracker's own recovery outlast a passing cause (fast
+  /// motion, a hand across the object), and a detection on a device without an FPU costs about
+  /// a hundred tracked frames (docs/results/detection.md), which one in five bounds.
+  static constexpr int kDoubtFrames = 5;
 
  private:
   AutoInitTracker(Detector detector, Tracker tracker) : detector_(std::move(detector)), tracker_(std::move(tracker)) {}
@@ -46,6 +55,7 @@ class AutoInitTracker {
   Tracker tracker_;
   bool has_pose_ = false;   ///< the detector found the model once
   bool confirmed_ = false;  ///< a frame was tracked since the last detection
+  int doubted_ = 0;         ///< uncertain frames in a row since the last tracked frame or detection
   bool detected_ = false;
   bool found_ = false;
 };
