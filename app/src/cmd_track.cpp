@@ -391,9 +391,12 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
     if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
     const edgetrack::FrameResult& r = result.value();
     count(r, totals);
-    if (in.auto_tracker && in.auto_tracker->detected())
+    if (in.auto_tracker && in.auto_tracker->detected()) {
       count_detection(in.frame.index, *in.auto_tracker, std::chrono::steady_clock::now() - frame_start, request.progress,
                       totals);
+      // The cone goes on the face on top at the first found pose (the placeholder's is anywhere).
+      if (in.auto_tracker->found() && totals.found == 1) out.cone = cone_on_top_face(in.model, r.camera_from_model);
+    }
     if (request.progress && r.status != edgetrack::TrackingStatus::kTracked) print_status(in.frame.index, r);
     auto written = write_frame(in.frame.index, tracked, r, in, out);
     if (!written.ok()) return report("track", written.error());
