@@ -84,6 +84,7 @@ struct SynthOptions {
   std::string out, model_path, trajectory;
   PinholeCamera camera;
   int frames = 60, supersample = 4, seed = 1;
+  int hide_first = -1, hide_last = -1;  ///< --hide: frames the board covers the whole object on
   double speed = 1, noise = 2, blur = 0.6, cover = 0, clutter_mm = 0;
   bool occluder = false, rgb565 = false, pgm = false;
 };
@@ -117,6 +118,12 @@ Result<SynthOptions> read_options(const Args& a) {
   if (o.cover < 0 || o.cover >= 1) return Error{"", 0, "--cover must be a share in [0, 1)"};
   if (o.clutter_mm < 0 || o.clutter_mm > 50) return Error{"", 0, "--clutter must be 0..50 mm"};
   if (o.supersample < 1 || o.supersample > 8) return Error{"", 0, "--supersample must be 1..8"};
+  if (a.has("--hide")) {
+    char end = 0;
+    if (std::sscanf(a.text("--hide").c_str(), "%d:%d%c", &o.hide_first, &o.hide_last, &end) != 2 ||
+        o.hide_first < 0 || o.hide_last < o.hide_first)
+      return Error{"", 0, "--hide '" + a.text("--hide") + "': expected FIRST:LAST frame numbers, 0 <= FIRST <= LAST"};
+  }
   // The paper's cube at 150 mm shows about 60 control points with this QVGA camera (72 degrees wide).
   o.camera = PinholeCamera{real(220), real(220), real(160), real(120), 320, 240};
   if (a.has("--camera")) {
@@ -180,10 +187,17 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
     const Se3& pose = poses[static_cast<size_t>(k)];
     // The occluder sweeps from left to right across the middle third of the sequence.
     extras.occluder_x = -0.03 + 0.06 * (k - o.frames / 3.0) / (o.frames / 3.0);
-    if (o.cover > 0) {
+    const bool hidden = k >= o.hide_first && k <= o.hide_last;
+    extras.band = {};
+    if (o.cover > 0 || hidden) {
       edgetrack::silhouette_columns(m, o.camera, pose, mask, columns);
-      extras.band = edgetrack::occluder_band(columns, edgetrack::sweeping_centre(columns, k, o.frames), real(o.cover));
-      covered.add(static_cast<double>(extras.band.covered_share));
+      const int centre = edgetrack::sweeping_centre(columns, k, o.frames);
+      extras.band = edgetrack::occluder_band(columns, centre, hidden ? real(1) : real(o.cover));
+      if (hidden && extras.band.x_end > extras.band.x_begin) {  // past the outline's anti-aliased columns
+        extras.band.x_begin = std::max(0, extras.band.x_begin - 2);
+        extras.band.x_end = std::min(o.camera.width, extras.band.x_end + 2);
+      }
+      if (o.cover > 0) covered.add(static_cast<double>(extras.band.covered_share));
     }
     RgbImage image = renderer.value()->render_scene(m, pose, extras);
     degrade(image, o.noise, o.blur, static_cast<uint64_t>(o.seed) * 7919u + static_cast<uint64_t>(k));
@@ -208,7 +222,7 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
 int synth_main(int argc, char** argv) {
   const std::string synopsis =
       "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--clutter MM] [--rgb565 | --pgm]";
+      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--hide FIRST:LAST] [--clutter MM] [--rgb565 | --pgm]";
   const std::vector<OptionSpec> specs = {
       {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
       {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
@@ -221,6 +235,7 @@ int synth_main(int argc, char** argv) {
       {"--blur", true, "Gaussian blur, pixels sigma (default 0.6)"},
       {"--occluder", false, "a dark bar crossing the view in front of the model"},
       {"--cover", true, "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping across it"},
+      {"--hide", true, "FIRST:LAST: on these frames the board covers the whole object (it leaves the view and comes back)"},
       {"--clutter", true, "dark lines parallel to every model edge, this many mm beside it, away from the model's centre"},
       {"--rgb565", false, "write raw RGB565 frames (.rgb565) instead of PPM"},
       {"--pgm", false, "write 8-bit grey PGM frames (.pgm, the luma of vpImageConvert's rule) instead of PPM"},

@@ -48,6 +48,9 @@ struct RunTotals {
   int64_t step_ns[edgetrack::kStepCount] = {0, 0, 0, 0};
   int64_t points_matched = 0;
   int64_t points_sampled = 0;
+  int detections = 0;        ///< --init-auto: frames the detector ran on
+  int found = 0;             ///< of those, the frames it found the model on
+  int64_t detection_ns = 0;  ///< those frames' whole time, their tracking included
 };
 
 void print_table1(const RunTotals& totals) {
@@ -68,6 +71,13 @@ void print_table1(const RunTotals& totals) {
   for (int r = 1; r < edgetrack::kStatusReasonCount; ++r)
     if (totals.reasons[r] > 0)
       std::printf("  %d frames: %s\n", totals.reasons[r], edgetrack::reason_name(static_cast<edgetrack::StatusReason>(r)));
+}
+
+/// --init-auto: how often the detector ran and found the model, and what those frames cost
+/// (not in Table 1, whose steps are the tracker's).
+void print_detections(const RunTotals& totals) {
+  std::printf("detection: ran on %d frames, found the model on %d, %.1f ms per detection frame (its tracking included)\n",
+              totals.detections, totals.found, totals.detections > 0 ? totals.detection_ns / 1e6 / totals.detections : 0.0);
 }
 
 /// One stderr line for a frame the tracker did not report tracked: its status, the reason and
@@ -343,6 +353,15 @@ Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const e
   return true;
 }
 
+/// Adds a frame the detector ran on to the totals and, with progress lines, says what it found.
+void count_detection(int index, const edgetrack::AutoInitTracker& tracker, std::chrono::steady_clock::duration spent,
+                     bool progress, RunTotals& totals) {
+  ++totals.detections;
+  totals.found += tracker.found() ? 1 : 0;
+  totals.detection_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(spent).count();
+  if (progress) std::fprintf(stderr, "frame %d detection: %s\n", index, tracker.found() ? "found" : "not found");
+}
+
 /// The progress line: on a terminal after every frame, else every 50 frames.
 void print_progress(int index, edgetrack::TrackingStatus status, const RunTotals& totals, double seconds) {
   const bool terminal = isatty(2) != 0;
@@ -365,12 +384,19 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
                                   std::to_string(in.full_height)});
     RgbImage small;
     const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
+    const auto frame_start = std::chrono::steady_clock::now();
     edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app)
     auto result = in.auto_tracker ? in.auto_tracker->track(tracked) : in.tracker->track(tracked);
     edgetrack_count_end();
     if (!result.ok()) return report("track", {in.frame.name, 0, result.error().message});
     const edgetrack::FrameResult& r = result.value();
     count(r, totals);
+    if (in.auto_tracker && in.auto_tracker->detected()) {
+      count_detection(in.frame.index, *in.auto_tracker, std::chrono::steady_clock::now() - frame_start, request.progress,
+                      totals);
+      // The cone goes on the face on top at the first found pose (the placeholder's is anywhere).
+      if (in.auto_tracker->found() && totals.found == 1) out.cone = cone_on_top_face(in.model, r.camera_from_model);
+    }
     if (request.progress && r.status != edgetrack::TrackingStatus::kTracked) print_status(in.frame.index, r);
     auto written = write_frame(in.frame.index, tracked, r, in, out);
     if (!written.ok()) return report("track", written.error());
@@ -413,6 +439,7 @@ int track_main(int argc, char** argv) {
   if (auto stop = close_outputs(outputs)) return *stop;
   print_notes(inputs.notes);  // after a run that went through: an error stays one line
   print_table1(totals);
+  if (inputs.auto_tracker) print_detections(totals);
   return 0;
 }
 

@@ -225,8 +225,10 @@ RgbImage GlRenderer::render_scene(const EdgeModel& model, const Se3& camera_from
 }
 
 void GlRenderer::draw_band(const edgetrack::OccluderBand& band) {
-  // A flat dark board 100 mm in front of the camera whose edges fall on the band's pixel borders.
+  // A flat dark board 100 mm in front of the camera whose edges fall on the band's pixel borders,
+  // drawn over everything (a model nearer than 100 mm too, as the band promises).
   glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
   glLoadIdentity();
   glColor3f(0.2f, 0.18f, 0.16f);
   const double z = 0.1, px = static_cast<double>(camera_.px), u0 = static_cast<double>(camera_.u0);
@@ -237,6 +239,7 @@ void GlRenderer::draw_band(const edgetrack::OccluderBand& band) {
   glVertex3d(x1, 1, z);
   glVertex3d(x0, 1, z);
   glEnd();
+  glEnable(GL_DEPTH_TEST);
 }
 
 RgbImage GlRenderer::render_overlay(const RgbImage& frame, const EdgeModel& model, const Se3& camera_from_model,

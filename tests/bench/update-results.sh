@@ -1,23 +1,32 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Regenerates docs/RESULTS.md: runs each tests/bench/<part>/results.sh (or only the parts named
-# on the command line, or none with --join), each of which writes docs/results/<part>.md, then
-# joins the sections.
+# Regenerates docs/RESULTS.md: runs each part (or only the parts named on the command line, or
+# none with --join), each of which writes docs/results/<part>.md, then joins the sections. Part
+# <dir> is tests/bench/<dir>/results.sh; part <dir>_<name> is tests/bench/<dir>/results_<name>.sh
+# (a second table of the same benchmark, e.g. detection_sequences).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 mkdir -p "$top/docs/results" "$top/build"
 "$top/toolchains/install-deps.sh"
 
+# part_of SCRIPT: the part a script produces.
+part_of() {
+  local dir name
+  dir=$(basename "$(dirname "$1")") name=$(basename "$1" .sh)
+  [ "$name" = results ] && echo "$dir" || echo "${dir}_${name#results_}"
+}
+scripts=("$top"/tests/bench/*/results.sh "$top"/tests/bench/*/results_*.sh)
 # --join: only join the sections already in docs/results/ (after a part was run by hand,
 # e.g. a fuzzing campaign, tests/fuzz/run.sh).
 parts=("$@")
 if [ "${parts[0]:-}" = "--join" ]; then
   parts=()
 elif [ ${#parts[@]} -eq 0 ]; then
-  for script in "$top"/tests/bench/*/results.sh; do parts+=("$(basename "$(dirname "$script")")"); done
+  for script in "${scripts[@]}"; do [ -e "$script" ] && parts+=("$(part_of "$script")"); done
 fi
 for part in "${parts[@]}"; do
   script="$top/tests/bench/$part/results.sh"
+  for candidate in "${scripts[@]}"; do [ "$(part_of "$candidate")" = "$part" ] && script=$candidate; done
   [ -x "$script" ] || { echo "update-results: no executable $script" >&2; exit 1; }
   echo "update-results: $part"
   "$script" >"$top/docs/results/$part.md.new"

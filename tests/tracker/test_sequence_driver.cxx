@@ -18,6 +18,7 @@ DECLARE(test_hypotheses);
 DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
+DECLARE(test_auto_init_recovery);
 DECLARE(test_back_and_forth);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
@@ -39,6 +40,7 @@ void register_tests() {
   REGISTER(test_frame_layouts);
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);
+  REGISTER(test_auto_init_recovery);
   REGISTER(test_back_and_forth);
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);

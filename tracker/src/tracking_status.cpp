@@ -26,6 +26,8 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kNotReacquired: return "not found again after a loss";
     case StatusReason::kLargeCorrection: return "pose moved farther than the search range";
     case StatusReason::kSaturated: return "fixed-point saturation";
+    case StatusReason::kNotDetected: return "not found by the detector";
+    case StatusReason::kUnconfirmed: return "detected, not yet confirmed by a tracked frame";
   }
   return "?";
 }

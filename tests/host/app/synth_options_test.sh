@@ -56,5 +56,7 @@ case $name in
     expect_error "--cover must be a share" "$edgetrack" synth --out "$work/seq" --cover 1.5 ;;
   error_synth_bad_speed)
     expect_error "--speed must be 1..16" "$edgetrack" synth --out "$work/seq" --speed 0.5 ;;
+  error_synth_bad_hide)
+    expect_error "--hide '9:3': expected FIRST:LAST" "$edgetrack" synth --out "$work/seq" --hide 9:3 ;;
   *) fail "unknown case" ;;
 esac

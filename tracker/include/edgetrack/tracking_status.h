@@ -23,9 +23,11 @@ enum class StatusReason {
   kLooseFit,          ///< uncertain: the robust residual scale is above a tracked frame's
   kNotReacquired,     ///< lost: after a lost frame, only a frame that would be tracked counts as found again
   kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
-  kSaturated          ///< uncertain: fixed-point results saturated during the frame
+  kSaturated,         ///< uncertain: fixed-point results saturated during the frame
+  kNotDetected,       ///< lost: the detector ran and did not find the model (AutoInitTracker)
+  kUnconfirmed        ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kSaturated) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kUnconfirmed) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Detection on the first frame and after each lost one, tracking in between.
+/// Detection on the first frame and on each frame the tracker does not hold, tracking in between.
 #include "edgetrack/detector/auto_init_tracker.h"
 
 #include <utility>
@@ -20,22 +20,42 @@ Result<AutoInitTracker> AutoInitTracker::create(const EdgeModel& model, const Pi
 }
 
 Result<FrameResult> AutoInitTracker::track(const FrameView& frame) {
-  detected_ = detect_next_;
+  detected_ = false;
   found_ = false;
-  if (detect_next_) {
-    const Result<Detection> detection = detector_.detect(frame);
-    if (!detection.ok()) return detection.error();
-    found_ = detection.value().found && tracker_.reset(detection.value().camera_from_model);
-    if (!found_) {
-      FrameResult lost;
-      lost.camera_from_model = tracker_.camera_from_model();
-      lost.status = TrackingStatus::kLost;
-      lost.reason = StatusReason::kPoseFailed;
-      return lost;
-    }
+  if (!has_pose_) return detect(frame, nullptr);
+  Result<FrameResult> own = tracker_.track(frame);
+  if (!own.ok()) return own;
+  const TrackingStatus status = own.value().status;
+  if (status == TrackingStatus::kTracked) {
+    confirmed_ = true;
+    doubted_ = 0;
+    return own;
   }
+  if (status == TrackingStatus::kUncertain && confirmed_ && ++doubted_ % kDoubtFrames != 0) return own;
+  return detect(frame, &own.value());
+}
+
+Result<FrameResult> AutoInitTracker::detect(const FrameView& frame, const FrameResult* own) {
+  detected_ = true;
+  const Result<Detection> detection = detector_.detect(frame);
+  if (!detection.ok()) return detection.error();
+  found_ = detection.value().found && tracker_.reset(detection.value().camera_from_model);
+  if (!found_) {
+    if (own) return *own;
+    FrameResult lost;
+    lost.camera_from_model = tracker_.camera_from_model();
+    lost.status = TrackingStatus::kLost;
+    lost.reason = StatusReason::kNotDetected;
+    return lost;
+  }
+  has_pose_ = true;
+  confirmed_ = false;
+  doubted_ = 0;
   Result<FrameResult> result = tracker_.track(frame);
-  if (result.ok()) detect_next_ = result.value().status == TrackingStatus::kLost;
+  if (result.ok() && result.value().status != TrackingStatus::kLost) {
+    result.value().status = TrackingStatus::kUncertain;
+    result.value().reason = StatusReason::kUnconfirmed;
+  }
   return result;
 }
 
