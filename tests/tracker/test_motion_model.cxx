@@ -64,12 +64,15 @@ static void test_motion_model() {
   slow.trust(at_x(0.001), model, camera, range);
   TEST_NEAR("1.5 px per frame, within the range: no prediction", x_of(slow.prediction()), 0.001, tolerance(1e-6, 1));
   TEST_EQUAL("and the range as configured", slow.search_range(range), range);
+  TEST("the prediction is the trusted pose: no other start to retry from", slow.predicts_motion(), false);
+  TEST("a fast one predicts motion", fast.predicts_motion(), true);
 
   fast.lose(model, camera);
   TEST_NEAR("a lost frame moves on by 0.8 of the velocity", x_of(fast.prediction()), 0.028, tolerance(1e-5, 2));
   TEST_EQUAL("a lost frame doubles the search", fast.search_range(range) >= 2 * range, true);
   TEST("and says so", fast.lost_last_frame(), true);
   TEST_NEAR("the retry still starts from the last trusted pose", x_of(fast.trusted()), 0.010, tolerance(1e-6, 1));
+  TEST("which the prediction has left", fast.predicts_motion(), true);
   fast.lose(model, camera);
   TEST_NEAR("the next by 0.64", x_of(fast.prediction()), 0.0344, tolerance(1e-5, 3));
   fast.trust(at_x(0.040), model, camera, range);

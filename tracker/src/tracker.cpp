@@ -121,9 +121,13 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   const bool guessing = motion_.lost_last_frame() || (!started_ && start_is_guess_);
   faces_before_ = face_visibility_;
   attempt(frame, camera_from_model_, motion_.search_range(params_.me.getRange()), guessing, result);
-  if (result.status != TrackingStatus::kTracked && params_.motion.retry_from_trusted) {
-    // The last trusted pose is no guess once a frame was trusted, and where its contrasts were
-    // taken; the edges may be a frame's motion from it, so the first solve is not weighed there.
+  // A lost frame, or an uncertain one that started from a pose the velocity moved on: the last
+  // trusted pose at rest is another start. (From the trusted pose itself, a wider search on
+  // clutter only finds more of it.) It is no guess once a frame was trusted: its contrasts were
+  // taken there, and the first solve's weights at it widen with the median distance.
+  const bool another_start = result.status == TrackingStatus::kLost ||
+                             (result.status == TrackingStatus::kUncertain && motion_.predicts_motion());
+  if (another_start && params_.motion.retry_from_trusted) {
     FrameResult retry;
     carry_costs(result, retry);
     face_visibility_ = faces_before_;

@@ -51,6 +51,9 @@ class MotionModel {
   const Se3& prediction() const { return prediction_; }
   /// The last trusted pose (the start pose before any frame is trusted).
   const Se3& trusted() const { return trusted_; }
+  /// True when the prediction is not the last trusted pose: the velocity moved it on, or
+  /// frames were lost since.
+  bool predicts_motion() const { return frames_since_trusted_ > 1 || next_share_ > real(0); }
   /// A trusted frame's pose: measures the velocity from the last trusted pose and predicts the
   /// next frame. The velocity is not applied while its image motion per frame is within the
   /// configured `range`, in full from twice the range on, and in proportion in between: the
