@@ -153,8 +153,12 @@ void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, 
   sample_control_points(model_, camera_, start, sampling_, sampled_);
   face_visibility_.keep_tracked(sampled_);
   keep_visible(sampled_, edge_ids_, visible_);
-  if (guessing) references_.assign(visible_.size(), real(0));
-  else contrast_memory_.references(visible_, camera_, start, sampling_.step, references_);
+  if (guessing) {
+    references_.assign(visible_.size(), real(0));
+    borrowed_.assign(visible_.size(), 0);
+  } else {
+    contrast_memory_.references(visible_, camera_, start, sampling_.step, references_, borrowed_);
+  }
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
@@ -166,7 +170,7 @@ void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, 
   begin(Step::kMovingEdges);
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
-  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_);
+  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_, &borrowed_);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);

@@ -180,6 +180,7 @@ class Tracker {
   PoseWorkspace pose_workspace_;
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
+  std::vector<unsigned char> borrowed_;  ///< per visible point, nonzero: its reference is its primitive's
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
 };
