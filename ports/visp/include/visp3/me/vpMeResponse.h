@@ -44,10 +44,18 @@ class vpMeResponse {
   /// sign * sum of weight * pixel over the window centred at (i, j); 0 when outside(i, j).
   int at(int i, int j) const {
     if (outside(i, j)) return 0;
+#if defined(__SSE2__)
+    // Only the vector path inlined: the others' registers would weigh on every caller's loop.
+    if (padded_ && size_ == 5) return sign_ * padded_sum<5>(i - half_, j - half_);
+    return sign_ * other_sum(i - half_, j - half_);
+#else
     return sign_ * sum(i - half_, j - half_);
+#endif
   }
 
  private:
+  [[gnu::noinline]] int other_sum(int i0, int j0) const { return sum(i0, j0); }
+
   /// Sum of weight * pixel over the window whose top-left pixel is (i0, j0).
   int sum(int i0, int j0) const {
     if (size_ == 5) {
