@@ -83,7 +83,7 @@ echo "\`edgetrack compare --repeat $repeat\`: ViSP 3.5's vpMbGenericTracker (edg
 echo "(ViSP: loadConfigFile; ours: its <camera>, <ecm> and <face>) and the same .cao, start from the"
 echo "same pose, and alternate frame by frame on the same decoded frames; times are the median ms of"
 echo "the tracking call alone (ViSP's track(), ours Tracker::track, which includes grey scaling of"
-echo "colour frames; ViSP is given them grey). \"ViSP's settings\": mbt/cube's own cube.xml (step 4 px,"
+echo "colour frames; ViSP's worker converts them to grey before track(), untimed). \"ViSP's settings\": mbt/cube's own cube.xml (step 4 px,"
 echo "range 7, threshold 5000; at QVGA, \`--downscale 2\`, both halved for both trackers), and its <ecm>"
 echo "with the generated sequences' camera. \"paper's\": step 10 px, range 4 px, threshold 1500 at the"
 echo "tracked size (ours' defaults). Generated sequences: \`edgetrack synth\` (QVGA, 60 frames, the paper's"
