@@ -88,9 +88,9 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
     if (!got.value()) break;
     if (frame.pixels.width != setup.camera.width * setup.factor || frame.pixels.height != setup.camera.height * setup.factor)
       return Error{frame.name, 0, "image size does not match the first frame's"};
-    RgbImage small;
+    FramePixels small;
     const edgetrack::FrameView view = tracked_frame(frame.pixels, setup.factor, small);
-    const RgbImage image = setup.factor > 1 ? small : to_rgb_image(view);
+    const RgbImage image = to_rgb_image(view);
     VispFrameReply reply;
     for (int turn = 0; turn < 2; ++turn) {
       if ((turn + k) % 2 == 0) {

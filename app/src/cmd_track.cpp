@@ -379,7 +379,7 @@ void print_progress(int index, edgetrack::TrackingStatus status, const RunTotals
                totals.frames / (seconds > 0 ? seconds : 1), terminal ? "   " : "\n");
 }
 
-/// Step 4: every frame, in the layout its file holds (downscaled frames as RGB24), tracked,
+/// Step 4: every frame, in the layout its file holds (downscaled: grey8 or RGB24), tracked,
 /// written and drawn.
 std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, TrackOutputs& out, RunTotals& totals) {
   const auto start = std::chrono::steady_clock::now();
@@ -390,7 +390,7 @@ std::optional<int> run_frames(const TrackRequest& request, TrackInputs& in, Trac
                               "image size " + std::to_string(pixels.width) + "x" + std::to_string(pixels.height) +
                                   " does not match the camera's " + std::to_string(in.full_width) + "x" +
                                   std::to_string(in.full_height)});
-    RgbImage small;
+    FramePixels small;
     const edgetrack::FrameView tracked = tracked_frame(pixels, request.factor, small);
     const auto frame_start = std::chrono::steady_clock::now();
     edgetrack_count_begin();  // the tracker's own share of the frame (QEMU counter, tests/bench/app)

@@ -22,10 +22,22 @@ void downscale_settings(edgetrack::TrackerParams& params, int factor) {
   params.faces.min_polygon_area = params.faces.min_polygon_area / (f * f);
 }
 
-edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, RgbImage& small) {
+edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, FramePixels& small) {
   if (factor <= 1) return pixels.view();
-  small = downscale(to_rgb_image(pixels.view()), factor);
-  return edgetrack::packed_frame(small.rgb.data(), small.width, small.height, edgetrack::PixelLayout::kRgb24);
+  const edgetrack::FrameView full = pixels.view();
+  small.width = full.width / factor;
+  small.height = full.height / factor;
+  small.offset = 0;
+  if (full.layout == edgetrack::PixelLayout::kGrey8) {
+    // Grey stays grey: the RGB24 way gives every channel these averages, which grey scaling
+    // turns back into the same values (the luma weights sum to 1).
+    small.layout = edgetrack::PixelLayout::kGrey8;
+    small.bytes.resize(static_cast<size_t>(small.width) * small.height);
+    average_blocks(full.row(0), full.width, full.height, 1, factor, small.bytes.data());
+  } else {
+    small = frame_pixels(downscale(to_rgb_image(full), factor));
+  }
+  return small.view();
 }
 
 }  // namespace edgetrack_app

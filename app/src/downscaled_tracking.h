@@ -19,7 +19,8 @@ edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int 
 void downscale_settings(edgetrack::TrackerParams& params, int factor);
 
 /// The frame the tracker reads: the read pixels themselves at factor 1, else the frame
-/// `factor` times smaller, as RGB24 in `small`, which the view points into.
-edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, RgbImage& small);
+/// `factor` times smaller in `small`, which the view points into: grey8 for a grey8 frame, else
+/// RGB24.
+edgetrack::FrameView tracked_frame(const FramePixels& pixels, int factor, FramePixels& small);
 
 }  // namespace edgetrack_app

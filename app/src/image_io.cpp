@@ -262,18 +262,24 @@ RgbImage from_rgb565(const std::vector<uint16_t>& pixels, int width, int height)
   return image;
 }
 
+void average_blocks(const uint8_t* in, int width, int height, int channels, int factor, uint8_t* out) {
+  const int out_width = width / factor, out_height = height / factor, n = factor * factor;
+  const size_t row = static_cast<size_t>(width) * channels;
+  for (int y = 0; y < out_height; ++y)
+    for (int x = 0; x < out_width; ++x)
+      for (int c = 0; c < channels; ++c) {
+        int sum = 0;
+        for (int dy = 0; dy < factor; ++dy)
+          for (int dx = 0; dx < factor; ++dx)
+            sum += in[(static_cast<size_t>(y) * factor + dy) * row + (static_cast<size_t>(x) * factor + dx) * channels + c];
+        out[(static_cast<size_t>(y) * out_width + x) * channels + c] = static_cast<uint8_t>((sum + n / 2) / n);
+      }
+}
+
 RgbImage downscale(const RgbImage& image, int factor) {
   if (factor <= 1) return image;
   RgbImage out = make_image(image.width / factor, image.height / factor);
-  const int n = factor * factor;
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        int sum = 0;
-        for (int dy = 0; dy < factor; ++dy)
-          for (int dx = 0; dx < factor; ++dx) sum += image.pixel(x * factor + dx, y * factor + dy)[c];
-        out.pixel(x, y)[c] = static_cast<uint8_t>((sum + n / 2) / n);
-      }
+  average_blocks(image.rgb.data(), image.width, image.height, 3, factor, out.rgb.data());
   return out;
 }
 

@@ -76,6 +76,9 @@ RgbImage from_rgb565(const std::vector<uint16_t>& pixels, int width, int height)
 
 /// Averages factor x factor blocks (the size is divided by factor, rounding down).
 RgbImage downscale(const RgbImage& image, int factor);
+/// The same block averages on `channels` interleaved 8-bit channels: width x height pixels at
+/// `in` (rows packed) to (width / factor) x (height / factor) at `out`.
+void average_blocks(const uint8_t* in, int width, int height, int channels, int factor, uint8_t* out);
 
 /// The lower-cased extension of a path, without the dot ("pgm"), or empty.
 std::string extension_of(const std::string& path);

@@ -17,6 +17,7 @@ DECLARE(test_cao_format);
 DECLARE(test_contours);
 DECLARE(test_input_checks);
 DECLARE(test_face_visibility);
+DECLARE(test_cylinder_windows);
 DECLARE(test_detector_core);
 DECLARE(test_template_files);
 
@@ -36,6 +37,7 @@ void register_tests() {
   REGISTER(test_contours);
   REGISTER(test_input_checks);
   REGISTER(test_face_visibility);
+  REGISTER(test_cylinder_windows);
   REGISTER(test_detector_core);
   REGISTER(test_template_files);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "edgetrack/contours.h"
+#include "edgetrack/cylinder_windows.h"
 #include "edgetrack/edge_id.h"
 #include "edgetrack/raster.h"
 
@@ -122,17 +123,81 @@ void EdgeIdBuffer::draw_surfaces(const EdgeModel& model, const Se3& camera_from_
         if (w > d) d = w;
       });
   }
-  for (const SurfaceTriangle& t : model.cylinder_surface) {
+  draw_cylinder_sides(model, camera_from_model);
+}
+
+void EdgeIdBuffer::draw_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model) {
+  const int width = camera_.width, height = camera_.height;
+  int32_t* depth = inverse_depth_.data();
+  int16_t* owner = surface_owner_.data();
+  // Where a cylinder's rim boxes apply (cylinder_windows.h), no facet is clipped: each projects to
+  // one triangle, whose signed area (as fill_triangle rounds it) says which way it faces.
+  const size_t cylinders = model.cylinders.size();
+  rim_boxes_.resize(cylinders);
+  for (size_t c = 0; c < cylinders; ++c) {
+    RimBoxes& r = rim_boxes_[c];
+    r.valid = cylinder_rim_boxes(model, static_cast<int>(c), camera_, camera_from_model, r.boxes);
+    r.front_sign = 0;
+    r.nearest_facing = real(0);
+  }
+  const Vec3 camera_centre = camera_centre_in_model(camera_from_model);
+  facets_.resize(model.cylinder_surface.size());
+  for (size_t k = 0; k < model.cylinder_surface.size(); ++k) {
+    const SurfaceTriangle& t = model.cylinder_surface[k];
+    ProjectedFacet& f = facets_[k];
     const Vec3 corners[3] = {camera_from_model * t.corners[0], camera_from_model * t.corners[1],
                              camera_from_model * t.corners[2]};
+    f.count = clip_and_project_triangle(camera_, corners, f.polygon);
+    RimBoxes& r = rim_boxes_[static_cast<size_t>(t.cylinder)];
+    if (!r.valid) continue;
+    const ScreenVertex &a = f.polygon[0], &b = f.polygon[1], &c = f.polygon[2];
+    const int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+    f.sign = area > 0 ? 1 : area < 0 ? -1 : 0;
+    // fill_triangle skips triangles under 16: a skipped front sliver would leave a hole in the
+    // front layer, so that cylinder's back facets are all filled this frame.
+    if (f.count != 3 || (area < 16 && area > -16)) r.valid = false;
+    const real facing = dot(t.normal, t.corners[0] - camera_centre);
+    if (facing < r.nearest_facing) {
+      r.nearest_facing = facing;
+      r.front_sign = f.sign;
+    }
+  }
+  // Each pixel off the rims is covered by as many front-oriented as back-oriented facets (the
+  // projected closed prism has degree 0, caps inside the rim boxes), so a back one never shows
+  // alone there, and a front one there is nearer.
+  for (size_t k = 0; k < model.cylinder_surface.size(); ++k) {
+    const SurfaceTriangle& t = model.cylinder_surface[k];
+    const ProjectedFacet& f = facets_[k];
+    const RimBoxes& r = rim_boxes_[static_cast<size_t>(t.cylinder)];
     const int16_t id = static_cast<int16_t>(t.cylinder + 1);
-    fill(corners, [depth, owner, width, id](int x, int y, int32_t w) {
+    auto plot = [depth, owner, width, id](int x, int y, int32_t w) {
       const size_t i = static_cast<size_t>(y) * width + x;
       if (w > depth[i]) {
         depth[i] = w;
         owner[i] = id;
       }
-    });
+    };
+    if (!r.valid || r.front_sign == 0 || f.sign == r.front_sign) {
+      for (int i = 1; i + 1 < f.count; ++i) {
+        int box[4];
+        if (fill_triangle(f.polygon[0], f.polygon[i], f.polygon[i + 1], width, height, plot, &box))
+          grow_dirty(box[0], box[1], box[2], box[3]);
+      }
+      continue;
+    }
+    // The same triangle moved by a whole number of pixels gives the same pixels and depths, so it
+    // is filled in a box-sized image at each box's origin.
+    for (const PixelRect& window : r.boxes) {
+      if (window.x0 > window.x1 || window.y0 > window.y1) continue;
+      ScreenVertex moved[3];
+      for (int i = 0; i < 3; ++i)
+        moved[i] = {f.polygon[i].x - (window.x0 << kSubpixelBits), f.polygon[i].y - (window.y0 << kSubpixelBits),
+                    f.polygon[i].w};
+      int box[4];
+      if (fill_triangle(moved[0], moved[1], moved[2], window.x1 - window.x0 + 1, window.y1 - window.y0 + 1,
+                        [&plot, &window](int x, int y, int32_t w) { plot(x + window.x0, y + window.y0, w); }, &box))
+        grow_dirty(box[0] + window.x0, box[1] + window.y0, box[2] + window.x0, box[3] + window.y0);
+    }
   }
 }
 

@@ -42,6 +42,36 @@ unsigned int convert_to_grey(const FrameView& frame, const PixelBox& box, vpImag
   return static_cast<unsigned int>(bottom - top) * count;
 }
 
+unsigned int BoxGreyScaler::convert(const FrameView& frame, vpImage<unsigned char>& grey) {
+  const size_t rows = static_cast<size_t>(frame.height);
+  left_.assign(rows, frame.width);
+  right_.assign(rows, 0);
+  unsigned int box_pixels = 0;
+  for (PixelBox& box : boxes_) {
+    box.top = std::max(box.top, 0);
+    box.left = std::max(box.left, 0);
+    box.bottom = std::min(box.bottom, frame.height);
+    box.right = std::min(box.right, frame.width);
+    if (box.left >= box.right || box.top >= box.bottom) continue;
+    box_pixels += static_cast<unsigned int>(box.bottom - box.top) * static_cast<unsigned int>(box.right - box.left);
+    for (int y = box.top; y < box.bottom; ++y) {
+      left_[y] = std::min(left_[y], box.left);
+      right_[y] = std::max(right_[y], box.right);
+    }
+  }
+  unsigned int span_pixels = 0;
+  for (size_t y = 0; y < rows; ++y)
+    if (left_[y] < right_[y]) span_pixels += static_cast<unsigned int>(right_[y] - left_[y]);
+  if (span_pixels >= box_pixels) {
+    unsigned int converted = 0;
+    for (const PixelBox& box : boxes_) converted += convert_to_grey(frame, box, grey);
+    return converted;
+  }
+  for (int y = 0; y < frame.height; ++y)
+    if (left_[y] < right_[y]) convert_to_grey(frame, PixelBox{y, left_[y], y + 1, right_[y]}, grey);
+  return span_pixels;
+}
+
 bool grey_in_place(const FrameView& frame) {
   return bytes_per_pixel(frame.layout) == 1 && frame.row_bytes == frame.width;
 }

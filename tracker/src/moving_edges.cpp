@@ -18,18 +18,14 @@ constexpr int kMaxClimb = kRefinementReachAlong - 1;
 class AxisLikelihood {
  public:
   AxisLikelihood(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, bool along_x)
-      : site_(site), grey_(grey), me_(me), along_x_(along_x) {}
+      : response_(site.response(grey, &me)), along_x_(along_x) {}
   int at(int u, int v) const {
-    site_.i = along_x_ ? v : u;
-    site_.j = along_x_ ? u : v;
-    const int value = static_cast<int>(site_.convolution(grey_, &me_));
+    const int value = along_x_ ? response_.at(v, u) : response_.at(u, v);
     return value < 0 ? -value : value;
   }
 
  private:
-  vpMeSite& site_;
-  const vpImage<unsigned char>& grey_;
-  const vpMe& me_;
+  const vpMeResponse response_;
   bool along_x_;
 };
 
@@ -116,12 +112,11 @@ void for_each_path_peak(vpMeSite& site, const vpImage<unsigned char>& grey, cons
                         Visit visit) {
   const int range = static_cast<int>(me.getRange());
   const real threshold = me.getThreshold();
+  const vpMeResponse response = site.response(grey, &me);
   auto conv_at = [&](int k, int& i, int& j) {
     i = static_cast<int>(point.pixel.y + k * point.normal.y);
     j = static_cast<int>(point.pixel.x + k * point.normal.x);
-    site.i = i;
-    site.j = j;
-    return static_cast<int>(site.convolution(grey, &me));
+    return response.at(i, j);
   };
   int i = 0, j = 0, next_i = 0, next_j = 0;
   int current_conv = conv_at(-range, i, j);

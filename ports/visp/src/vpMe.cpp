@@ -6,6 +6,7 @@
 /// and its area taken with the shoelace formula. Set-up only, in double.
 #include "visp3/me/vpMe.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vcl/vcl_cmath.h"
@@ -81,6 +82,18 @@ void vpMe::initMask() {
         mask[a * n + b] = static_cast<int16_t>(std::lround(100 * balance));
       }
     }
+  }
+  padded_masks_.clear();
+  if (kPaddedRow >= n) {
+    padded_masks_.assign(static_cast<std::size_t>(n_mask) * n * kPaddedRow, 0);
+    for (std::size_t row = 0; row < static_cast<std::size_t>(n_mask) * n; ++row)
+      std::copy(masks_.begin() + row * n, masks_.begin() + (row + 1) * n, padded_masks_.begin() + row * kPaddedRow);
+  }
+  masks_antisymmetric_ = true;
+  const std::size_t cells = static_cast<std::size_t>(n) * n;
+  for (std::size_t m = 0; m < masks_.size() && masks_antisymmetric_; ++m) {
+    const std::size_t first = m - m % cells, partner = first + cells - 1 - m % cells;
+    masks_antisymmetric_ = masks_[m] == -masks_[partner];
   }
 }
 

@@ -32,40 +32,6 @@ int round_int(real x) {
   return static_cast<int>(round(x));
 }
 
-/// Upstream's border rule: the mask centred at (i, j) must keep `margin` (half mask + strip)
-/// plus one pixel from the top and left, and margin plus three from the bottom and right.
-bool outside(int i, int j, int margin, int rows, int cols) {
-  return i < margin + 1 || i > rows - margin - 3 || j < margin + 1 || j > cols - margin - 3;
-}
-
-/// Sum of weight * pixel over the Size x Size window whose top-left pixel is (i0, j0), with the
-/// loops unrolled (the window of upstream's default 5 x 5 masks: a third of the instructions of
-/// the general loop on ARMv5TE).
-template <int Size>
-int convolve_unrolled(const vpImage<unsigned char>& I, int i0, int j0, const int16_t* mask) {
-  int sum = 0;
-#pragma GCC unroll 8
-  for (int a = 0; a < Size; ++a) {
-    const unsigned char* row = I[i0 + a] + j0;
-    const int16_t* weights = mask + a * Size;
-#pragma GCC unroll 8
-    for (int b = 0; b < Size; ++b) sum += weights[b] * row[b];
-  }
-  return sum;
-}
-
-/// Sum of weight * pixel over the size x size window whose top-left pixel is (i0, j0).
-int convolve(const vpImage<unsigned char>& I, int i0, int j0, const int16_t* mask, int size) {
-  if (size == 5) return convolve_unrolled<5>(I, i0, j0, mask);
-  int sum = 0;
-  for (int a = 0; a < size; ++a) {
-    const unsigned char* row = I[i0 + a] + j0;
-    const int16_t* weights = mask + a * size;
-    for (int b = 0; b < size; ++b) sum += weights[b] * row[b];
-  }
-  return sum;
-}
-
 }  // namespace
 
 vpMeSite::vpMeSite(real ip, real jp) : i(round_int(ip)), j(round_int(jp)), ifloat(ip), jfloat(jp) {}
@@ -106,14 +72,13 @@ void vpMeSite::init(real ip, real jp, real alphap, real convltp, int sign) {
 
 void vpMeSite::initFromImage(const vpImage<unsigned char>& I, const vpMe* me, real ip, real jp, real alphap) {
   init(ip, jp, alphap);
-  const int half = (static_cast<int>(me->getMaskSize()) - 1) >> 1;
-  if (outside(i, j, half + me->getStrip(), static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()))) {
+  const vpMeResponse mask = response(I, me);
+  if (mask.outside(i, j)) {
     convlt = 0;
     state = TOO_NEAR;
     return;
   }
-  const int16_t* mask = me->maskWeights(maskIndexFor(me));
-  convlt = mask_sign * convolve(I, i - half, j - half, mask, static_cast<int>(me->getMaskSize()));
+  convlt = mask.at(i, j);
   state = NO_SUPPRESSION;
 }
 
@@ -129,15 +94,18 @@ unsigned int vpMeSite::maskIndexFor(const vpMe* me) {
   return mask_index_;
 }
 
+vpMeResponse vpMeSite::response(const vpImage<unsigned char>& I, const vpMe* me) {
+  return vpMeResponse(I, *me, maskIndexFor(me), mask_sign);
+}
+
 real vpMeSite::convolution(const vpImage<unsigned char>& I, const vpMe* me) {
-  const int half = (static_cast<int>(me->getMaskSize()) - 1) >> 1;
-  if (outside(i, j, half + me->getStrip(), static_cast<int>(I.getHeight()), static_cast<int>(I.getWidth()))) {
+  const vpMeResponse mask = response(I, me);
+  if (mask.outside(i, j)) {
     i = 0;
     j = 0;
     return 0;
   }
-  const int16_t* mask = me->maskWeights(maskIndexFor(me));
-  return mask_sign * convolve(I, i - half, j - half, mask, static_cast<int>(me->getMaskSize()));
+  return mask.at(i, j);
 }
 
 void vpMeSite::getSearchBox(const vpMe* me, int& top, int& left, int& bottom, int& right) const {
@@ -164,11 +132,7 @@ void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_
   using std::cos;
   using std::sin;
   const int range = static_cast<int>(search_range);
-  const int size = static_cast<int>(me->getMaskSize());
-  const int half = (size - 1) >> 1;
-  const int margin = half + me->getStrip();
-  const int rows = static_cast<int>(I.getHeight()), cols = static_cast<int>(I.getWidth());
-  const int16_t* mask = me->maskWeights(maskIndexFor(me));
+  const vpMeResponse mask = response(I, me);
   const real s = sin(alpha), c = cos(alpha);
 
   // Likelihood |conv + convlt| > threshold, for integer conv: conv > above or conv < below.
@@ -215,11 +179,11 @@ void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_
     }
     int ci = static_cast<int>(ii), cj = static_cast<int>(jj);
     int conv = 0;
-    if (outside(ci, cj, margin, rows, cols)) {
+    if (mask.outside(ci, cj)) {
       ci = 0;  // upstream's convolution() moves an out-of-image candidate to (0, 0)
       cj = 0;
     } else {
-      conv = mask_sign * convolve(I, ci - half, cj - half, mask, size);
+      conv = mask.at(ci, cj);
     }
 
     bool take = false;

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "edgetrack/contours.h"
+#include "edgetrack/cylinder_windows.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/raster.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
@@ -48,6 +50,9 @@ class EdgeIdBuffer {
   void clear_dirty();
   void grow_dirty(int x0, int y0, int x1, int y1);
   void draw_surfaces(const EdgeModel& model, const Se3& camera_from_model);
+  /// The cylinders' sides into the depth buffer, back facets only where they can show
+  /// (cylinder_windows.h).
+  void draw_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
   /// Draws the segment where it is not hidden; pixels whose nearest surface is `exempt_owner`
   /// (a cylinder number + 1, or -1 for none) never hide it.
   void draw_edge(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
@@ -61,6 +66,22 @@ class EdgeIdBuffer {
   std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each primitive
   std::vector<ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides
   std::vector<uint8_t> front_;          ///< per face: drawn this frame (front-facing or not closed)
+  /// Per cylinder, this frame: its rim boxes, whether they apply, and the projected orientation
+  /// of its front facets (+1 or -1; that of the facet facing the camera most).
+  struct RimBoxes {
+    PixelRect boxes[2];
+    bool valid = false;
+    int front_sign = 0;
+    real nearest_facing{0};
+  };
+  /// A cylinder facet projected this frame, with its signed area's sign where rim boxes apply.
+  struct ProjectedFacet {
+    ScreenVertex polygon[kMaxClippedVertices];
+    int count = 0;
+    int sign = 0;
+  };
+  std::vector<RimBoxes> rim_boxes_;
+  std::vector<ProjectedFacet> facets_;  ///< per model.cylinder_surface triangle
   int dirty_x0_ = 0, dirty_y0_ = 0, dirty_x1_ = -1, dirty_y1_ = -1;  ///< area drawn last time
 };
 

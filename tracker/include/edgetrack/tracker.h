@@ -13,6 +13,7 @@
 #include "edgetrack/edge_model.h"
 #include "edgetrack/face_visibility.h"
 #include "edgetrack/frame_view.h"
+#include "edgetrack/grey_conversion.h"
 #include "edgetrack/motion_model.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pinhole_camera.h"
@@ -170,6 +171,7 @@ class Tracker {
   StepObserver* step_observer_ = nullptr;
   /// The grey frame; on demand, only the current frame's search boxes are up to date.
   vpImage<unsigned char> grey_;
+  BoxGreyScaler grey_boxes_;
   /// Borrows the frame's own grey bytes (grey_in_place) during track only.
   vpImage<unsigned char> grey_in_place_;
   // Each frame's points, matches and pose buffers, kept so that a frame allocates nothing once

@@ -92,6 +92,22 @@ class vpMe {
   unsigned int maskIndex(const real& alpha) const;
   /// Weights of mask `index` (mask_size * mask_size, row-major).
   const int16_t* maskWeights(unsigned int index) const { return masks_.data() + index * mask_size * mask_size; }
+  /// True when every mask is antisymmetric: the weight of row a, column b is minus that of row
+  /// n-1-a, column n-1-b (so the centre's is 0). The area rule gives this by construction; it is
+  /// checked on the rounded weights, and lets a response take one product per pixel pair.
+  bool masksAntisymmetric() const { return masks_antisymmetric_; }
+  /// Entries per row of paddedMaskWeights: 8 on SSE2 hosts, where vpMeResponse takes a row of 8
+  /// products in one vector multiply-add, 0 (no padded masks) elsewhere, as on ARMv5TE.
+#if defined(__SSE2__)
+  static constexpr unsigned int kPaddedRow = 8;
+#else
+  static constexpr unsigned int kPaddedRow = 0;
+#endif
+  /// Weights of mask `index`, each row followed by zeros up to kPaddedRow entries; null when
+  /// kPaddedRow is 0 or smaller than mask_size.
+  const int16_t* paddedMaskWeights(unsigned int index) const {
+    return padded_masks_.empty() ? nullptr : padded_masks_.data() + index * mask_size * kPaddedRow;
+  }
 
  private:
   real threshold;
@@ -108,4 +124,6 @@ class vpMe {
   unsigned int n_mask;
   int strip;
   std::vector<int16_t> masks_;
+  bool masks_antisymmetric_ = false;
+  std::vector<int16_t> padded_masks_;
 };

@@ -24,6 +24,7 @@
 #include "real/real.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
+#include "visp3/me/vpMeResponse.h"
 
 class vpMeSite {
  public:
@@ -79,6 +80,9 @@ class vpMeSite {
   /// Mask response at (i, j): mask_sign * sum of weight * pixel, for the mask of alpha. If the
   /// mask would reach the border strip, returns 0 and sets i = j = 0, as upstream does.
   real convolution(const vpImage<unsigned char>& I, const vpMe* me);
+  /// New: the response of this site's mask (alpha's mask, the site's sign) at any pixel of I,
+  /// for callers reading many pixels of one site; convolution() at (i, j) is response(I, me).at(i, j).
+  vpMeResponse response(const vpImage<unsigned char>& I, const vpMe* me);
 
   /// Searches the 2 range + 1 candidates ifloat + k sin(alpha), jfloat + k cos(alpha), k in
   /// [-range, range] (pixel = truncation). With test_contraste, a candidate qualifies when its

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Prints the markdown section for docs/results/host_profile.md: where the host tracker's
+# instructions go at ViSP's settings, the work `edgetrack compare` times. valgrind's callgrind
+# counts the instructions inside Tracker::track (repeatable on a shared machine, unlike times)
+# for each step of the paper's table (the inclusive cost of the step's calls from
+# Tracker::track) and per function, on mbt/cube (cube.cao and cube_and_cylinder.cao, 640x480 and
+# QVGA, cube.xml) and the generated QVGA cube with cube.xml's <ecm>. The working tree and each git
+# revision in $HOST_PROFILE_REVISIONS (built from `git archive` in a temporary directory).
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../lib.sh"
+frames=50
+top_functions=12
+revisions=(${HOST_PROFILE_REVISIONS:-})
+mbt=/usr/share/visp-images-data/ViSP-images/mbt
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/host_profile.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+# host_edgetrack REVISION: prints the path of a host double edgetrack built from REVISION
+# ("working tree": this checkout, in build/bench-host-double).
+host_edgetrack() {
+  if [ "$1" = "working tree" ]; then
+    echo "$(bench_tree host double edgetrack)/app/edgetrack"
+    return
+  fi
+  local src=$work/src dir=$work/build
+  rm -rf "$src" "$dir"
+  mkdir -p "$src"
+  git -C "$top" archive "$1" | tar -x -C "$src"
+  cmake -S "$src" -B "$dir" -G Ninja -DEDGETRACK_REAL=double -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 ||
+    { cat "$work/configure.log" >&2; return 1; }
+  cmake --build "$dir" --target edgetrack >"$work/build.log" 2>&1 || { tail -n 40 "$work/build.log" >&2; return 1; }
+  cp "$dir/app/edgetrack" "$work/edgetrack-$1"
+  echo "$work/edgetrack-$1"
+}
+
+# The generated cube, with the <ecm> of cube.xml (ViSP's settings) and synth's camera.
+current=$(host_edgetrack "working tree")
+"$current" synth --out "$work/cube60" --model "$top/data/models/cube60.cao" >/dev/null
+awk -v ecm="$(sed -n '/<ecm>/,/<\/ecm>/p' "$mbt/cube.xml")" '{ print } /<conf>/ { print ecm }' \
+  "$work/cube60/camera.xml" >"$work/cube60/visp.xml"
+
+runs=("mbt/cube.cao 640x480" "mbt/cube.cao QVGA" "mbt/cube_and_cylinder.cao 640x480" "mbt/cube_and_cylinder.cao QVGA"
+      "generated 60 mm cube QVGA")
+# run_args RUN: the track arguments of one run.
+run_args() {
+  case "$1" in
+    generated*) echo "--model $top/data/models/cube60.cao --camera $work/cube60/visp.xml --init-pose $work/cube60/first.pos" \
+      "--images $work/cube60/frames/frame%04d.ppm" ;;
+    *) local model=${1#mbt/} && model=${model%% *}
+       local factor=1 && [ "${1##* }" = QVGA ] && factor=2
+       echo "--model $mbt/$model --camera $mbt/cube.xml --init-pose $mbt/cube.0.pos --images $mbt/cube/image%04d.pgm" \
+         "--downscale $factor" ;;
+  esac
+}
+
+# steps CALLGRIND_FILE: "visible | grey | ME | pose | other | total" per frame, from the inclusive
+# cost of each call Tracker::track makes (the rest, its own code included, is "other").
+steps() {
+  callgrind_annotate --tree=calling --inclusive=yes "$1" 2>/dev/null | awk -v f="$frames" '
+    /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); total = $1; go = 1; next }
+    go && /^ *$/ { go = 0 }
+    go && / >   / {
+      c = $1; gsub(",", "", c); name = $0
+      if (name ~ /EdgeIdBuffer::render|EdgeIdSource|ContrastMemory::references|sample_control_points|keep_visible|FaceVisibility/) v += c
+      else if (name ~ /grey_scale|convert_to_grey|BoxGreyScaler/) g += c
+      else if (name ~ /search_moving_edges|contrasts_at_points/) m += c
+      else if (name ~ /solve_pose/) p += c
+    }
+    END {
+      o = total - v - g - m - p
+      printf "%.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M | %.3f M",
+        v/f/1e6, 100*v/total, g/f/1e6, 100*g/total, m/f/1e6, 100*m/total, p/f/1e6, 100*p/total, o/f/1e6, total/f/1e6
+    }'
+}
+
+labels=("${revisions[@]}" "working tree")
+declare -A step_row
+for label in "${labels[@]}"; do
+  edgetrack=$(host_edgetrack "$label")
+  for run in "${runs[@]}"; do
+    key="${label// /_}.${run//[ \/]/_}"
+    # shellcheck disable=SC2046
+    valgrind --tool=callgrind --callgrind-out-file="$work/$key.cg" --toggle-collect='edgetrack::Tracker::track*' \
+      "$edgetrack" track $(run_args "$run") --last $((frames - 1)) --poses "$work/$key.csv" --quiet >/dev/null 2>"$work/$key.err"
+    step_row[$label.$run]=$(steps "$work/$key.cg")
+  done
+done
+
+echo "## Host profile: instructions per frame at ViSP's settings (host_profile)"
+echo
+echo "\`tests/bench/host_profile/results.sh\` (revisions compared: ${revisions[*]:-none}), host double build, $(bench_machine)."
+echo
+echo "valgrind callgrind inside Tracker::track, \`edgetrack track\` on the first $frames frames: ViSP's mbt/cube"
+echo "with its cube.xml (step 4 px, range 7; QVGA: \`--downscale 2\`, step and range halved), and the generated"
+echo "QVGA cube (\`edgetrack synth\`, RGB frames) with cube.xml's <ecm>. Per step: the inclusive cost of the"
+echo "calls Tracker::track makes for it (visible edges: Edge-ID rendering, sampling, visibility, contrast"
+echo "references; grey scaling; ME: the moving-edge search and refinement; pose: the robust LM solve);"
+echo "other: the frame's status and prediction, and Tracker::track's own code."
+echo
+echo "| sequence | build | visible edges | grey scaling | ME | pose | other | whole Tracker::track |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|"
+for run in "${runs[@]}"; do
+  for label in "${labels[@]}"; do echo "| $run | $label | ${step_row[$label.$run]} |"; done
+done
+for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480"; do
+  key="working_tree.${run//[ \/]/_}"
+  total=$(callgrind_annotate "$work/$key.cg" 2>/dev/null | sed -n 's/^ *\([0-9,]*\) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
+  echo
+  echo "### $run, working tree: the $top_functions largest functions"
+  echo
+  echo "Instructions per frame in each function's own code (inlined callees included), and its share of Tracker::track."
+  echo
+  echo "| function | instructions per frame | share |"
+  echo "|---|---:|---:|"
+  callgrind_annotate "$work/$key.cg" 2>/dev/null |
+    awk -v n="$top_functions" '/file:function/ { go = 1; next } go && /^ *[0-9,]+ / && shown++ < n { print }' |
+    while read -r count _ rest; do
+      name=$(echo "$rest" | sed 's/^[^:]*://; s/ \[.*//; s/(anonymous namespace):://g; s/(.*//')
+      awk -v c="${count//,/}" -v t="$total" -v f="$frames" -v n="$name" \
+        'BEGIN { printf "| `%s` | %.0f | %.1f %% |\n", n, c / f, 100 * c / t }'
+    done
+done
