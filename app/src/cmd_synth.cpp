@@ -86,7 +86,7 @@ struct SynthOptions {
   int frames = 60, supersample = 4, seed = 1;
   int hide_first = -1, hide_last = -1;  ///< --hide: frames the board covers the whole object on
   double speed = 1, noise = 2, blur = 0.6, cover = 0, clutter_mm = 0;
-  bool occluder = false, rgb565 = false, pgm = false;
+  bool occluder = false, rgb565 = false, pgm = false, reverse = false;
 };
 
 /// The options, or an Error: one naming no file is a bad option value (exit status 2), one
@@ -97,6 +97,7 @@ Result<SynthOptions> read_options(const Args& a) {
   o.model_path = a.text("--model", data_dir() + "/models/cube60.cao");
   o.trajectory = a.text("--trajectory", "paper");
   o.occluder = a.has("--occluder");
+  o.reverse = a.has("--reverse");
   o.rgb565 = a.has("--rgb565");
   o.pgm = a.has("--pgm");
   if (o.rgb565 && o.pgm) return Error{"", 0, "--rgb565 and --pgm name two frame formats: give one"};
@@ -144,13 +145,20 @@ Result<SynthOptions> read_options(const Args& a) {
   return o;
 }
 
-/// The trajectory at the asked speed, each pose checked to keep the model in front.
+/// The trajectory at the asked speed (with --reverse, its first half there and back), each pose
+/// checked to keep the model in front.
 Result<std::vector<Se3>> synth_poses(const SynthOptions& o, const edgetrack::EdgeModel& model) {
-  const int slow_frames = static_cast<int>(std::ceil(o.speed * (o.frames - 1))) + 1;
+  const int forward_frames = o.reverse ? o.frames / 2 + 1 : o.frames;
+  const int slow_frames = static_cast<int>(std::ceil(o.speed * (forward_frames - 1))) + 1;
   auto slow = make_trajectory(o.trajectory, slow_frames);
   if (!slow.ok()) return slow.error();
-  std::vector<Se3> poses = edgetrack::faster_poses(slow.value(), real(o.speed), o.frames);
-  if (static_cast<int>(poses.size()) < o.frames) return Error{o.trajectory, 0, "fewer than --frames times --speed poses"};
+  std::vector<Se3> poses = edgetrack::faster_poses(slow.value(), real(o.speed), forward_frames);
+  if (static_cast<int>(poses.size()) < forward_frames)
+    return Error{o.trajectory, 0, "fewer than --frames times --speed poses"};
+  if (o.reverse) {
+    poses = edgetrack::there_and_back(poses);
+    poses.resize(static_cast<size_t>(o.frames));
+  }
   for (size_t k = 0; k < poses.size(); ++k) {
     auto in_front = check_in_front(model, poses[k], o.trajectory + " frame " + std::to_string(k));
     if (!in_front.ok()) return in_front.error();
@@ -222,7 +230,7 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
 int synth_main(int argc, char** argv) {
   const std::string synopsis =
       "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--speed K] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--hide FIRST:LAST] [--clutter MM] [--rgb565 | --pgm]";
+      "[--speed K] [--reverse] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--hide FIRST:LAST] [--clutter MM] [--rgb565 | --pgm]";
   const std::vector<OptionSpec> specs = {
       {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
       {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
@@ -231,6 +239,8 @@ int synth_main(int argc, char** argv) {
       {"--trajectory", true, "paper (default) or a CSV with the header of truth.csv"},
       {"--frames", true, "number of frames (default 60)"},
       {"--speed", true, "the same path K times faster: frame k shows trajectory pose K k, interpolated (default 1)"},
+      {"--reverse", false, "the path runs forwards for the first half of the frames and back over the same poses "
+                           "for the rest: the motion reverses at once"},
       {"--noise", true, "Gaussian noise, grey levels sigma (default 2)"},
       {"--blur", true, "Gaussian blur, pixels sigma (default 0.6)"},
       {"--occluder", false, "a dark bar crossing the view in front of the model"},

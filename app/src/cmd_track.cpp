@@ -44,6 +44,8 @@ struct RunTotals {
   int frames = 0;
   int lost = 0;
   int uncertain = 0;
+  int retried = 0;        ///< frames tracked again from the last trusted pose (FrameResult::retried)
+  int retry_tracked = 0;  ///< of those, the ones the retry tracked
   int reasons[edgetrack::kStatusReasonCount] = {};  ///< frames per edgetrack::StatusReason
   int64_t step_ns[edgetrack::kStepCount] = {0, 0, 0, 0};
   int64_t points_matched = 0;
@@ -68,6 +70,9 @@ void print_table1(const RunTotals& totals) {
               total > 0 ? 1000 * n / total : 0.0, static_cast<double>(totals.points_matched) / n,
               static_cast<double>(totals.points_sampled) / n,
               totals.uncertain, totals.lost);
+  if (totals.retried > 0)
+    std::printf("  %d frames retried from the last trusted pose, %d of them tracked so\n", totals.retried,
+                totals.retry_tracked);
   for (int r = 1; r < edgetrack::kStatusReasonCount; ++r)
     if (totals.reasons[r] > 0)
       std::printf("  %d frames: %s\n", totals.reasons[r], edgetrack::reason_name(static_cast<edgetrack::StatusReason>(r)));
@@ -86,12 +91,12 @@ void print_status(int frame, const edgetrack::FrameResult& result) {
   const edgetrack::FrameMeasures& m = result.measures;
   std::fprintf(stderr, "frame %d %s (%s): %d of %d visible points matched, %d kept; residual scale %.2f px over "
                "range %u px; correction %.1f px; pose change %.1f mm %.1f deg; %llu saturations; "
-               "pose uncertainty %.2f px\n",
+               "pose uncertainty %.2f px%s\n",
                frame, edgetrack::status_name(result.status), edgetrack::reason_name(result.reason), m.matched,
                m.visible, m.kept, static_cast<double>(m.residual_scale), m.range,
                static_cast<double>(m.correction_px), static_cast<double>(m.translation_change_mm),
                static_cast<double>(m.rotation_change_deg), static_cast<unsigned long long>(m.saturations),
-               static_cast<double>(m.pose_uncertainty_px));
+               static_cast<double>(m.pose_uncertainty_px), result.retried ? "; retried from the last trusted pose" : "");
 }
 
 /// The initial pose from a .init file and the image positions of its points (full-size pixels).
@@ -326,6 +331,8 @@ void count(const edgetrack::FrameResult& result, RunTotals& totals) {
   totals.lost += result.status == edgetrack::TrackingStatus::kLost ? 1 : 0;
   totals.uncertain += result.status == edgetrack::TrackingStatus::kUncertain ? 1 : 0;
   ++totals.reasons[static_cast<int>(result.reason)];
+  totals.retried += result.retried ? 1 : 0;
+  totals.retry_tracked += result.retried && result.status == edgetrack::TrackingStatus::kTracked ? 1 : 0;
   totals.points_matched += result.points_matched;
   totals.points_sampled += result.points_sampled;
 }

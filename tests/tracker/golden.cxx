@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include "edgetrack/scene_extras.h"
+
 using namespace edgetrack;
 
 namespace edgetrack_test {
@@ -25,6 +27,17 @@ SequenceSpec covered_spec() {
 std::string covered_golden_name(Scene scene) {
   return std::string(scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder") +
          "_cover30_double_positions.txt";
+}
+
+SequenceSpec reversal_spec(Scene scene) {
+  SequenceSpec spec;
+  spec.poses = there_and_back(true_poses(scene, kReversalTurn + 1, kFastSpeedUp));
+  return spec;
+}
+
+std::string reversal_golden_name(Scene scene) {
+  return std::string(scene == Scene::kCube ? "cube60" : scene == Scene::kWoodToy ? "wood_toy" : "cube60_cylinder") +
+         "_reverse" + std::to_string(kFastSpeedUp) + "_double_positions.txt";
 }
 
 bool write_golden(const std::string& path, const SequenceRun& run) {

@@ -15,6 +15,14 @@ constexpr int kGoldenFrames = 60;
 constexpr int kFastFrames = 48;
 constexpr int kFastSpeedUp = 5;
 
+/// The reversal sequences (test_back_and_forth.cxx): the fast path's first kReversalTurn + 1
+/// poses, then back over them to the first (2 kReversalTurn + 1 frames), reversing at once at
+/// 13-14 px per QVGA frame.
+constexpr int kReversalTurn = 39;
+/// The spec of the scene's reversal sequence, and its golden file's name.
+SequenceSpec reversal_spec(Scene scene);
+std::string reversal_golden_name(Scene scene);
+
 /// The edge hypotheses of the golden runs besides the default single one.
 constexpr int kMultipleHypotheses = 3;
 

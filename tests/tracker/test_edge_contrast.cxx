@@ -3,10 +3,12 @@
 /// line 4 pixels outside it, far stronger than the edge. Without a reference the site takes the
 /// line's stronger side; with the edge's own contrast as reference it refuses both sides of the
 /// line (one has the other polarity, the other three times the contrast) and finds the edge; a
-/// reference no edge matches falls back to the strongest edge. The memory gives a control point
-/// the contrast of the nearest kept match of its own primitive within a sample step, and
-/// nothing for another primitive, a far point, an outlier, a match off the solved projection or
-/// a match much weaker than its primitive's others.
+/// reference no edge matches falls back to the strongest edge, unless it is strict (borrowed),
+/// which leaves the point unmatched. The memory gives a control point the contrast of the
+/// nearest kept match of its own primitive within a sample step, and nothing for another
+/// primitive; of an outlier, a match off the solved projection or a match much weaker than its
+/// primitive's others nothing is remembered, and a point with nothing of its own within reach
+/// borrows its primitive's mean contrast when that primitive's are all of one polarity.
 #include <cmath>
 #include <vector>
 
@@ -73,6 +75,11 @@ static void test_edge_contrast() {
   const std::vector<EdgeMatch> fallback = search_moving_edges(image, points, me, 1, &unmatched);
   TEST_EQUAL("a reference no edge passes: the site still matches", fallback.size(), size_t(1));
   TEST_NEAR("the strongest edge, as without one", found_column(fallback), found_column(strongest), 1e-9);
+  const std::vector<unsigned char> strict = {1};
+  TEST_EQUAL("a strict (borrowed) reference no edge passes: no match",
+             search_moving_edges(image, points, me, 1, &unmatched, &strict).size(), size_t(0));
+  TEST_EQUAL("a strict one an edge passes: matched as by its own",
+             search_moving_edges(image, points, me, 1, &reference, &strict).size(), size_t(1));
 
   // The memory: matches at the identity pose, a camera whose pixels are millimetres at 1 m.
   const PinholeCamera camera{real(1000), real(1000), real(0), real(0), 128, 48};
@@ -98,16 +105,28 @@ static void test_edge_contrast() {
                                            point_on_edge(0, real(30), real(200)), point_on_edge(0, real(21), real(20)),
                                            point_on_edge(0, real(29), real(20)), point_on_edge(0, real(90), real(20))};
   std::vector<real> found;
-  memory.references(asked, camera, pose, real(10), found);
+  std::vector<unsigned char> borrowed;
+  memory.references(asked, camera, pose, real(10), found, borrowed);
   TEST_EQUAL("one reference per point", found.size(), asked.size());
+  TEST_EQUAL("and one mark", borrowed.size(), asked.size());
   TEST_NEAR("a point near a kept match gets its contrast", found[0], 1000, 1e-9);
+  TEST("its own", borrowed[0] == 0, true);
   TEST_NEAR("a point of another primitive gets none", found[1], 0, 1e-9);
-  TEST_NEAR("a point farther than the reach gets none", found[2], 0, 1e-9);
+  TEST("nor a mark", borrowed[1] == 0, true);
+  // Remembered of primitive 0: the matches at 10 (1000) and 40 (1030) mm.
+  TEST_NEAR("a point farther than the reach gets its primitive's mean", found[2], 1015, 1e-9);
+  TEST("borrowed", borrowed[2] != 0, true);
   TEST_NEAR("nothing is remembered of an outlier: the nearest kept match is farther", found[3], 1000, 1e-9);
   TEST_NEAR("nor of a match off the solved projection", found[4], 1030, 1e-9);
-  TEST_NEAR("nor of a match far weaker than its primitive's others", found[5], 0, 1e-9);
+  TEST_NEAR("nor of a match far weaker than its primitive's others: the primitive's mean", found[5], 1015, 1e-9);
+  TEST("borrowed", borrowed[5] != 0, true);
+  std::vector<EdgeMatch> mixed = kept;
+  mixed[3].contrast = real(-1030);  // a silhouette whose background changes side
+  memory.remember(mixed, camera, pose, real(1));
+  memory.references(asked, camera, pose, real(10), found, borrowed);
+  TEST("a primitive of both polarities lends nothing", found[2] == real(0) && borrowed[2] == 0, true);
   memory.clear();
-  memory.references(asked, camera, pose, real(10), found);
+  memory.references(asked, camera, pose, real(10), found, borrowed);
   TEST_NEAR("after clear nothing is remembered", found[0], 0, 1e-9);
 }
 

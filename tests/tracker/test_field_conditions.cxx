@@ -4,7 +4,7 @@
 /// every model edge (`--clutter 3`), tracked with the defaults from the true first pose: no
 /// frame lost in either; covered, the mean camera position error stays under 0.5 mm (issue 10's
 /// target; S47.16 within the loose agreement it claims) and each `real` near the double run
-/// (S40.23 within 0.1 mm in every frame). Cluttered it does not (about 1.3 mm for the cube and 4 mm for the toy, printed): the
+/// (S40.23 within 0.1 mm in every frame). Cluttered it does not (about 1.3 mm for the cube and 5 mm for the toy, printed): the
 /// 5-pixel mask spans the line 2 pixels beside an edge, so the two responses merge
 /// (docs/results/tracking_eval.md).
 #include <cstdio>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The motion model between frames: no velocity from the start pose, constant velocity once the
 /// motion exceeds twice the range and none within the range, a search range that follows the
-/// motion and doubles after a start or a loss, dead reckoning that fades while lost, and a reset
+/// motion and doubles after a start or a loss, a retry from the last trusted pose whose range
+/// reaches a frame's motion back, dead reckoning that fades while lost, and a reset
 /// that starts again at rest.
 #include <algorithm>
 #include <cmath>
@@ -49,17 +50,29 @@ static void test_motion_model() {
   TEST_NEAR("15 px per frame: constant velocity", x_of(fast.prediction()), 0.020, tolerance(1e-5, 2));
   const unsigned wide = fast.search_range(range);
   TEST("the range follows the motion (4 + half of the ~11 px beyond it)", wide >= 9 && wide <= 10, true);
+  TEST_NEAR("the last trusted pose is kept for a retry", x_of(fast.trusted()), 0.010, tolerance(1e-6, 1));
+  TEST_EQUAL("the retry's range reaches a frame's motion back, ~15 px, at most 4 times the range",
+             fast.retry_range(range), 4 * range);
+
+  MotionModel medium(at_x(0), params);
+  medium.trust(at_x(0), model, camera, range);
+  medium.trust(at_x(0.005), model, camera, range);
+  TEST_EQUAL("7.3 px per frame: the retry searches the range plus 8 px", medium.retry_range(range), range + 8);
 
   MotionModel slow(at_x(0), params);
   slow.trust(at_x(0), model, camera, range);
   slow.trust(at_x(0.001), model, camera, range);
   TEST_NEAR("1.5 px per frame, within the range: no prediction", x_of(slow.prediction()), 0.001, tolerance(1e-6, 1));
   TEST_EQUAL("and the range as configured", slow.search_range(range), range);
+  TEST("the prediction is the trusted pose: no other start to retry from", slow.predicts_motion(), false);
+  TEST("a fast one predicts motion", fast.predicts_motion(), true);
 
   fast.lose(model, camera);
   TEST_NEAR("a lost frame moves on by 0.8 of the velocity", x_of(fast.prediction()), 0.028, tolerance(1e-5, 2));
   TEST_EQUAL("a lost frame doubles the search", fast.search_range(range) >= 2 * range, true);
   TEST("and says so", fast.lost_last_frame(), true);
+  TEST_NEAR("the retry still starts from the last trusted pose", x_of(fast.trusted()), 0.010, tolerance(1e-6, 1));
+  TEST("which the prediction has left", fast.predicts_motion(), true);
   fast.lose(model, camera);
   TEST_NEAR("the next by 0.64", x_of(fast.prediction()), 0.0344, tolerance(1e-5, 3));
   fast.trust(at_x(0.040), model, camera, range);

@@ -11,6 +11,7 @@
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "run_sequence.h"
+#include "status_cases.h"
 #include "testlib/testlib_test.h"
 
 using namespace edgetrack;
@@ -41,21 +42,21 @@ struct LeavingCounts {
   int in_view_unconstrained = 0;  ///< of those, the ones reported kPoseUnconstrained
 };
 
+/// The status cases' leaving-view sequence (status_cases.h).
+StatusCase leaving_view() {
+  for (const StatusCase& c : status_cases())
+    if (c.name == "leaving the view") return c;
+  return StatusCase{};
+}
+
 LeavingCounts run_leaving(const TrackerParams& params) {
-  // From the cube's first pose, the camera accelerates sideways to 6 mm (about 9 px) per frame
-  // until the cube has left the image (as the status test's leaving-view sequence).
-  const int frames = 40;
-  const Se3 start = true_poses(Scene::kCube, 1)[0];
-  SequenceSpec spec;
-  double x = 0;
-  for (int k = 0; k < frames; ++k) {
-    x += 0.0005 * std::fmin(k, 12);
-    spec.poses.push_back(Se3(start.rotation(), start.translation() + Vec3{real(x), real(0), real(0)}));
-  }
+  const StatusCase c = leaving_view();
+  const int frames = c.frames;
+  const SequenceSpec& spec = c.spec;
   const SequenceRun run = run_sequence(Scene::kCube, frames, false, params, spec);
   LeavingCounts counts;
-  counts.loaded = run.loaded;
-  if (!run.loaded) return counts;
+  counts.loaded = run.loaded && frames > 0 && static_cast<int>(spec.poses.size()) == frames;
+  if (!counts.loaded) return counts;
   const Result<EdgeModel> model = load_model(model_path(Scene::kCube));
   const PinholeCamera camera = qvga_camera();
   const int border = SamplingParams{}.border;

@@ -44,6 +44,19 @@ void check_faster_poses() {
   TEST("a path too short ends early", faster_poses(slow, real(4), 60).size(), size_t(31));
 }
 
+void check_there_and_back() {
+  const std::vector<Se3> forward = cube_trajectory(4);
+  const std::vector<Se3> poses = there_and_back(forward);
+  TEST("4 poses there and back are 7", poses.size(), size_t(7));
+  const auto same = [](const Se3& a, const Se3& b) {
+    return distance(a.translation(), b.translation()) == 0 && distance(a * Vec3{real(1), real(1), real(1)},
+                                                                          b * Vec3{real(1), real(1), real(1)}) == 0;
+  };
+  TEST("the turn is the last forward pose, shown once", same(poses[3], forward[3]) && !same(poses[4], forward[3]), true);
+  TEST("then the way back", same(poses[4], forward[2]) && same(poses[6], forward[0]), true);
+  TEST("one pose stays one", there_and_back({forward[0]}).size(), size_t(1));
+}
+
 void check_occluder(const EdgeModel& cube, const PinholeCamera& camera, const Se3& pose) {
   std::vector<uint8_t> mask;
   std::vector<int> columns;
@@ -119,6 +132,7 @@ static void test_scene_extras() {
   const PinholeCamera camera{real(220), real(220), real(160), real(120), 320, 240};
   const Se3 pose = cube_trajectory(1)[0];
   check_faster_poses();
+  check_there_and_back();
   check_occluder(loaded.value(), camera, pose);
   check_clutter(loaded.value(), camera, pose);
 }

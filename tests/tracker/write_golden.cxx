@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Writes the golden files of the tracking tests: the camera position (metres, model frame) the
 /// tracker finds in each frame of the synthetic sequences and of the sped-up cube and wood toy,
-/// the cube and wood toy 30 % covered, and with three edge hypotheses per control point. Run from a double build:
+/// the cube and wood toy 30 % covered and played fast there and back, and with three edge hypotheses per control point. Run from a double build:
 ///   tracker_write_golden tests/tracker/golden
 /// The other builds compare their own run with these files (test_tracking.cxx).
 #include <cstdio>
@@ -32,15 +32,20 @@ int main(int argc, char* argv[]) {
                   run.mean_position_error_mm);
     }
   }
-  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {  // the covered runs
-    const SequenceRun run = run_sequence(scene, kGoldenFrames, false, edgetrack::TrackerParams{}, covered_spec());
-    const std::string path = std::string(argv[1]) + "/" + covered_golden_name(scene);
-    if (!run.loaded || !write_golden(path, run)) {
-      std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
-      return 1;
+  for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {  // the covered and the reversal runs
+    for (bool covered : {true, false}) {
+      const SequenceSpec spec = covered ? covered_spec() : reversal_spec(scene);
+      const int frames = covered ? kGoldenFrames : static_cast<int>(spec.poses.size());
+      const SequenceRun run = run_sequence(scene, frames, false, edgetrack::TrackerParams{}, spec);
+      const std::string path =
+          std::string(argv[1]) + "/" + (covered ? covered_golden_name(scene) : reversal_golden_name(scene));
+      if (!run.loaded || !write_golden(path, run)) {
+        std::fprintf(stderr, "%s: could not run the sequence or write the file\n", path.c_str());
+        return 1;
+      }
+      std::printf("%s: %zu frames, mean position error %.3f mm\n", path.c_str(), run.frames.size(),
+                  run.mean_position_error_mm);
     }
-    std::printf("%s: %zu frames, mean position error %.3f mm\n", path.c_str(), run.frames.size(),
-                run.mean_position_error_mm);
   }
   for (Scene scene : {Scene::kCube, Scene::kWoodToy}) {  // the multiple-hypothesis runs
     edgetrack::TrackerParams multiple;

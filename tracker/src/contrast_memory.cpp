@@ -45,12 +45,16 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
 }
 
 void ContrastMemory::references(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
-                                const Se3& camera_from_model, const real& reach, std::vector<real>& out) const {
+                                const Se3& camera_from_model, const real& reach, std::vector<real>& out,
+                                std::vector<unsigned char>& borrowed) const {
   out.assign(points.size(), real(0));
+  borrowed.assign(points.size(), 0);
   // The remembered points come grouped by primitive: [first, end) are those of the current
-  // point's, found again only when the primitive changes.
+  // point's, found again only when the primitive changes, with their mean contrast when they
+  // share one polarity (else 0).
   size_t first = 0, end = 0;
   int edge = -1;
+  real primitive(0);
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     if (point.edge != edge) {
@@ -59,6 +63,7 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
       }
       for (end = first; end < remembered_.size() && remembered_[end].edge == edge; ++end) {
       }
+      primitive = mean_of_one_polarity(first, end);
     }
     const real depth = (camera_from_model * point.point_in_model).z;
     if (depth <= real(0)) continue;
@@ -72,7 +77,23 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
         out[p] = remembered_[k].contrast;
       }
     }
+    if (out[p] == real(0) && primitive != real(0)) {
+      out[p] = primitive;
+      borrowed[p] = 1;
+    }
   }
+}
+
+real ContrastMemory::mean_of_one_polarity(size_t first, size_t end) const {
+  real sum(0);
+  int positive = 0;
+  for (size_t k = first; k < end; ++k) {
+    sum += remembered_[k].contrast;
+    positive += remembered_[k].contrast > real(0);
+  }
+  const int count = static_cast<int>(end - first);
+  if (count == 0 || (positive != 0 && positive != count)) return real(0);
+  return sum / real(count);
 }
 
 }  // namespace edgetrack

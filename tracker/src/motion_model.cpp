@@ -32,6 +32,7 @@ void MotionModel::trust(const Se3& camera_from_model, const EdgeModel& model, co
   frames_since_trusted_ = 1;
   const Se3 ahead = Se3::exp(velocity_) * trusted_;
   motion_px_ = largest_image_shift(model, camera, trusted_, ahead);
+  speed_px_ = motion_px_;
   const real searched = real(static_cast<int>(range));
   real share = (motion_px_ - searched) / searched;
   share = share < real(0) ? real(0) : share > real(1) ? real(1) : share;
@@ -56,14 +57,20 @@ void MotionModel::reset(const Se3& camera_from_model) {
   velocity_ = Twist{};
   next_share_ = real(0);
   motion_px_ = real(0);
+  speed_px_ = real(0);
   moving_ = false;
   frames_since_trusted_ = 1;
   wide_left_ = params_.start_frames;
 }
 
 unsigned MotionModel::search_range(unsigned range) const {
+  return widened(range, params_.range_per_motion * (motion_px_ - real(static_cast<int>(range))));
+}
+
+unsigned MotionModel::retry_range(unsigned range) const { return widened(range, speed_px_); }
+
+unsigned MotionModel::widened(unsigned range, const real& beyond) const {
   const int base = static_cast<int>(range) * (wide_left_ > 0 ? 2 : 1);
-  const real beyond = params_.range_per_motion * (motion_px_ - real(static_cast<int>(range)));
   int grow = beyond > real(0) ? static_cast<int>(beyond) : 0;
   if (real(grow) < beyond) ++grow;  // rounded up
   const int most = params_.max_range_factor * static_cast<int>(range);

@@ -230,11 +230,16 @@ bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const
 
 /// The site's search: the contrast test with a reference (track_by_contrast), else, or when no
 /// edge passes it (the edge's look changed: a new background behind a silhouette, a shadow), the
-/// strongest edge within the range, as the paper's tracker takes.
+/// strongest edge within the range, as the paper's tracker takes; a strict reference (borrowed
+/// from the primitive for a point not seen last time) leaves the site unmatched instead.
 void track_site(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-                const real& alpha, int sign, const real& reference) {
+                const real& alpha, int sign, const real& reference, bool strict) {
   site.init(point.pixel.y, point.pixel.x, alpha, real(0), sign);
   if (reference != real(0) && track_by_contrast(site, grey, me, point, reference)) return;
+  if (reference != real(0) && strict) {
+    site.setState(vpMeSite::CONSTRAST);
+    return;
+  }
   site.track(grey, &me, false);
 }
 
@@ -254,14 +259,16 @@ void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<C
 }
 
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses, const std::vector<real>* references) {
+                                           const vpMe& me, int hypotheses, const std::vector<real>* references,
+                                           const std::vector<unsigned char>* strict) {
   std::vector<EdgeMatch> matches;
-  search_moving_edges(grey, points, me, hypotheses, matches, references);
+  search_moving_edges(grey, points, me, hypotheses, matches, references, strict);
   return matches;
 }
 
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references) {
+                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
+                         const std::vector<unsigned char>* strict) {
   using std::atan2;
   matches.clear();
   matches.reserve(points.size());
@@ -270,7 +277,8 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     vpMeSite site;
     const real alpha = atan2(point.normal.y, point.normal.x);
     const int sign = normal_sign(alpha);
-    track_site(site, grey, me, point, alpha, sign, references ? (*references)[p] : real(0));
+    track_site(site, grey, me, point, alpha, sign, references ? (*references)[p] : real(0),
+               strict && (*strict)[p] != 0);
     if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
     const int strongest_i = site.get_i(), strongest_j = site.get_j();
     matches.emplace_back();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Faster motion, a covering occluder and parallel-line clutter for the generated sequences.
+/// Faster motion, a path there and back, a covering occluder and parallel-line clutter for the generated sequences.
 #include "edgetrack/scene_extras.h"
 
 #include <algorithm>
@@ -24,6 +24,12 @@ std::vector<Se3> faster_poses(const std::vector<Se3>& slow, const real& speed, i
     fast.push_back(a * Se3::exp({t * step.v, t * step.w}));
   }
   return fast;
+}
+
+std::vector<Se3> there_and_back(const std::vector<Se3>& forward) {
+  std::vector<Se3> poses(forward);
+  for (size_t k = forward.size(); k-- > 1;) poses.push_back(forward[k - 1]);
+  return poses;
 }
 
 void silhouette_columns(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,

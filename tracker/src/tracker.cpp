@@ -2,6 +2,7 @@
 /// The tracker's frame loop, one line per step, timed per step like the paper's Table 1.
 #include "edgetrack/tracker.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -14,13 +15,13 @@
 namespace edgetrack {
 namespace {
 
-/// One lap per step on the host's monotonic clock.
+/// One lap per step on the host's monotonic clock, added to the frame's time for the step.
 class StepClock {
  public:
   StepClock() : last_(std::chrono::steady_clock::now()) {}
   void lap(Step step, FrameResult& result) {
     const auto now = std::chrono::steady_clock::now();
-    result.step_ns[static_cast<int>(step)] = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last_).count();
+    result.step_ns[static_cast<int>(step)] += std::chrono::duration_cast<std::chrono::nanoseconds>(now - last_).count();
     last_ = now;
   }
 
@@ -40,6 +41,12 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
     if (shift > worst) worst = shift;
   }
   return worst;
+}
+
+/// The step times and the converted pixels of `from` carried into `to`, measured after it.
+void carry_costs(const FrameResult& from, FrameResult& to) {
+  std::copy(from.step_ns, from.step_ns + kStepCount, to.step_ns);
+  to.grey_pixels = from.grey_pixels;
 }
 
 }  // namespace
@@ -72,6 +79,7 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
       me_(params.me),
       sampling_(sampling_params(params)),
       face_visibility_(model),
+      faces_before_(model),
       camera_from_model_(initial),
       motion_(initial, params.motion),
       edge_ids_(camera),
@@ -109,48 +117,76 @@ bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
 Result<FrameResult> Tracker::track(const FrameView& frame) {
   if (auto problem = check_frame(frame, camera_.width, camera_.height)) return *std::move(problem);
   FrameResult result;
-  const std::uint64_t saturations = fixedpoint::saturation_count();
-  const Se3 predicted = camera_from_model_;
-  me_.setRange(motion_.search_range(params_.me.getRange()));
-  StepClock clock;
-  begin(Step::kVisibleEdges);
-  if (edge_id_source_) edge_id_source_->draw(model_, camera_from_model_, edge_ids_);
-  else edge_ids_.render(model_, camera_from_model_);
-  face_visibility_.update(model_, camera_, camera_from_model_, params_.faces);
-  sample_control_points(model_, camera_, camera_from_model_, sampling_, sampled_);
-  face_visibility_.keep_tracked(sampled_);
-  keep_visible(sampled_, edge_ids_, visible_);
   // After a loss, or from a guessed start, the pose is a guess: the contrasts it would assign are
   // not the edges' there, nor do the distances to it tell the good matches from the bad.
   const bool guessing = motion_.lost_last_frame() || (!started_ && start_is_guess_);
-  if (guessing) references_.assign(visible_.size(), real(0));
-  else contrast_memory_.references(visible_, camera_, camera_from_model_, sampling_.step, references_);
+  faces_before_ = face_visibility_;
+  attempt(frame, camera_from_model_, motion_.search_range(params_.me.getRange()), guessing, result);
+  // A lost frame, or an uncertain one that started from a pose the velocity moved on: the last
+  // trusted pose at rest is another start. (From the trusted pose itself, a wider search on
+  // clutter only finds more of it.) It is no guess once a frame was trusted: its contrasts were
+  // taken there, and the first solve's weights at it widen with the median distance.
+  const bool another_start = result.status == TrackingStatus::kLost ||
+                             (result.status == TrackingStatus::kUncertain && motion_.predicts_motion());
+  if (another_start && params_.motion.retry_from_trusted) {
+    FrameResult retry;
+    carry_costs(result, retry);
+    face_visibility_ = faces_before_;
+    attempt(frame, motion_.trusted(), motion_.retry_range(params_.me.getRange()), !started_, retry);
+    if (retry.status == TrackingStatus::kTracked &&
+        (result.status == TrackingStatus::kLost || retry.pose.residual_scale < result.pose.residual_scale))
+      result = retry;
+    else carry_costs(retry, result);
+    result.retried = true;
+  }
+  conclude(result);
+  return result;
+}
+
+void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result) {
+  const std::uint64_t saturations = fixedpoint::saturation_count();
+  me_.setRange(range);
+  StepClock clock;
+  begin(Step::kVisibleEdges);
+  if (edge_id_source_) edge_id_source_->draw(model_, start, edge_ids_);
+  else edge_ids_.render(model_, start);
+  face_visibility_.update(model_, camera_, start, params_.faces);
+  sample_control_points(model_, camera_, start, sampling_, sampled_);
+  face_visibility_.keep_tracked(sampled_);
+  keep_visible(sampled_, edge_ids_, visible_);
+  if (guessing) {
+    references_.assign(visible_.size(), real(0));
+    borrowed_.assign(visible_.size(), 0);
+  } else {
+    contrast_memory_.references(visible_, camera_, start, sampling_.step, references_, borrowed_);
+  }
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
-  const vpImage<unsigned char>& grey = grey_scale(frame, result.grey_pixels);
+  unsigned int converted = 0;
+  const vpImage<unsigned char>& grey = grey_scale(frame, converted);
+  result.grey_pixels += converted;
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
-  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_);
+  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_, &borrowed_);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
   PoseParams pose_params = params_.pose;
   pose_params.weigh_at_start = !guessing;
-  result.pose = solve_pose(matches_, camera_, camera_from_model_, pose_params, pose_workspace_);
+  result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
   result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
-  conclude(predicted, saturations, result);
-  return result;
+  judge(start, saturations, result);
 }
 
-void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameResult& result) {
+void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& result) const {
   FrameMeasures& m = result.measures;
   m.visible = result.points_sampled;
   m.matched = static_cast<int>(matches_.size());
@@ -161,8 +197,8 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
   m.residual_scale = result.pose.residual_scale;
   const Se3& solved = result.pose.camera_from_model;
   m.correction_px = largest_normal_shift(visible_, camera_, solved);
-  const Se3 change = solved * predicted.inverse();
-  m.translation_change_mm = real(1000) * norm(solved.translation() - predicted.translation());
+  const Se3 change = solved * start.inverse();
+  m.translation_change_mm = real(1000) * norm(solved.translation() - start.translation());
   m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
   m.range = me_.getRange();
   m.pose_uncertainty_px = pose_uncertainty_px(matches_, model_, camera_, solved, m.residual_scale, params_.pose.tukey_c,
@@ -172,10 +208,14 @@ void Tracker::conclude(const Se3& predicted, std::uint64_t saturations, FrameRes
   const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);
   result.status = judged.status;
   result.reason = judged.reason;
+}
+
+void Tracker::conclude(FrameResult& result) {
   if (result.status == TrackingStatus::kLost) {
-    result.camera_from_model = predicted;
+    result.camera_from_model = camera_from_model_;
     motion_.lose(model_, camera_);
   } else {
+    const Se3& solved = result.pose.camera_from_model;
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.getRange());
     contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Prints the markdown section for docs/results/tracking_eval.md (issue 10's evaluation): generated
-# cube and wood-toy sequences (slow, fast, occluded, cluttered) tracked with the defaults and a
-# camera-only XML, our tracker and ViSP's side by side; ViSP's real mbt/cube with its files as
-# shipped, at 640x480 and QVGA, against ViSP's own edge tracker via `edgetrack compare`.
+# cube and wood-toy sequences (slow, fast, reversing, occluded, cluttered) tracked with the
+# defaults and a camera-only XML, our tracker and ViSP's side by side, and the S40.23 build
+# against the double one; the tracking status cases (noise, flat, covered, leaving the view);
+# ViSP's real mbt/cube with its files as shipped, at 640x480 and QVGA, against ViSP's own edge
+# tracker via `edgetrack compare`.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
@@ -11,9 +13,11 @@ source "$here/../lib.sh"
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracking_eval.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-bench=$(bench_tree host double edgetrack tracking_eval_me_offsets)
+bench=$(bench_tree host double edgetrack tracking_eval_me_offsets bench_status_cases)
 edgetrack=$bench/app/edgetrack
 offsets=$bench/tests/bench/tracking_eval/tracking_eval_me_offsets
+status_cases=$bench/tests/bench/tracking_eval/bench_status_cases
+edgetrack_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
 if ! "$edgetrack" compare --help >/dev/null 2>&1; then
   echo "tracking_eval: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
   exit 1
@@ -24,6 +28,7 @@ fast_speed=4.2   # the paper's path 4.2 times faster: about 12 px per QVGA frame
 cover_share=0.3
 clutter_mm=3
 clutter_offsets="3 5 8"   # mm beside the edges: where each tracker breaks
+reverse_frames=86   # there and back, turning at frame 43, where the fast path moves fastest
 
 # value KEY FILE: the value of KEY=... on the first line of FILE that has it.
 value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }
@@ -35,20 +40,27 @@ synth_kind() {
   "$edgetrack" synth --out "$work/$name" --model "$model" "$@" >"$work/$name.txt"
 }
 
-# generated_row LABEL NAME MODEL: our `track` (its lost rule) and both trackers in `compare`.
+# generated_row LABEL NAME MODEL: our `track` (its lost rule) and both trackers in `compare`;
+# the S40.23 build's `track` against the double one's poses (their truth columns).
 generated_row() {
   local label=$1 seq=$work/$2 model=$3
-  "$edgetrack" track --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
-    --images "$seq/frames/frame%04d.ppm" --poses "$work/poses.csv" --quiet >/dev/null
+  local args=(--model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos"
+              --images "$seq/frames/frame%04d.ppm" --quiet)
+  "$edgetrack" track "${args[@]}" --poses "$work/poses.csv" >"$work/track.txt"
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
+  "$edgetrack_s40" track "${args[@]}" --poses "$work/poses_s40.csv" >/dev/null
+  cut -d, -f1-7 "$work/poses.csv" >"$work/double_poses.csv"
+  "$edgetrack" eval --poses "$work/poses_s40.csv" --truth "$work/double_poses.csv" >"$work/s40.txt"
   "$edgetrack" compare --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
     --images "$seq/frames/frame%04d.ppm" --truth "$seq/truth.csv" 2>/dev/null >"$work/compare.txt"
-  local motion share
+  local motion share retried
   motion=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$seq.txt")
   share=$(sed -n 's/.*covers \([0-9.]*\) % .*/\1 %/p' "$seq.txt")
-  printf '| %s | %s | %s | %d | %.3f | %.3f | %.3f | %d | %.3f | %.3f | %.3f | %.3f / %.3f |\n' "$label" "$motion" "${share:--}" \
-    "$(value lost "$work/eval.txt")" "$(value distance_mm "$work/eval.txt")" "$(value max_distance_mm "$work/eval.txt")" \
-    "$(value rotation_deg "$work/eval.txt")" "$(value visp_lost "$work/compare.txt")" \
+  retried=$(sed -n 's/^ *\([0-9]*\) frames retried.*, \([0-9]*\) of them.*/\1 \/ \2/p' "$work/track.txt")
+  printf '| %s | %s | %s | %d | %s | %.3f | %.3f | %.3f | %.4f | %d | %.3f | %.3f | %.3f | %.3f / %.3f |\n' "$label" "$motion" \
+    "${share:--}" "$(value lost "$work/eval.txt")" "${retried:-0 / 0}" "$(value distance_mm "$work/eval.txt")" \
+    "$(value max_distance_mm "$work/eval.txt")" "$(value rotation_deg "$work/eval.txt")" \
+    "$(value max_distance_mm "$work/s40.txt")" "$(value visp_lost "$work/compare.txt")" \
     "$(value visp_distance_mm "$work/compare.txt")" "$(value visp_max_distance_mm "$work/compare.txt")" \
     "$(value visp_rotation_deg "$work/compare.txt")" "$(value ours_median_ms "$work/compare.txt")" \
     "$(value visp_median_ms "$work/compare.txt")"
@@ -115,6 +127,7 @@ for model in cube60 wood_toy; do
   synth_kind "${model}_fast" "$models/$model.cao" --speed "$fast_speed"
   synth_kind "${model}_cover" "$models/$model.cao" --cover "$cover_share"
   synth_kind "${model}_clutter" "$models/$model.cao" --clutter "$clutter_mm"
+  synth_kind "${model}_reverse" "$models/$model.cao" --speed "$fast_speed" --reverse --frames "$reverse_frames"
 done
 
 echo "## Evaluation sequences: fast motion, occlusion, clutter, and ViSP's mbt/cube (tracking_eval)"
@@ -123,24 +136,44 @@ echo "\`tests/bench/tracking_eval/results.sh\`: host double build, $(bench_machi
 echo
 echo "Generated by \`edgetrack synth\` (OSMesa, QVGA, px = py = 220, 60 frames, noise 2, blur 0.6 px):"
 echo "\"slow\" is the paper's path; \"fast\" the same path $fast_speed times faster (\`--speed $fast_speed\`);"
+echo "\"reversal\" that fast path there and back, $reverse_frames frames (\`--reverse --frames $reverse_frames\`): it turns at"
+echo "frame $((reverse_frames / 2)), where it moves fastest, so the motion reverses at once by twice a frame's;"
 echo "\"occluder\" a dark board in front sweeping across the object, sized each frame to cover"
 echo "$cover_share of its image (\`--cover $cover_share\`); \"clutter\" dark lines parallel to every model edge,"
 echo "$clutter_mm mm beside it (\`--clutter $clutter_mm\`, $(sed -n 's/.* \([0-9.]*\) px off them.*/\1/p' "$work/cube60_clutter.txt") px off the cube's edges in the first frame)."
 echo "Both trackers start from the true first pose with their defaults and the camera-only XML that"
-echo "synth writes. Ours: \`edgetrack track\` (its lost rule) and \`edgetrack eval\`; ViSP 3.5's"
+echo "synth writes. Ours: \`edgetrack track\` (its lost rule) and \`edgetrack eval\`; \"retried\": the frames"
+echo "it ran again from the last trusted pose / of those, the ones the retry tracked (docs/ARCHITECTURE.md);"
+echo "\"S40.23 - double\": the largest per-frame distance between the camera positions of the S40.23 and"
+echo "the double builds' \`track\`. ViSP 3.5's"
 echo "vpMbGenericTracker (edge): \`edgetrack compare --truth\`, lost when track() throws. Errors: the"
 echo "camera position in the object frame (mean and largest distance, mm) and the rotation (degrees);"
 echo "median ms of each tracking call in \`compare\`."
 echo
-echo "| sequence | motion px/frame | covered | lost | mean mm | largest mm | rotation deg | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg | median ms ours / ViSP |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| sequence | motion px/frame | covered | lost | retried | mean mm | largest mm | rotation deg | S40.23 - double mm | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg | median ms ours / ViSP |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
   [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
   generated_row "$name, slow" "${model}_slow" "$models/$model.cao"
   generated_row "$name, fast" "${model}_fast" "$models/$model.cao"
+  generated_row "$name, reversal" "${model}_reverse" "$models/$model.cao"
   generated_row "$name, occluder" "${model}_cover" "$models/$model.cao"
   generated_row "$name, clutter" "${model}_clutter" "$models/$model.cao"
 done
+echo
+echo "Tracking status (\`bench_status_cases\`, the cases of tests/tracker/status_cases.h, checked by"
+echo "test_tracking_status.cxx): the generated QVGA cube (the test-image renderer) from the true first pose"
+echo "with the defaults, with frames of uniform noise, of one flat grey, or of the background alone (the cube"
+echo "fully covered); and leaving the view sideways, accelerating to about 9 px per frame. \"bad\": the"
+echo "frames without a trackable object (leaving: from the first whose true pose leaves fewer than 6 control"
+echo "points); \"missed\": bad frames not reported lost; \"wrongly lost\": lost frames outside the bad ones"
+echo "(leaving: among the frames with the cube wholly in view); \"back\": frames from the object's return"
+echo "to the first tracked within 1 mm of the truth (that frame), and the largest error from then on."
+echo "On the real sequences, where the overlay stays on the object, no frame is lost: \"track lost\" below."
+echo
+echo "| case | frames | bad | first lost | lost | missed | wrongly lost | back | retried |"
+echo "|---|---:|---:|---:|---:|---:|---:|---|---:|"
+"$status_cases"
 echo
 echo "ViSP's real mbt/cube (218 frames) with its files as shipped: \`cube.xml\` alone as \`--camera\`,"
 echo "\`cube.0.pos\`, at 640x480 and halved to QVGA (\`--downscale 2\`: camera, sample step and range"

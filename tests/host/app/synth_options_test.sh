@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The evaluation options of `edgetrack synth`, one case per call: synth_options_test.sh EDGETRACK
 # TMPDIR CASE. What synth measures and prints (motion, covered share, clutter offset) must be
-# what was asked for; bad values are refused with one line; a fast sequence is tracked.
+# what was asked for, --reverse turns back over the same poses; bad values are refused with one line; a fast sequence is tracked.
 set -u
 edgetrack=$1
 work=$2/$3
@@ -26,6 +26,16 @@ case $name in
     [ "$(head -n 2 "$work/fast/truth.csv" | tail -n 1)" = "$(head -n 2 "$work/slow/truth.csv" | tail -n 1)" ] ||
       fail "the fast path does not start where the slow one does"
     [ "$(wc -l <"$work/fast/truth.csv")" -eq 11 ] || fail "expected 10 truth rows" ;;
+  synth_reverse_turns_back)
+    # 10 frames: poses 0..5 of the path, then back over 4..1.
+    synth --out "$work/ahead" --frames 6 >/dev/null || fail "synth failed"
+    synth --out "$work/seq" --reverse >/dev/null || fail "synth --reverse failed"
+    [ "$(wc -l <"$work/seq/truth.csv")" -eq 11 ] || fail "expected 10 truth rows"
+    pose() { sed -n "$(($2 + 2))p" "$1/truth.csv" | cut -d, -f2-; }
+    [ "$(pose "$work/seq" 5)" = "$(pose "$work/ahead" 5)" ] || fail "frame 5 is not the path's pose 5 (the turn)"
+    [ "$(pose "$work/seq" 6)" = "$(pose "$work/ahead" 4)" ] || fail "frame 6 is not the path's pose 4"
+    [ "$(pose "$work/seq" 9)" = "$(pose "$work/ahead" 1)" ] || fail "frame 9 is not the path's pose 1"
+    echo "ok: there and back" ;;
   synth_cover_measured)
     synth --out "$work/seq" --cover 0.3 | tee "$work/out.txt" || fail "synth --cover failed"
     read -r mean low high <<<"$(sed -n 's/.*covers \([0-9.]*\) % .*(\([0-9.]*\) to \([0-9.]*\) %).*/\1 \2 \3/p' "$work/out.txt")"

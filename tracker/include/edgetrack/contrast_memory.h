@@ -26,11 +26,19 @@ class ContrastMemory {
                 const real& within);
   /// For each point, the contrast remembered at the nearest remembered point of the same
   /// primitive, when that lies within `reach` pixels of it at camera_from_model (about one
-  /// sample step: where the edge was sampled last time); 0 where nothing is remembered.
+  /// sample step: where the edge was sampled last time). A point with none within reach whose
+  /// primitive has remembered points of one polarity takes their mean, marked in `borrowed`
+  /// (nonzero): the same edge between the same faces under the same light shows one contrast
+  /// along its length, and a point not seen last time (under an occluder, in a shadow) is only
+  /// seen again when its edge looks like that (moving_edges.h, strict). 0 where nothing is
+  /// remembered.
   void references(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
-                  const real& reach, std::vector<real>& out) const;
+                  const real& reach, std::vector<real>& out, std::vector<unsigned char>& borrowed) const;
 
  private:
+  /// The mean contrast of remembered_[first, end) when all share one sign, else 0.
+  real mean_of_one_polarity(size_t first, size_t end) const;
+
   struct Remembered {
     int edge = 0;
     Vec3 point_in_model;

@@ -28,6 +28,11 @@ struct MotionParams {
   /// Frames after the start (or a reset) searched with twice the range: the velocity is known
   /// only once two frames have been tracked.
   int start_frames = 2;
+  /// A frame lost from the prediction is tracked again from the last trusted pose, at rest,
+  /// with the range grown by the image motion of one frame at the last velocity (retry_range):
+  /// a hand that stops or reverses puts the object there, while the prediction has gone on by
+  /// a frame's motion the other way. Frames tracked from the prediction cost nothing more.
+  bool retry_from_trusted = true;
 };
 
 /// The largest image displacement of a model vertex between two poses (vertices behind the
@@ -44,6 +49,11 @@ class MotionModel {
   /// The pose to start the next frame from: the last trusted pose moved on by the velocity
   /// once per frame since it (the velocity's share shrinks by `lost_damping` per lost frame).
   const Se3& prediction() const { return prediction_; }
+  /// The last trusted pose (the start pose before any frame is trusted).
+  const Se3& trusted() const { return trusted_; }
+  /// True when the prediction is not the last trusted pose: the velocity moved it on, or
+  /// frames were lost since.
+  bool predicts_motion() const { return frames_since_trusted_ > 1 || next_share_ > real(0); }
   /// A trusted frame's pose: measures the velocity from the last trusted pose and predicts the
   /// next frame. The velocity is not applied while its image motion per frame is within the
   /// configured `range`, in full from twice the range on, and in proportion in between: the
@@ -62,14 +72,24 @@ class MotionModel {
   /// range_per_motion of the image motion of the velocity beyond it, at most
   /// max_range_factor * range.
   unsigned search_range(unsigned range) const;
+  /// The range of a retry from the last trusted pose at rest: the range of search_range before
+  /// the motion (twice `range` while recovering) plus the image motion of one frame at the last
+  /// velocity, rounded up, at most max_range_factor * range. A reversal at the same speed
+  /// puts the edges one frame's motion from the trusted pose.
+  unsigned retry_range(unsigned range) const;
 
  private:
+  /// `range` (twice it while recovering) grown by `beyond` pixels rounded up, at most
+  /// max_range_factor * range.
+  unsigned widened(unsigned range, const real& beyond) const;
+
   MotionParams params_;
   Se3 trusted_;
   Se3 prediction_;
   Twist velocity_{};
   real next_share_{0};  ///< the share of velocity_ the next lost frame moves the prediction by
-  real motion_px_{0};   ///< the image motion of one frame at velocity_ (largest_image_shift)
+  real motion_px_{0};   ///< the image motion of the prediction's next step (largest_image_shift)
+  real speed_px_{0};    ///< the image motion of one frame at velocity_, undamped
   bool moving_ = false;  ///< a trusted frame has been seen since the start: velocity_ is measured from it
   int frames_since_trusted_ = 1;
   int wide_left_;       ///< frames still searched with twice the range

@@ -42,12 +42,20 @@ constexpr int kRefinementReachAcross = 1;
 /// candidates of the path, which are mostly the neighbours of one peak.) The pose step chooses
 /// among them (EdgeMatch::chosen); `found` is the strongest, so hypotheses = 1 is the
 /// single-hypothesis search.
+///
+/// `references` (one per point, 0: none) are the contrasts the contrast test compares with
+/// (contrast_memory.h); where none passes, the site takes the strongest edge, unless `strict`
+/// marks the point (nonzero): its reference is its primitive's, borrowed because the point
+/// itself was not seen in the last trusted frame (ContrastMemory::references), and the point
+/// then gets no match.
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                                            const vpMe& me, int hypotheses = 1,
-                                           const std::vector<real>* references = nullptr);
+                                           const std::vector<real>* references = nullptr,
+                                           const std::vector<unsigned char>* strict = nullptr);
 /// The same into `matches` (emptied first, memory reused).
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr);
+                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr,
+                         const std::vector<unsigned char>* strict = nullptr);
 
 /// The mask response at each point's own pixel, oriented along its normal (EdgeMatch::contrast):
 /// the contrast of the edge where a trusted pose projects it.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// What the generated evaluation sequences add to a model's scene, in one portable place that
 /// `edgetrack synth` (OSMesa) and the portable SceneRenderer both draw: faster motion along the
-/// same path, an occluder covering a chosen share of the object's projected area, and clutter of
+/// same path (or there and back), an occluder covering a chosen share of the object's projected area, and clutter of
 /// lines parallel to the model's edges that are not part of the tracked model.
 #pragma once
 
@@ -17,6 +17,11 @@ namespace edgetrack {
 /// screw motion between its two neighbours (exact at whole multiples); `frames` poses, or as
 /// many as `slow` reaches.
 std::vector<Se3> faster_poses(const std::vector<Se3>& slow, const real& speed, int frames);
+
+/// The path there and back: `forward`, then the same poses backwards to the first (2 n - 1
+/// poses for n): the motion reverses at once from one frame to the next at the turn, as a hand
+/// that changes its mind does.
+std::vector<Se3> there_and_back(const std::vector<Se3>& forward);
 
 /// An occluder in front of everything: image columns [x_begin, x_end) of every row.
 struct OccluderBand {

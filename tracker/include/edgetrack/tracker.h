@@ -71,7 +71,8 @@ constexpr int kStepCount = 4;
 const char* step_name(Step step);
 
 /// Called at the start and the end of each step of Tracker::track (a benchmark opens and
-/// closes its instruction-count windows there).
+/// closes its instruction-count windows there); a retried frame (FrameResult::retried) runs the
+/// four steps twice.
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
@@ -93,6 +94,10 @@ struct FrameResult {
   int points_matched = 0;  ///< of those, the ones the moving edges found and the pose kept
   unsigned int grey_pixels = 0;  ///< pixels the grey step converted
   PoseSolution pose;       ///< residuals and LM counts
+  /// Lost from the prediction, the frame was tracked again from the last trusted pose
+  /// (MotionParams::retry_from_trusted); the result is the retry's unless it too was lost. The
+  /// step times, the converted pixels and the step observer's windows cover both attempts.
+  bool retried = false;
 };
 
 class Tracker {
@@ -143,8 +148,13 @@ class Tracker {
   void end(Step step) {
     if (step_observer_) step_observer_->end(step);
   }
-  /// The status measures and rule, then the prediction for the next frame.
-  void conclude(const Se3& predicted, std::uint64_t saturations, FrameResult& result);
+  /// The four steps from `start` with the moving edges searching `range`, guessing when `start`
+  /// is a guess (no contrasts, no weights at the start), then the status of what they found.
+  void attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result);
+  /// The status measures of the attempt from `start` and the rule's judgement.
+  void judge(const Se3& start, std::uint64_t saturations, FrameResult& result) const;
+  /// The motion model and the contrast memory take the frame's result; the next frame's start.
+  void conclude(FrameResult& result);
 
   EdgeModel model_;
   PinholeCamera camera_;
@@ -152,6 +162,7 @@ class Tracker {
   vpMe me_;                  ///< params_.me with this frame's search range
   SamplingParams sampling_;  ///< from params_: the sample step of params_.me, the border, the clipping
   FaceVisibility face_visibility_;
+  FaceVisibility faces_before_;  ///< face_visibility_ before this frame, for a retry
   Se3 camera_from_model_;
   MotionModel motion_;
   EdgeIdBuffer edge_ids_;
@@ -169,6 +180,7 @@ class Tracker {
   PoseWorkspace pose_workspace_;
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
+  std::vector<unsigned char> borrowed_;  ///< per visible point, nonzero: its reference is its primitive's
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
 };
