@@ -24,7 +24,8 @@ constexpr int kUnconstrainedPx = 1000;
 /// its projection's displacement, px. It is what the overlay may be off by where no match holds
 /// it: with part of the model in view, directions the remaining edges barely see (depth along
 /// one edge, a turn about it) give the unseen corners large values. Matches are taken as
-/// independent, so it is a lower bound where an edge is off as a whole. At most
+/// independent and sigma as given, so it is a lower bound where an edge is off as a whole, or
+/// where a few matches fit by chance more closely than edges are located. At most
 /// kUnconstrainedPx, which it also is when the information matrix is singular.
 real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
                          const Se3& pose, const real& sigma, const real& tukey_c, const real& tukey_floor);
