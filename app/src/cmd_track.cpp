@@ -90,12 +90,13 @@ void print_detections(const RunTotals& totals) {
 void print_status(int frame, const edgetrack::FrameResult& result) {
   const edgetrack::FrameMeasures& m = result.measures;
   std::fprintf(stderr, "frame %d %s (%s): %d of %d visible points matched, %d kept; residual scale %.2f px over "
-               "range %u px; correction %.1f px; pose change %.1f mm %.1f deg; %llu saturations%s\n",
+               "range %u px; correction %.1f px; pose change %.1f mm %.1f deg; %llu saturations; "
+               "pose uncertainty %.2f px%s\n",
                frame, edgetrack::status_name(result.status), edgetrack::reason_name(result.reason), m.matched,
                m.visible, m.kept, static_cast<double>(m.residual_scale), m.range,
                static_cast<double>(m.correction_px), static_cast<double>(m.translation_change_mm),
                static_cast<double>(m.rotation_change_deg), static_cast<unsigned long long>(m.saturations),
-               result.retried ? "; retried from the last trusted pose" : "");
+               static_cast<double>(m.pose_uncertainty_px), result.retried ? "; retried from the last trusted pose" : "");
 }
 
 /// The initial pose from a .init file and the image positions of its points (full-size pixels).

@@ -19,6 +19,8 @@ DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
 DECLARE(test_auto_init_recovery);
+DECLARE(test_pose_uncertainty_measure);
+DECLARE(test_pose_unconstrained_leaving_view);
 DECLARE(test_back_and_forth);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
@@ -41,6 +43,8 @@ void register_tests() {
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);
   REGISTER(test_auto_init_recovery);
+  REGISTER(test_pose_uncertainty_measure);
+  REGISTER(test_pose_unconstrained_leaving_view);
   REGISTER(test_back_and_forth);
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);

@@ -9,6 +9,7 @@
 
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
+#include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/tracker_params.h"
 
 namespace edgetrack {
@@ -201,6 +202,8 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
   m.translation_change_mm = real(1000) * norm(solved.translation() - start.translation());
   m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
   m.range = me_.getRange();
+  m.pose_uncertainty_px = pose_uncertainty_px(matches_, model_, camera_, solved, m.residual_scale, params_.pose.tukey_c,
+                                              params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
   const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);

@@ -28,6 +28,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kSaturated: return "fixed-point saturation";
     case StatusReason::kNotDetected: return "not found by the detector";
     case StatusReason::kUnconfirmed: return "detected, not yet confirmed by a tracked frame";
+    case StatusReason::kPoseUnconstrained: return "the matches leave the pose unconstrained";
   }
   return "?";
 }
@@ -49,6 +50,7 @@ FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int 
   if (m.residual_scale > params.tracked_scale_px) return uncertain(StatusReason::kLooseFit);
   if (m.correction_px > real(static_cast<int>(m.range))) return uncertain(StatusReason::kLargeCorrection);
   if (m.saturations > 0) return uncertain(StatusReason::kSaturated);
+  if (m.pose_uncertainty_px > params.max_pose_uncertainty_px) return uncertain(StatusReason::kPoseUnconstrained);
   return {TrackingStatus::kTracked, StatusReason::kNone};
 }
 

@@ -25,9 +25,10 @@ enum class StatusReason {
   kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
   kSaturated,         ///< uncertain: fixed-point results saturated during the frame
   kNotDetected,       ///< lost: the detector ran and did not find the model (AutoInitTracker)
-  kUnconfirmed        ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
+  kUnconfirmed,       ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
+  kPoseUnconstrained  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kUnconfirmed) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kPoseUnconstrained) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);
@@ -47,6 +48,7 @@ struct FrameMeasures {
   unsigned range = 0;       ///< the moving-edge range this frame searched, px
   bool after_loss = false;  ///< the previous frame was lost
   std::uint64_t saturations = 0;  ///< fixed-point saturations counted during the frame (0 in float builds)
+  real pose_uncertainty_px{0};    ///< px, the overlay's standard deviation the matches leave (pose_uncertainty.h)
 };
 
 /// The rule's thresholds, each with what it stands for.
@@ -62,6 +64,9 @@ struct StatusParams {
   real lost_scale_floor_px = real(1.5);
   real min_matched_share = real(0.5);  ///< below: uncertain
   real min_inlier_share = real(0.5);   ///< below: uncertain (the median scale breaks down at half)
+  /// Above: uncertain. One standard deviation of a model vertex's image position that the
+  /// residual noise leaves in the pose: past a pixel the overlay visibly wanders where no edge holds it.
+  real max_pose_uncertainty_px = real(1);
 };
 
 struct FrameStatus {
@@ -71,7 +76,9 @@ struct FrameStatus {
 
 /// The status rule: lost when there is nothing to track, the pose could not be solved, or the
 /// residuals look like chance; uncertain when the pose rests on a minority of the model, fits
-/// loosely, moved farther than the search reaches, or fixed point saturated; tracked otherwise.
+/// loosely, moved farther than the search reaches, fixed point saturated, or the matches leave
+/// some of the model's image position uncertain by more than max_pose_uncertainty_px; tracked
+/// otherwise.
 /// After a lost frame an uncertain one stays lost: the prediction it started from is weak, and
 /// a wider search on clutter finds fits that are loose but not at chance. Fewer kept matches
 /// than twice `min_points` (12 for six pose parameters) leave too few residual degrees of

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// How well a frame's matches pin the solved pose down: the standard deviation of the model's
+/// image displacement that the residual noise leaves in the pose (docs/ARCHITECTURE.md,
+/// "Tracking status").
+#pragma once
+
+#include <vector>
+
+#include "edgetrack/edge_match.h"
+#include "edgetrack/edge_model.h"
+#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/se3.h"
+
+namespace edgetrack {
+
+/// Returned, and the most returned, when the matches leave a pose direction unconstrained.
+constexpr int kUnconstrainedPx = 1000;
+
+/// The pose's covariance to first order, sigma^2 (J^T W J)^-1, from the point-to-line Jacobian J
+/// of the matches at `pose`, Tukey's weights W of their distances there (cut at
+/// max(tukey_c sigma, tukey_floor) px, as the pose step's last round) and the residual scale
+/// sigma (px), propagated to the image: the largest over the model's vertices (cylinder axis
+/// ends and circle centres for curved primitives) in front of the camera of the RMS length of
+/// its projection's displacement, px. It is what the overlay may be off by where no match holds
+/// it: with part of the model in view, directions the remaining edges barely see (depth along
+/// one edge, a turn about it) give the unseen corners large values. Matches are taken as
+/// independent and sigma as given, so it is a lower bound where an edge is off as a whole, or
+/// where a few matches fit by chance more closely than edges are located. At most
+/// kUnconstrainedPx, which it also is when the information matrix is singular.
+real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
+                         const Se3& pose, const real& sigma, const real& tukey_c, const real& tukey_floor);
+
+}  // namespace edgetrack

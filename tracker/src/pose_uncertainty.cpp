@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The pose's first-order covariance propagated to the model's image displacement.
+#include "edgetrack/pose_uncertainty.h"
+
+#include <cmath>
+
+namespace edgetrack {
+namespace {
+
+constexpr int kDof = 6;
+
+/// The pose perturbation the covariance is over: a translation v (mm) and a turn w about the
+/// model's centre, scaled by the model's radius (mm at its farthest vertex), so that every
+/// column of the Jacobian is pixels per millimetre of some point's motion: balanced columns keep
+/// the fixed-point Cholesky well within range.
+struct Perturbation {
+  Vec3 centre;          ///< model frame, metres
+  real radius_mm{1};
+};
+
+template <typename Visit>
+void for_each_overlay_point(const EdgeModel& model, Visit visit) {
+  for (const Vec3& v : model.vertices) visit(v);
+  for (const Cylinder& c : model.cylinders) {
+    visit(c.axis_a);
+    visit(c.axis_b);
+  }
+  for (const Circle& c : model.circles) visit(c.centre);
+}
+
+Perturbation perturbation_of(const EdgeModel& model) {
+  using std::sqrt;
+  Perturbation p;
+  Vec3 sum;
+  int count = 0;
+  for_each_overlay_point(model, [&](const Vec3& v) {
+    sum = sum + v;
+    ++count;
+  });
+  if (count == 0) return p;
+  p.centre = (real(1) / real(count)) * sum;
+  real farthest(0);  // mm^2: one square root at the end
+  for_each_overlay_point(model, [&](const Vec3& v) {
+    const Vec3 d = real(1000) * (v - p.centre);
+    const real r2 = dot(d, d);
+    if (r2 > farthest) farthest = r2;
+  });
+  if (farthest > real(0)) p.radius_mm = sqrt(farthest);
+  return p;
+}
+
+/// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
+/// division per point: they are dear without a divider), `offset_mm` its offset from the
+/// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
+void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
+                    const Vec2& n, real g[kDof]) {
+  const real nu = n.x * camera.px * inv_z;
+  const real nv = n.y * camera.py * inv_z;
+  const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
+  // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).
+  const Vec3 turn = -cross(a, offset_mm);
+  g[0] = a.x;
+  g[1] = a.y;
+  g[2] = a.z;
+  g[3] = turn.x;
+  g[4] = turn.y;
+  g[5] = turn.z;
+}
+
+/// Rescales the lower triangle of the information matrix from w in radians to w times the radius
+/// (mm at the farthest vertex), once per frame rather than per match.
+void scale_turns(real a[kDof][kDof], const real& inv_radius) {
+  for (int i = 3; i < kDof; ++i)
+    for (int j = 0; j <= i; ++j) {
+      a[i][j] = inv_radius * a[i][j];
+      if (j >= 3) a[i][j] = inv_radius * a[i][j];  // not inv_radius^2: S40.23 keeps 1/r to 1e-5, not its square
+    }
+}
+
+/// In-place Cholesky A = L L^T of the lower triangle; false when a pivot is not clearly positive
+/// (a direction the matches do not see).
+bool cholesky(real a[kDof][kDof]) {
+  using std::sqrt;
+  real largest(0);
+  for (int k = 0; k < kDof; ++k)
+    if (a[k][k] > largest) largest = a[k][k];
+  const real least = real(1e-6) * largest;
+  if (!(largest > real(0))) return false;
+  for (int k = 0; k < kDof; ++k) {
+    real pivot = a[k][k];
+    for (int j = 0; j < k; ++j) pivot -= a[k][j] * a[k][j];
+    if (!(pivot > least)) return false;
+    a[k][k] = sqrt(pivot);
+    const real inv = real(1) / a[k][k];
+    for (int i = k + 1; i < kDof; ++i) {
+      real s = a[i][k];
+      for (int j = 0; j < k; ++j) s -= a[i][j] * a[k][j];
+      a[i][k] = s * inv;
+    }
+  }
+  return true;
+}
+
+/// |L^-1 g|^2 (`inv_diagonal`: 1 / L's diagonal), or a negative value when a component passes
+/// `cap` (the variance is then off scale).
+real whitened_square(const real l[kDof][kDof], const real inv_diagonal[kDof], const real g[kDof], const real& cap) {
+  using std::fabs;
+  real z[kDof];
+  real sum(0);
+  for (int k = 0; k < kDof; ++k) {
+    real s = g[k];
+    for (int j = 0; j < k; ++j) s -= l[k][j] * z[j];
+    z[k] = s * inv_diagonal[k];
+    if (fabs(z[k]) > cap) return real(-1);
+    sum += z[k] * z[k];
+  }
+  return sum;
+}
+
+}  // namespace
+
+real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
+                         const Se3& pose, const real& sigma, const real& tukey_c, const real& tukey_floor) {
+  using std::fabs;
+  using std::sqrt;
+  const real unconstrained = real(kUnconstrainedPx);
+  const Perturbation perturbation = perturbation_of(model);
+  const real inv_radius = real(1) / perturbation.radius_mm;
+  const Vec3 centre_mm = real(1000) * (pose * perturbation.centre);
+  real cut = tukey_c * sigma;
+  if (cut < tukey_floor) cut = tukey_floor;
+  const real inv_cut = real(1) / cut;
+  real information[kDof][kDof] = {};
+  real g[kDof];
+  for (const EdgeMatch& match : matches) {
+    if (match.outlier) continue;
+    const Vec3 in_camera = real(1000) * (pose * match.point.point_in_model);
+    if (in_camera.z <= real(0)) continue;
+    const real inv_z = real(1) / in_camera.z;
+    const Vec2 pixel{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
+    const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
+    if (u >= real(1)) continue;
+    const real weight = (real(1) - u * u) * (real(1) - u * u);
+    pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    for (int i = 0; i < kDof; ++i) {
+      const real wg = weight * g[i];
+      for (int j = 0; j <= i; ++j) information[i][j] += wg * g[j];
+    }
+  }
+  scale_turns(information, inv_radius);
+  if (!cholesky(information)) return unconstrained;
+  real inv_diagonal[kDof];
+  for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
+  // A whitened component beyond this is a direction no match sees; it also keeps the squares
+  // within S40.23's range.
+  const real cap = real(1e4);
+  real worst(0);  // the largest |L^-1 g_u|^2 + |L^-1 g_v|^2
+  bool off_scale = false;
+  for_each_overlay_point(model, [&](const Vec3& v) {
+    const Vec3 in_camera = real(1000) * (pose * v);
+    if (off_scale || in_camera.z <= real(0)) return;
+    const real inv_z = real(1) / in_camera.z;
+    const Vec3 offset = in_camera - centre_mm;
+    pixel_gradient(camera, in_camera, inv_z, offset, Vec2{real(1), real(0)}, g);
+    for (int k = 3; k < kDof; ++k) g[k] = inv_radius * g[k];
+    const real along_u = whitened_square(information, inv_diagonal, g, cap);
+    pixel_gradient(camera, in_camera, inv_z, offset, Vec2{real(0), real(1)}, g);
+    for (int k = 3; k < kDof; ++k) g[k] = inv_radius * g[k];
+    const real along_v = whitened_square(information, inv_diagonal, g, cap);
+    if (along_u < real(0) || along_v < real(0)) {
+      off_scale = true;
+      return;
+    }
+    if (along_u + along_v > worst) worst = along_u + along_v;
+  });
+  if (off_scale) return unconstrained;
+  const real deviation = sigma * sqrt(worst);
+  return deviation > unconstrained ? unconstrained : deviation;
+}
+
+}  // namespace edgetrack
