@@ -327,9 +327,42 @@ void check_euclidean_norm(std::uint64_t seed) {
   TEST("the norm of nothing is 0", euclidean_norm(0, x), T(0));
 }
 
-void test_fixed64_euclidean_norm() {
+/// dot_product(n, a, b) is the exact sum of the products rounded once (check_rounded), or
+/// saturates and counts when that is out of range.
+template <int F>
+void check_dot_product(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  int failures = 0, printed = 0;
+  T a[80], b[80];
+  for (int i = 0; i < kSamples / 20; ++i) {
+    const int n = 1 + static_cast<int>(random.below(80));
+    const int bits = i % 3 == 0 ? 62 : i % 3 == 1 ? 40 : 30;  // past, near and within the fast path
+    Exact sum(0);
+    for (int k = 0; k < n; ++k) {
+      a[k] = T::from_raw(random.raw(bits));
+      b[k] = T::from_raw(random.raw(bits));
+      sum = sum + Exact(a[k].raw()) * Exact(b[k].raw());
+    }
+    const std::uint64_t before = fixedpoint::saturation_count();
+    const T r = dot_product(n, a, b);
+    const std::uint64_t counted = fixedpoint::saturation_count() - before;
+    if (!check_rounded(sum, Exact::power_of_two(F), r.raw(), counted).pass) {
+      ++failures;
+      fixed64_test::report_failure(printed, "dot product of " + std::to_string(n) + " pairs gave " + describe(r));
+    }
+  }
+  TEST((std::string("dot_product of ") + type_name<F>() + " rounds the exact sum once, or saturates").c_str(),
+       failures, 0);
+  const T half_ulp[2] = {T::from_raw(1), T::from_raw(1)}, half[2] = {T(0.5), T(0.5)};
+  TEST("two products of half an ulp each sum to one ulp", dot_product(2, half_ulp, half).raw(), 1);
+}
+
+void test_fixed64_norm_and_dot_product() {
   check_euclidean_norm<16>(0x5eed0011);
   check_euclidean_norm<23>(0x5eed0012);
+  check_dot_product<16>(0x5eed0013);
+  check_dot_product<23>(0x5eed0014);
 }
 
 void test_fixed64_add_subtract() {
@@ -463,7 +496,7 @@ TESTMAIN(test_fixed64_add_subtract)
 TESTMAIN(test_fixed64_multiply)
 TESTMAIN(test_fixed64_divide)
 TESTMAIN(test_fixed64_sqrt)
-TESTMAIN(test_fixed64_euclidean_norm)
+TESTMAIN(test_fixed64_norm_and_dot_product)
 TESTMAIN(test_fixed64_multiply_fast_path)
 TESTMAIN(test_fixed64_divide_fast_path)
 TESTMAIN(test_wide_uint_reciprocal_and_division)

@@ -13,7 +13,15 @@
 
 namespace edgetrack {
 
+/// The least-squares solver of each pose solve. Both minimise the same residuals with the same
+/// tolerances, evaluation budgets and robust rounds.
+enum class PoseSolver {
+  kLmder,            ///< MINPACK's lmder (QR of the Jacobian, trust region): the faithful default
+  kNormalEquations,  ///< LM on the 6 x 6 normal equations (normal_equations_lm.h): fewer instructions
+};
+
 struct PoseParams {
+  PoseSolver solver = PoseSolver::kLmder;
   int max_evaluations = 30;  ///< residual evaluations in the first (unweighted) solve, at most
   /// Residual evaluations per robust solve, at most. 2 is one LM step from the previous
   /// round's pose (MINPACK counts the start as the first evaluation): iteratively re-weighted

@@ -342,6 +342,46 @@ constexpr fixed64<F> euclidean_norm(int n, const fixed64<F>* x) {
   return fixed64<F>::from_raw(static_cast<std::int64_t>((root << k) + (std::uint64_t{1} << (k - 1))));
 }
 
+/// a[0] b[0] + ... + a[n-1] b[n-1] with one rounding: the raw products are summed exactly (128
+/// bits) and the sum is rounded to nearest (halves away from zero) once, so the error is at most
+/// half an ulp; a sum past the range saturates and counts (as does one whose partial sum passed
+/// 2^(126-F) times max(), where the exact sum would need more than 128 bits). Operands that fit int32 take one
+/// signed 32 x 32-bit product each, and no rounding or saturation test per element.
+template <int F>
+constexpr fixed64<F> dot_product(int n, const fixed64<F>* a, const fixed64<F>* b) {
+  constexpr std::int64_t kCap = std::int64_t{1} << 62;  // |sum| at or past 2^126 saturates the result
+  std::uint64_t low = 0;
+  std::int64_t high = 0;  // the sum, high * 2^64 + low (two's complement)
+  int saturated = 0;      // the sign of a partial sum that passed the cap
+  for (int i = 0; i < n && saturated == 0; ++i) {
+    const std::int64_t x = a[i].raw(), y = b[i].raw();
+    const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(x));
+    const auto y32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(y));
+    if (__builtin_expect(((x ^ x32) | (y ^ y32)) == 0, 1)) {
+      const std::int64_t product = std::int64_t{x32} * y32;
+      const std::uint64_t sum = low + static_cast<std::uint64_t>(product);
+      high += (product < 0 ? -1 : 0) + (sum < low ? 1 : 0);
+      low = sum;
+    } else {
+      detail::Uint128 m = detail::multiply(detail::magnitude(x), detail::magnitude(y));
+      if ((x ^ y) < 0) m = detail::Uint128{0, 0} - m;
+      const std::uint64_t sum = low + m.lo;
+      high += static_cast<std::int64_t>(m.hi) + (sum < low ? 1 : 0);
+      low = sum;
+      // Past 2^126 a partial sum is 2^(126-F) times max(): sticky, as a running sum would be.
+      if (high > kCap || high < -kCap) saturated = high < 0 ? -1 : 1;
+    }
+  }
+  if (saturated != 0) {
+    detail::count_saturation();
+    return saturated < 0 ? std::numeric_limits<fixed64<F>>::lowest() : std::numeric_limits<fixed64<F>>::max();
+  }
+  const bool negative = high < 0;
+  detail::Uint128 m{static_cast<std::uint64_t>(high), low};
+  if (negative) m = detail::Uint128{0, 0} - m;
+  return fixed64<F>::from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(m, F)));
+}
+
 /// Largest whole number not above x; exact.
 template <int F>
 constexpr fixed64<F> floor(fixed64<F> x) {
