@@ -54,7 +54,8 @@ ScaledSystem scaled_system(int m, int n, const real* fjac, int ldfjac, const rea
   return sys;
 }
 
-/// Solves (s + damping I) y = -g by Cholesky; false when a pivot is below kSmallestPivot.
+/// Solves (s + damping I) y = -g by Cholesky; false when a pivot is below kSmallestPivot. A
+/// fixed-size factorisation on the stack: vnl_cholesky's vnl_matrix would allocate per solve.
 bool damped_step(const ScaledSystem& sys, int n, const real& damping, real* y) {
   using std::sqrt;
   real l[kMaxNormalUnknowns][kMaxNormalUnknowns];
