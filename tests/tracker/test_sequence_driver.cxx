@@ -3,6 +3,7 @@
 #include "testlib/testlib_register.h"
 
 DECLARE(test_tracking_cube);
+DECLARE(test_normal_equations_keep_lmder_poses);
 DECLARE(test_tracking_wood_toy);
 DECLARE(test_tracking_cube_cylinder);
 DECLARE(test_tracker_grey);
@@ -27,6 +28,7 @@ DECLARE(test_edge_contrast);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
+  REGISTER(test_normal_equations_keep_lmder_poses);
   REGISTER(test_tracking_wood_toy);
   REGISTER(test_tracking_cube_cylinder);
   REGISTER(test_tracker_grey);

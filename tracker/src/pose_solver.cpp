@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "edgetrack/normal_equations_lm.h"
 #include "netlib/minpack.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_rotation_matrix.h"
@@ -211,7 +212,8 @@ bool keeps_best_estimate(int code) {
 }
 
 /// One Levenberg-Marquardt solve (MINPACK's lmder with the arguments vnl_levenberg_marquardt
-/// passes it, called directly so that its buffers are the workspace's) over `matches` from
+/// passes it, called directly so that its buffers are the workspace's, or with
+/// PoseSolver::kNormalEquations normal_equations_lm) over `matches` from
 /// `start`, stopped after `max_evaluations` residual evaluations; adds its counts to
 /// `solution`. With `distances`, also the unweighted signed point-to-line distances at the new
 /// pose.
@@ -227,10 +229,15 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
   real x[n] = {}, diag[n] = {}, qtf[n] = {}, wa1[n] = {}, wa2[n] = {}, wa3[n] = {};
   int ipvt[n] = {};
   int nfev = 0, njev = 0;
-  const int info = netlib::lmder<real>(&PointToLineProblem::evaluate, &problem, m, n, x, workspace.residuals.data(),
-                                       workspace.jacobian.data(), m, params.f_tolerance, params.x_tolerance,
-                                       params.g_tolerance, max_evaluations, diag, 1, real(100), 0, &nfev, &njev, ipvt,
-                                       qtf, wa1, wa2, wa3, workspace.work.data());
+  const int info =
+      params.solver == PoseSolver::kNormalEquations
+          ? normal_equations_lm(&PointToLineProblem::evaluate, &problem, m, n, x, workspace.residuals.data(),
+                                workspace.jacobian.data(), m, params.f_tolerance, params.x_tolerance,
+                                params.g_tolerance, max_evaluations, workspace.work.data(), &nfev, &njev)
+          : netlib::lmder<real>(&PointToLineProblem::evaluate, &problem, m, n, x, workspace.residuals.data(),
+                                workspace.jacobian.data(), m, params.f_tolerance, params.x_tolerance,
+                                params.g_tolerance, max_evaluations, diag, 1, real(100), 0, &nfev, &njev, ipvt, qtf,
+                                wa1, wa2, wa3, workspace.work.data());
   solution.evaluations += problem.evaluations();
   solution.iterations += njev;
   if (solution.evaluations == problem.evaluations()) solution.start_rms = problem.start_rms();

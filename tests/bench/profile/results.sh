@@ -101,6 +101,37 @@ while IFS= read -r name; do
 done <"$work/top"
 echo
 
+echo "### Emulated PXA270, S40.23: by area, and the gap to the 2.0 M target"
+echo
+echo "The working tree's flat profile summed by area (the first matching rule names a function's area);"
+echo "fixed-point routines kept out of line (the 128-bit multiply and divide) are counted on their own."
+echo
+echo "| area | instructions per frame | share |"
+echo "|---|---:|---:|"
+awk -F'\t' -v f="$frames" '
+  function area(n) {
+    if (n ~ /netlib::|euclidean_norm|dot_product|normal_equations_lm/) return "pose: least-squares solver (MINPACK lmder: QR, enorm, LM steps)"
+    if (n ~ /PointToLineProblem|solve_once|solve_pose|tukey_weights|median_of|choose_nearest|to_strongest|rotation|so3_/) return "pose: residuals, Jacobian, weights and rotations"
+    if (n ~ /operator\*/) return "3 x 3 matrix and vector products (every step)"
+    if (n ~ /EdgeIdBuffer|clip_and_project|to_screen|project$|fill_triangle|draw_line|face_passes|FaceVisibility/) return "visible edges: Edge-ID fill, lines and face tests"
+    if (n ~ /sample_segment|control_point|clip_to_view|keep_visible|shows/) return "visible edges: sampling the control points"
+    if (n ~ /vpMe|convolve|moving_edges|refined_edge_point|me_search_box|normal_sign|sin_or_cos/) return "moving edges"
+    if (n ~ /RGB565ToGrey|convert_to_grey/) return "grey conversion"
+    if (n ~ /ContrastMemory/) return "contrast memory"
+    if (n ~ /multiply_general|divide_general|sqrt|__udivmoddi4|__aeabi|operator\//) return "fixed-point multiply, divide, sqrt out of line"
+    if (n ~ /^mem(set|cpy|move)/) return "memset, memcpy"
+    return "other (status, prediction, bookkeeping)"
+  }
+  { a = area($1); t[a] += $2; total += $2 }
+  END { for (k in t) printf "%s\t%.0f\t%.1f\n", k, t[k] / f, 100 * t[k] / total }' "$work/working_tree.short" |
+  sort -t$'\t' -k2,2nr | awk -F'\t' '{ printf "| %s | %.0f | %.1f %% |\n", $1, $2, $3 }'
+echo
+awk -v f="$frames" '{ split($3, a, "="); t += a[2]; n++ } END {
+  g = t / n - 2000000
+  if (g > 0) printf "Whole Tracker::track: %.3f M per frame, %.3f M above the 2.0 M target.\n", t / n / 1e6, g / 1e6
+  else printf "Whole Tracker::track: %.3f M per frame, within the 2.0 M target.\n", t / n / 1e6 }' "$work/working_tree.frames"
+echo
+
 # Host: callgrind inside Tracker::track on mbt/cube at 640x480.
 host_dir=$(bench_tree host double edgetrack)
 valgrind --tool=callgrind --callgrind-out-file="$work/host.cg" --toggle-collect='edgetrack::Tracker::track*' \

@@ -5,7 +5,9 @@
 /// the frames are rendered before, outside the windows. With "steps", a StepObserver opens one
 /// window per step of Tracker::track instead (4 per frame, in the paper's order). "whole" makes
 /// the grey step convert whole frames (the paper's way) instead of on demand.
-///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole]
+/// "normal" solves the pose on the 6 x 6 normal equations (PoseSolver::kNormalEquations); a
+/// ViSP XML file applies its tracker settings (step, range, masks, faces) to the sequence's camera.
+///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +18,7 @@
 #include "edgetrack/model_io.h"
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
+#include "edgetrack/visp_config.h"
 #include "synthetic_sequence.h"
 
 using namespace edgetrack;
@@ -48,13 +51,29 @@ int main(int argc, char* argv[]) {
 
   const std::string windows = argc > 3 ? argv[3] : "frame", grey = argc > 4 ? argv[4] : "on-demand";
   if ((windows != "frame" && windows != "steps") || (grey != "on-demand" && grey != "whole")) {
-    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses]\n");
+    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml]\n");
     return 2;
   }
   const bool per_step = windows == "steps", whole = grey == "whole";
   TrackerParams params;
   params.grey = whole ? GreyScaling::kWholeFrame : GreyScaling::kOnDemand;
   if (argc > 5) params.hypotheses = std::atoi(argv[5]);
+  const std::string solver = argc > 6 ? argv[6] : "lmder";
+  if (solver != "lmder" && solver != "normal") {
+    std::fprintf(stderr, "bench_tracker: the solver is lmder or normal, not %s\n", solver.c_str());
+    return 2;
+  }
+  if (solver == "normal") params.pose.solver = PoseSolver::kNormalEquations;
+  if (argc > 7) {  // a ViSP configuration's tracker settings, on the sequence's own camera
+    TrackerConfig config;
+    config.params = params;
+    const Result<ConfigNotes> applied = apply_visp_config(argv[7], config);
+    if (!applied.ok()) {
+      std::fprintf(stderr, "%s\n", applied.error().text().c_str());
+      return 1;
+    }
+    params = config.params;
+  }
   Result<Tracker> tracker = Tracker::create(model.value(), camera, truth[0], params);
   if (!tracker.ok()) {
     std::fprintf(stderr, "%s\n", tracker.error().text().c_str());
@@ -64,11 +83,12 @@ int main(int argc, char* argv[]) {
   if (per_step) tracker.value().set_step_observer(&count_each_step);
   std::printf(
       "# real=%s scene=%s frames=%d grey=%s windows=%s camera=%dx%d px=%g py=%g robust_rounds=%d "
-      "robust_evaluations=%d hypotheses=%d\n",
+      "robust_evaluations=%d hypotheses=%d solver=%s sample_step=%g range=%u\n",
               real_name(), scene == Scene::kCube ? "cube" : "toy", frames, grey.c_str(),
               per_step ? "4 per frame (visible edges, grey, ME, pose)" : "1 per frame", camera.width, camera.height,
               static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds,
-              params.pose.robust_evaluations, params.hypotheses);
+              params.pose.robust_evaluations, params.hypotheses, solver.c_str(),
+              static_cast<double>(params.me.getSampleStep()), params.me.getRange());
   std::printf(
       "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels jacobians\n");
   for (int k = 0; k < frames; ++k) {

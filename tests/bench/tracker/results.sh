@@ -13,6 +13,7 @@ frames=60
 runs=5
 cpi=1.5  # assumed XScale cycles per instruction for the 624 MHz estimate
 target=2000000  # the issue's S40.23 target, guest instructions per frame
+visp_xml=/usr/share/visp-images-data/ViSP-images/mbt/cube.xml  # ViSP's settings for the per-point row
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracker_bench.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -101,3 +102,30 @@ echo "executed per frame. The paper's 64 ms at 624 MHz is about 40 M cycles."
 awk -v t="$s40_on_demand" -v s="$s40_on_demand_soft" -v target="$target" 'BEGIN {
   printf "S40.23 with on-demand grey: %.3f M per frame (%s), %d instructions in soft-float routines (%s).\n",
     t/1e6, t <= target ? "at most 2.0 M: met" : "above 2.0 M: not met", s, s == 0 ? "met" : "not met" }'
+
+echo
+echo "### Emulated PXA270, S40.23: the pose solver and ViSP's settings"
+echo
+echo "Whole \`Tracker::track\` per frame (on-demand grey, $frames frames), with MINPACK's lmder (the default) and"
+echo "with the 6 x 6 normal-equations option (\`PoseSolver::kNormalEquations\`, \`bench_tracker ... normal\`); at the"
+echo "paper's settings (TrackerParams, sampling step 10 px, range 4) and at ViSP's settings"
+echo "(\`$visp_xml\` applied as ViSP reads it: sample step and range from its <ecm>, on the"
+echo "sequence's QVGA camera). Per control point: the frame's count over the points sampled."
+echo
+echo "| settings | solver | total per frame | control points | per control point | LM evaluations | Jacobians |"
+echo "|---|---|---:|---:|---:|---:|---:|"
+dir=$(bench_tree arm s40_23 bench_tracker)
+for settings in paper visp; do
+  for solver in lmder normal; do
+    extra=()
+    [ "$settings" = visp ] && extra=("$visp_xml")
+    "$top/toolchains/qemu/count-insns.sh" --out "$work/solver.sum" --windows "$work/solver.win" \
+      "$dir/tests/bench/tracker/bench_tracker" "$frames" cube frame on-demand 1 "$solver" "${extra[@]}" >"$work/solver.txt"
+    step=$(sed -n 's/^# .*sample_step=\([0-9.]*\) range=\([0-9]*\).*/step \1 px, range \2/p' "$work/solver.txt")
+    label=$([ "$settings" = visp ] && echo "ViSP's cube.xml ($step)" || echo "paper's ($step)")
+    awk -v l="$label" -v s="$solver" 'NR == FNR { split($3, a, "="); t += a[2]; n++; next }
+      /^frame/ { p += $7; e += $11; j += $14; f++ }
+      END { printf "| %s | %s | %.3f M | %.1f | %.0f | %.2f | %.2f |\n", l, s, t/n/1e6, p/f, t/n/(p/f), e/f, j/f }' \
+      "$work/solver.win" "$work/solver.txt"
+  done
+done

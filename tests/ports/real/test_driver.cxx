@@ -13,6 +13,7 @@ DECLARE(test_fixed64_add_subtract);
 DECLARE(test_fixed64_multiply);
 DECLARE(test_fixed64_divide);
 DECLARE(test_fixed64_sqrt);
+DECLARE(test_fixed64_norm_and_dot_product);
 DECLARE(test_fixed64_multiply_fast_path);
 DECLARE(test_fixed64_divide_fast_path);
 DECLARE(test_wide_uint_reciprocal_and_division);
@@ -35,6 +36,7 @@ void register_tests() {
   REGISTER(test_fixed64_multiply);
   REGISTER(test_fixed64_divide);
   REGISTER(test_fixed64_sqrt);
+  REGISTER(test_fixed64_norm_and_dot_product);
   REGISTER(test_fixed64_multiply_fast_path);
   REGISTER(test_fixed64_divide_fast_path);
   REGISTER(test_wide_uint_reciprocal_and_division);

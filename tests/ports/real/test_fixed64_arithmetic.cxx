@@ -278,6 +278,93 @@ void check_sqrt(std::uint64_t seed) {
   TEST("sqrt(max) does not saturate", sqrt(std::numeric_limits<T>::max()) > T(0), true);
 }
 
+/// euclidean_norm(n, x): correctly rounded (as sqrt above) while the sum of the raw squares is
+/// below 2^64; above, within 2^-30 relative of the exact root; saturates and counts past max().
+template <int F>
+void check_euclidean_norm(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  int rounding_failures = 0, relative_failures = 0, printed = 0;
+  T x[80];
+  for (int i = 0; i < kSamples / 20; ++i) {
+    const int n = 1 + static_cast<int>(random.below(80));
+    const bool small = i % 2 == 0;  // half the vectors keep the sum below 2^64
+    Exact sum(0);
+    for (int k = 0; k < n; ++k) {
+      x[k] = T::from_raw(small ? random.raw(28) : random.raw(56));
+      sum = sum + Exact(x[k].raw()) * Exact(x[k].raw());
+    }
+    const std::uint64_t before = fixedpoint::saturation_count();
+    const T r = euclidean_norm(n, x);
+    const bool counted = fixedpoint::saturation_count() != before;
+    const auto text = [&] { return "norm of " + std::to_string(n) + " values gave " + describe(r); };
+    if (Exact::compare(sum, Exact::power_of_two(64)) < 0) {
+      const Exact four_sum = sum * Exact(4);
+      const Exact low = Exact(2 * r.raw() - 1), high = Exact(2 * r.raw() + 1);
+      if (counted || (r.raw() != 0 && Exact::compare(low * low, four_sum) > 0) ||
+          Exact::compare(four_sum, high * high) > 0) {
+        ++rounding_failures;
+        fixed64_test::report_failure(printed, text());
+      }
+    } else {
+      const long double root = std::sqrt(sum.to_long_double());
+      if (counted || std::fabs(static_cast<long double>(r.raw()) - root) > root * std::ldexp(1.0L, -30)) {
+        ++relative_failures;
+        fixed64_test::report_failure(printed, text());
+      }
+    }
+  }
+  TEST((std::string("euclidean_norm of ") + type_name<F>() + " is correctly rounded below 2^64 raw squared").c_str(),
+       rounding_failures, 0);
+  TEST((std::string("euclidean_norm of ") + type_name<F>() + " is within 2^-30 relative above").c_str(),
+       relative_failures, 0);
+  const T big[2] = {std::numeric_limits<T>::max(), std::numeric_limits<T>::max()};
+  const std::uint64_t before = fixedpoint::saturation_count();
+  TEST("the norm of two max() saturates to max()", euclidean_norm(2, big), std::numeric_limits<T>::max());
+  TEST("and counts one saturation", fixedpoint::saturation_count() - before, 1u);
+  const T three_four[2] = {T(3), T(-4)};
+  TEST("the norm of (3, -4) is 5", euclidean_norm(2, three_four), T(5));
+  TEST("the norm of nothing is 0", euclidean_norm(0, x), T(0));
+}
+
+/// dot_product(n, a, b) is the exact sum of the products rounded once (check_rounded), or
+/// saturates and counts when that is out of range.
+template <int F>
+void check_dot_product(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  int failures = 0, printed = 0;
+  T a[80], b[80];
+  for (int i = 0; i < kSamples / 20; ++i) {
+    const int n = 1 + static_cast<int>(random.below(80));
+    const int bits = i % 3 == 0 ? 62 : i % 3 == 1 ? 40 : 30;  // past, near and within the fast path
+    Exact sum(0);
+    for (int k = 0; k < n; ++k) {
+      a[k] = T::from_raw(random.raw(bits));
+      b[k] = T::from_raw(random.raw(bits));
+      sum = sum + Exact(a[k].raw()) * Exact(b[k].raw());
+    }
+    const std::uint64_t before = fixedpoint::saturation_count();
+    const T r = dot_product(n, a, b);
+    const std::uint64_t counted = fixedpoint::saturation_count() - before;
+    if (!check_rounded(sum, Exact::power_of_two(F), r.raw(), counted).pass) {
+      ++failures;
+      fixed64_test::report_failure(printed, "dot product of " + std::to_string(n) + " pairs gave " + describe(r));
+    }
+  }
+  TEST((std::string("dot_product of ") + type_name<F>() + " rounds the exact sum once, or saturates").c_str(),
+       failures, 0);
+  const T half_ulp[2] = {T::from_raw(1), T::from_raw(1)}, half[2] = {T(0.5), T(0.5)};
+  TEST("two products of half an ulp each sum to one ulp", dot_product(2, half_ulp, half).raw(), 1);
+}
+
+void test_fixed64_norm_and_dot_product() {
+  check_euclidean_norm<16>(0x5eed0011);
+  check_euclidean_norm<23>(0x5eed0012);
+  check_dot_product<16>(0x5eed0013);
+  check_dot_product<23>(0x5eed0014);
+}
+
 void test_fixed64_add_subtract() {
   check_add_subtract<16>(0x5eed0001);
   check_add_subtract<23>(0x5eed0002);
@@ -409,6 +496,7 @@ TESTMAIN(test_fixed64_add_subtract)
 TESTMAIN(test_fixed64_multiply)
 TESTMAIN(test_fixed64_divide)
 TESTMAIN(test_fixed64_sqrt)
+TESTMAIN(test_fixed64_norm_and_dot_product)
 TESTMAIN(test_fixed64_multiply_fast_path)
 TESTMAIN(test_fixed64_divide_fast_path)
 TESTMAIN(test_wide_uint_reciprocal_and_division)

@@ -39,7 +39,8 @@ struct minpack_machine {
 template <class T>
 minpack_machine<T> minpack_machine_constants();
 
-/// Euclidean norm of x[0..n), without destructive underflow or overflow (three scaled sums).
+/// Euclidean norm of x[0..n), without destructive underflow or overflow (three scaled sums; for
+/// a fixed-point T, which has neither, fixedpoint::euclidean_norm's exact sum of raw squares).
 template <class T>
 T enorm(int n, const T* x);
 template <class T>

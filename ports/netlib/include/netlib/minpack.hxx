@@ -62,6 +62,8 @@ template <class T>
 T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   using minpack_detail::abs_of;
   using std::sqrt;
+  // Fixed point: the exact sum of the raw squares (real/fixed64.h), which needs no scaling.
+  if constexpr (!std::numeric_limits<T>::is_iec559) return euclidean_norm(n, x);
   // Three sums: small components scaled by the largest small one (x3max), large ones by the
   // largest large one (x1max), the rest plainly.
   T s1(0), s2(0), s3(0), x1max(0), x3max(0);

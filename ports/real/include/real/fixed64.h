@@ -304,6 +304,84 @@ constexpr fixed64<F> sqrt(fixed64<F> x) {
   return fixed64<F>::from_raw(static_cast<std::int64_t>(s.root + (up ? 1u : 0u)));
 }
 
+/// sqrt(x[0]^2 + ... + x[n-1]^2) from the exact sum of the raw squares: correctly rounded while
+/// that sum stays below 2^64 (|x| below 2^(32-F) for one element: 512 for S40.23), above it
+/// within 2^-31 relative (the sum's top 64 bits, an even shift, give the root); a norm past
+/// max() saturates and counts. MINPACK's enorm for fixed point: integers have none of the
+/// overflow and underflow of floating-point squares that its three scaled sums avoid, and one
+/// unsigned 32 x 32-bit product and a 96-bit add per element replace a rounded multiply and a
+/// saturating add.
+template <int F>
+constexpr fixed64<F> euclidean_norm(int n, const fixed64<F>* x) {
+  constexpr std::uint64_t kCap = std::uint64_t{1} << 62;  // a sum at or past 2^126 saturates the norm
+  std::uint64_t low = 0, high = 0;                        // the sum of squares, high * 2^64 + low
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t m = detail::magnitude(x[i].raw());
+    if (__builtin_expect((m >> 32) == 0, 1)) {
+      const std::uint64_t square = std::uint64_t{static_cast<std::uint32_t>(m)} * static_cast<std::uint32_t>(m);
+      low += square;
+      high += low < square ? 1u : 0u;
+    } else {
+      const detail::Uint128 square = detail::multiply(m, m);
+      low += square.lo;
+      high += square.hi + (low < square.lo ? 1u : 0u);
+      if (high > kCap) high = kCap;  // the common branch adds at most n more: no wrap-around
+    }
+  }
+  if (high >= kCap) {
+    detail::count_saturation();
+    return std::numeric_limits<fixed64<F>>::max();
+  }
+  if (high == 0) {
+    const detail::SquareRoot s = detail::square_root(low);
+    return fixed64<F>::from_raw(static_cast<std::int64_t>(s.root + (s.remainder.lo > s.root ? 1u : 0u)));
+  }
+  const int k = (64 - detail::leading_zeros(high) + 1) / 2;  // sum / 4^k < 2^64
+  const std::uint64_t top = detail::shift_right(detail::Uint128{high, low}, 2 * k).lo;
+  const std::uint64_t root = detail::square_root(top).root;  // floor(sqrt(sum) / 2^k)
+  return fixed64<F>::from_raw(static_cast<std::int64_t>((root << k) + (std::uint64_t{1} << (k - 1))));
+}
+
+/// a[0] b[0] + ... + a[n-1] b[n-1] with one rounding: the raw products are summed exactly (128
+/// bits) and the sum is rounded to nearest (halves away from zero) once, so the error is at most
+/// half an ulp; a sum past the range saturates and counts (as does one whose partial sum passed
+/// 2^(126-F) times max(), where the exact sum would need more than 128 bits). Operands that fit int32 take one
+/// signed 32 x 32-bit product each, and no rounding or saturation test per element.
+template <int F>
+constexpr fixed64<F> dot_product(int n, const fixed64<F>* a, const fixed64<F>* b) {
+  constexpr std::int64_t kCap = std::int64_t{1} << 62;  // |sum| at or past 2^126 saturates the result
+  std::uint64_t low = 0;
+  std::int64_t high = 0;  // the sum, high * 2^64 + low (two's complement)
+  int saturated = 0;      // the sign of a partial sum that passed the cap
+  for (int i = 0; i < n && saturated == 0; ++i) {
+    const std::int64_t x = a[i].raw(), y = b[i].raw();
+    const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(x));
+    const auto y32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(y));
+    if (__builtin_expect(((x ^ x32) | (y ^ y32)) == 0, 1)) {
+      const std::int64_t product = std::int64_t{x32} * y32;
+      const std::uint64_t sum = low + static_cast<std::uint64_t>(product);
+      high += (product < 0 ? -1 : 0) + (sum < low ? 1 : 0);
+      low = sum;
+    } else {
+      detail::Uint128 m = detail::multiply(detail::magnitude(x), detail::magnitude(y));
+      if ((x ^ y) < 0) m = detail::Uint128{0, 0} - m;
+      const std::uint64_t sum = low + m.lo;
+      high += static_cast<std::int64_t>(m.hi) + (sum < low ? 1 : 0);
+      low = sum;
+      // Past 2^126 a partial sum is 2^(126-F) times max(): sticky, as a running sum would be.
+      if (high > kCap || high < -kCap) saturated = high < 0 ? -1 : 1;
+    }
+  }
+  if (saturated != 0) {
+    detail::count_saturation();
+    return saturated < 0 ? std::numeric_limits<fixed64<F>>::lowest() : std::numeric_limits<fixed64<F>>::max();
+  }
+  const bool negative = high < 0;
+  detail::Uint128 m{static_cast<std::uint64_t>(high), low};
+  if (negative) m = detail::Uint128{0, 0} - m;
+  return fixed64<F>::from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(m, F)));
+}
+
 /// Largest whole number not above x; exact.
 template <int F>
 constexpr fixed64<F> floor(fixed64<F> x) {
