@@ -68,10 +68,12 @@ echo
 echo '```'
 for tree in "$host" "$host_s40"; do
   name=$(grep -m1 EDGETRACK_REAL: "$tree/CMakeCache.txt" | cut -d= -f2)
-  tolerance=2e-5; [ "$name" = double ] && tolerance=1e-9  # as tests/host/visp/CMakeLists.txt
+  # tolerance and the real's resolution, as tests/host/visp/CMakeLists.txt
+  tolerance=2e-5 resolution=1.1920928955078125e-07
+  [ "$name" = double ] && tolerance=1e-9 resolution=0
   printf '%s: ' "$name"
   "$top/tests/host/visp/transforms_compare.sh" "$tree/tests/host/visp/transforms_upstream" \
-    "$tree/tests/host/visp/transforms_ports" "$tolerance" || true
+    "$tree/tests/host/visp/transforms_ports" "$tolerance" "$resolution" || true
 done
 echo '```'
 
