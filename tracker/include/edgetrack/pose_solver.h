@@ -25,27 +25,21 @@ struct PoseParams {
   int max_evaluations = 30;  ///< residual evaluations in the first (unweighted) solve, at most
   /// Residual evaluations per robust solve, at most. 2 is one LM step from the previous
   /// round's pose (MINPACK counts the start as the first evaluation): iteratively re-weighted
-  /// least squares with one step per re-weighting, as ViSP's edge tracker does. Running each
-  /// round to convergence only added a second Jacobian and QR factorisation to confirm it: on
-  /// the generated sequences the double poses moved by at most 0.002 mm without it, while the
-  /// S40.23 pose step fell from 3.56 M to 2.24 M guest instructions per cube frame.
+  /// least squares with one step per re-weighting, as ViSP's edge tracker does; running each
+  /// round to convergence only adds a Jacobian and a QR factorisation that confirm the pose.
   int robust_evaluations = 2;
   /// LM's relative tolerance on the step. VXL's default (1e-8) lies below S40.23's resolution
-  /// (1.2e-7), where LM then runs to max_evaluations; a pose step of 1e-6 relative is far below
+  /// (1.2e-7), where LM would run to max_evaluations; a pose step of 1e-6 relative is far below
   /// a pixel and reachable by every `real`.
   real x_tolerance = real(1e-6);
   /// LM's relative tolerance on the sum of squares: a solve ends once a step reduced it, and
   /// predicts it can reduce it, by at most 1 %, i.e. the RMS point-to-line distance is within
-  /// 0.5 % of what LM can still reach: under 0.001 px at the 0.05-0.2 px RMS of matched edges.
-  /// A tighter tolerance only adds a Jacobian and a QR factorisation for the gradient test to
-  /// confirm the same pose (docs/results/profile.md).
+  /// 0.5 % of what LM can still reach, well under a thousandth of a pixel at matched edges' RMS.
   real f_tolerance = real(1e-2);
   /// LM's gradient test: the largest cosine between the residual vector and a Jacobian column
-  /// (0 at the optimum). VXL's 1e-5 is met in double after about 3 evaluations, but rounding
-  /// in S40.23 keeps the cosine above it, and LM then spends 2-3 times the evaluations on
-  /// rejected steps. With one-step robust rounds, 3e-3 instead of 1e-3 moved the double poses
-  /// by at most 0.002 mm on the generated sequences (the tests resolve 0.01 mm) and saves about
-  /// 1.3 evaluations per S40.23 frame; 1e-2 moved them by up to 0.018 mm.
+  /// (0 at the optimum). S40.23's rounding keeps the cosine above VXL's 1e-5, where LM would
+  /// spend its evaluations on rejected steps; 3e-3 moves the double poses by less than the
+  /// tests resolve (0.01 mm) on the generated sequences (docs/results/lm.md, tracker.md).
   real g_tolerance = real(3e-3);
   int min_points = 6;        ///< fewer matches than this: the pose is kept as it was
   /// Not in the paper (its section 5 leaves robust estimation to future work): after the first
@@ -53,20 +47,17 @@ struct PoseParams {
   /// every distance with Tukey's biweight at the previous solve's pose,
   /// w = (1 - (delta / c)^2)^2 for |delta| < c and 0 beyond, c = max(tukey_c * 1.4826 *
   /// median |delta|, tukey_floor) pixels; matches with weight 0 in the last round are marked as
-  /// outliers. The weights vary continuously with the distances,
-  /// so nearby inputs give nearby poses. One round leaves the pose leaning towards the
-  /// unweighted first solve, which a single gross mismatch pulls: on generated sequences a
-  /// mismatch present in the double build and not in S40.23 (or back) then moved the pose by up
-  /// to 0.37 mm; with three rounds (then run to convergence) the two stayed within 0.1 mm in
-  /// 61 of 64 runs (docs/ARCHITECTURE.md). tukey_c = 0 or robust_rounds = 0 is the paper's
-  /// tracker.
+  /// outliers. The weights vary continuously with the distances, so nearby inputs give nearby
+  /// poses; three rounds keep a gross mismatch present in one `real` build and not in another
+  /// from pulling their poses apart (docs/ARCHITECTURE.md). tukey_c = 0 or robust_rounds = 0 is
+  /// the paper's tracker.
   int robust_rounds = 3;
   /// With robust rounds, the first solve too is weighted by Tukey's biweight (as below) of the
   /// distances at `start`, which the matches' control points were sampled at: where the start is
   /// a good prediction, a whole edge matched to a line a few pixels beside it stands out there,
-  /// while unweighted the first solve followed it in depth and the prediction carried that on
-  /// (docs/ARCHITECTURE.md). Where the start's error is larger, the median and so c grow with
-  /// it. The tracker turns it off after a lost frame, whose start is a guess.
+  /// where unweighted the first solve would follow it in depth (docs/ARCHITECTURE.md). Where the
+  /// start's error is larger, the median and so c grow with it. The tracker turns it off after a
+  /// lost frame, whose start is a guess.
   bool weigh_at_start = true;
   real tukey_c = real(4.685);
   real tukey_floor = real(1.5);
