@@ -51,7 +51,7 @@ bool invert(const double m[3][3], double inv[3][3]) {
   return true;
 }
 
-/// Reprojection residuals around a start pose: x = (v, w), R = exp(hat(w)) R0, t = t0 + v.
+/// Reprojection residuals around a start pose: x = (v, w), the pose start.retract(v, w).
 class Reprojection : public vnl_least_squares_function_of<real> {
  public:
   Reprojection(const std::vector<Vec3>& points, const std::vector<Vec2>& pixels, const PinholeCamera& camera,
@@ -63,8 +63,7 @@ class Reprojection : public vnl_least_squares_function_of<real> {
         start_(start) {}
 
   Se3 pose(const vnl_vector<real>& x) const {
-    const Mat33 r = edgetrack::rotation_exp({x[3], x[4], x[5]}) * start_.rotation();
-    return Se3(r, start_.translation() + Vec3{x[0], x[1], x[2]});
+    return start_.retract(Vec3{x[0], x[1], x[2]}, Vec3{x[3], x[4], x[5]});
   }
 
   void f(const vnl_vector<real>& x, vnl_vector<real>& fx) override {

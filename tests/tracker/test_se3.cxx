@@ -69,6 +69,16 @@ static void test_se3() {
   TEST_NEAR("a quarter turn about z sends x to y, then translates (y)", moved.y, 0.12, tol);
   TEST_NEAR("a quarter turn about z sends x to y, then translates (z)", moved.z, 0.03, tol);
   TEST_NEAR("theta_u of from_theta_u comes back", turn.theta_u().z, static_cast<double>(quarter), tol);
+
+  // retract: a zero step is the pose itself; a step turns on the left and adds the translation.
+  const Se3 still = turn.retract(Vec3{}, Vec3{});
+  TEST_NEAR("retract(0, 0) keeps the rotation", max_abs_difference(still.rotation(), turn.rotation()), 0, 0);
+  TEST_NEAR("retract(0, 0) keeps the translation", max_abs_difference(still.translation(), turn.translation()), 0, 0);
+  const Vec3 step{real(0.001), real(-0.002), real(0.003)}, spin{real(0), real(0), -quarter};
+  const Se3 stepped = turn.retract(step, spin);
+  TEST_NEAR("retract turns on the left: a quarter turn back about z undoes the start's",
+            max_abs_difference(stepped.rotation(), Mat33::identity()), 0, tol);
+  TEST_NEAR("retract adds the step to the translation", stepped.translation().z, 0.033, tol);
 }
 
 TESTMAIN(test_se3)

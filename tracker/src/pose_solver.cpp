@@ -91,9 +91,8 @@ class PointToLineProblem {
   }
 
   Se3 pose(const real* x) const {
-    const Vec3 w{x[3], x[4], x[5]};
     const real mm(kMillimetresPerMetre);
-    return Se3(rotation_exp(w) * start_.rotation(), start_.translation() + Vec3{x[0] / mm, x[1] / mm, x[2] / mm});
+    return start_.retract(Vec3{x[0] / mm, x[1] / mm, x[2] / mm}, Vec3{x[3], x[4], x[5]});
   }
 
   int evaluations() const { return evaluations_; }

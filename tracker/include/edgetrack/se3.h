@@ -33,6 +33,10 @@ class Se3 {
   /// ViSP's pose vector: translation (metres) and thetaU (radians), as in a .pos file.
   static Se3 from_theta_u(const Vec3& translation, const Vec3& theta_u);
 
+  /// The local step both pose solvers take around a start pose: rotation exp(hat(w)) R,
+  /// translation t + v (metres), so that a zero step is *this and the step's translation is
+  /// the camera-frame one, unrotated.
+  Se3 retract(const Vec3& v, const Vec3& w) const { return Se3(rotation_exp(w) * rotation_, translation_ + v); }
   /// The inverse of exp: exp(log()) == *this.
   Twist log() const;
   Vec3 theta_u() const { return rotation_log(rotation_); }
