@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "edgetrack/small_cholesky.h"
+
 namespace edgetrack {
 namespace {
 
@@ -54,22 +56,14 @@ ScaledSystem scaled_system(int m, int n, const real* fjac, int ldfjac, const rea
   return sys;
 }
 
-/// Solves (s + damping I) y = -g by Cholesky; false when a pivot is below kSmallestPivot. A
-/// fixed-size factorisation on the stack: vnl_cholesky's vnl_matrix would allocate per solve.
+/// Solves (s + damping I) y = -g by Cholesky; false when a pivot is not above kSmallestPivot.
 bool damped_step(const ScaledSystem& sys, int n, const real& damping, real* y) {
-  using std::sqrt;
   real l[kMaxNormalUnknowns][kMaxNormalUnknowns];
   for (int j = 0; j < n; ++j) {
-    real pivot = sys.s[j][j] + damping;
-    for (int k = 0; k < j; ++k) pivot -= l[j][k] * l[j][k];
-    if (pivot < kSmallestPivot) return false;
-    l[j][j] = sqrt(pivot);
-    for (int i = j + 1; i < n; ++i) {
-      real sum = sys.s[i][j];
-      for (int k = 0; k < j; ++k) sum -= l[i][k] * l[j][k];
-      l[i][j] = sum / l[j][j];
-    }
+    for (int k = 0; k <= j; ++k) l[j][k] = sys.s[j][k];
+    l[j][j] += damping;
   }
+  if (!cholesky_in_place(l, n, kSmallestPivot)) return false;
   for (int i = 0; i < n; ++i) {  // L z = -g
     real sum = -sys.g[i];
     for (int k = 0; k < i; ++k) sum -= l[i][k] * y[k];

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "edgetrack/small_cholesky.h"
+
 namespace edgetrack {
 namespace {
 
@@ -77,30 +79,6 @@ void scale_turns(real a[kDof][kDof], const real& inv_radius) {
     }
 }
 
-/// In-place Cholesky A = L L^T of the lower triangle; false when a pivot is not clearly positive
-/// (a direction the matches do not see).
-bool cholesky(real a[kDof][kDof]) {
-  using std::sqrt;
-  real largest(0);
-  for (int k = 0; k < kDof; ++k)
-    if (a[k][k] > largest) largest = a[k][k];
-  const real least = real(1e-6) * largest;
-  if (!(largest > real(0))) return false;
-  for (int k = 0; k < kDof; ++k) {
-    real pivot = a[k][k];
-    for (int j = 0; j < k; ++j) pivot -= a[k][j] * a[k][j];
-    if (!(pivot > least)) return false;
-    a[k][k] = sqrt(pivot);
-    const real inv = real(1) / a[k][k];
-    for (int i = k + 1; i < kDof; ++i) {
-      real s = a[i][k];
-      for (int j = 0; j < k; ++j) s -= a[i][j] * a[k][j];
-      a[i][k] = s * inv;
-    }
-  }
-  return true;
-}
-
 /// |L^-1 g|^2 (`inv_diagonal`: 1 / L's diagonal), or a negative value when a component passes
 /// `cap` (the variance is then off scale).
 real whitened_square(const real l[kDof][kDof], const real inv_diagonal[kDof], const real g[kDof], const real& cap) {
@@ -148,7 +126,11 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
     }
   }
   scale_turns(information, inv_radius);
-  if (!cholesky(information)) return unconstrained;
+  real largest(0);
+  for (int k = 0; k < kDof; ++k)
+    if (information[k][k] > largest) largest = information[k][k];
+  // A pivot below a millionth of the largest is a direction the matches do not see.
+  if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return unconstrained;
   real inv_diagonal[kDof];
   for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
   // A whitened component beyond this is a direction no match sees; it also keeps the squares
