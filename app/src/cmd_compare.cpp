@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// `edgetrack compare` (host, with Debian's ViSP): our tracker and ViSP's vpMbGenericTracker in
-/// edge mode on the same decoded frames, from the same XML, model and initial pose, the two
+/// edge mode on the same grey frames, from the same XML, model and initial pose, the two
 /// alternating frame by frame so that both see the same load. Times the tracking calls only.
 #include <algorithm>
 #include <chrono>
@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "configuration.h"
 #include "downscaled_tracking.h"
+#include "edgetrack/grey_conversion.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracker.h"
@@ -71,6 +72,19 @@ PoseRow row_of(int frame, const Se3& pose, int points, double ms, bool lost) {
   return row;
 }
 
+/// The frame both trackers get: grey, converted once here, outside both timed calls, by our
+/// tracker's rule (vpImageConvert's), so that neither time holds a colour conversion that the
+/// other does untimed. A packed grey frame is its own grey image.
+edgetrack::FrameView grey_frame(const edgetrack::FrameView& view, vpImage<unsigned char>& grey) {
+  if (view.layout == edgetrack::PixelLayout::kGrey8 && view.row_bytes == view.width) return view;
+  grey.resize(static_cast<unsigned>(view.height), static_cast<unsigned>(view.width));
+  edgetrack::PixelBox whole;
+  whole.bottom = view.height;
+  whole.right = view.width;
+  edgetrack::convert_to_grey(view, whole, grey);
+  return edgetrack::packed_frame(grey.bitmap, view.width, view.height, edgetrack::PixelLayout::kGrey8);
+}
+
 /// One pass over the sequence: each frame goes to ViSP and to ours, the first one alternating.
 Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, Run& visp) {
   auto source = open_frame_source(setup.source);
@@ -82,6 +96,7 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
   ours.rows.clear();
   visp.rows.clear();
   Frame frame;
+  vpImage<unsigned char> grey;
   for (int k = 0;; ++k) {
     auto got = source.value()->next(frame);
     if (!got.ok()) return got.error();
@@ -89,12 +104,11 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
     if (frame.pixels.width != setup.camera.width * setup.factor || frame.pixels.height != setup.camera.height * setup.factor)
       return Error{frame.name, 0, "image size does not match the first frame's"};
     FramePixels small;
-    const edgetrack::FrameView view = tracked_frame(frame.pixels, setup.factor, small);
-    const RgbImage image = to_rgb_image(view);
+    const edgetrack::FrameView view = grey_frame(tracked_frame(frame.pixels, setup.factor, small), grey);
     VispFrameReply reply;
     for (int turn = 0; turn < 2; ++turn) {
       if ((turn + k) % 2 == 0) {
-        auto answered = child.value()->track(image);
+        auto answered = child.value()->track(view);
         if (!answered.ok()) return answered.error();
         reply = answered.value();
       } else {

@@ -63,13 +63,14 @@ VispMbtProcess::~VispMbtProcess() {
   waitpid(pid_, &status, 0);
 }
 
-Result<VispFrameReply> VispMbtProcess::track(const RgbImage& image) {
+Result<VispFrameReply> VispMbtProcess::track(const edgetrack::FrameView& grey) {
   VispFrameHeader header;
-  header.width = image.width;
-  header.height = image.height;
+  header.width = grey.width;
+  header.height = grey.height;
   VispFrameReply reply;
+  const size_t bytes = static_cast<size_t>(grey.width) * grey.height;
   const bool sent = std::fwrite(&header, sizeof header, 1, to_) == 1 &&
-                    std::fwrite(image.rgb.data(), 1, image.rgb.size(), to_) == image.rgb.size() && std::fflush(to_) == 0;
+                    std::fwrite(grey.pixels, 1, bytes, to_) == bytes && std::fflush(to_) == 0;
   if (!sent || std::fread(&reply, sizeof reply, 1, from_) != 1)
     return Error{"edgetrack-visp-mbt", 0, "ViSP's tracker stopped (its message is above)"};
   return reply;

@@ -11,7 +11,7 @@
 
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
-#include "image_io.h"
+#include "edgetrack/frame_view.h"
 #include "visp_worker_protocol.h"
 
 namespace edgetrack_app {
@@ -27,8 +27,9 @@ class VispMbtProcess {
   VispMbtProcess(const VispMbtProcess&) = delete;
   VispMbtProcess& operator=(const VispMbtProcess&) = delete;
 
-  /// ViSP tracks `image`; an Error (with what the child said on standard error) when it ended.
-  edgetrack::Result<VispFrameReply> track(const RgbImage& image);
+  /// ViSP tracks `grey` (a packed grey8 frame); an Error (with what the child said on standard
+  /// error) when it ended.
+  edgetrack::Result<VispFrameReply> track(const edgetrack::FrameView& grey);
 
  private:
   VispMbtProcess(pid_t pid, std::FILE* to_child, std::FILE* from_child) : pid_(pid), to_(to_child), from_(from_child) {}

@@ -5,7 +5,6 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
-#include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/mbt/vpMbGenericTracker.h>
 
@@ -15,7 +14,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <vector>
 
 #include "visp_worker_protocol.h"
 
@@ -74,14 +72,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   vpImage<unsigned char> grey;
-  std::vector<unsigned char> rgb;
   bool started = false;
   VispFrameHeader header;
   while (read_all(&header, sizeof header) && header.width > 0 && header.height > 0) {
-    rgb.resize(static_cast<size_t>(header.width) * header.height * 3);
-    if (!read_all(rgb.data(), rgb.size())) return 1;
     grey.resize(static_cast<unsigned>(header.height), static_cast<unsigned>(header.width));
-    vpImageConvert::RGBToGrey(rgb.data(), grey.bitmap, static_cast<unsigned>(header.width * header.height));
+    if (!read_all(grey.bitmap, static_cast<size_t>(header.width) * header.height)) return 1;
     VispFrameReply reply;
     try {
       if (!started) tracker.initFromPose(grey, vpHomogeneousMatrix(initial));

@@ -2,12 +2,12 @@
 /// The pipe between `edgetrack compare` and `edgetrack-visp-mbt`, the child process that runs
 /// ViSP's own edge tracker. Upstream ViSP and our ports/visp define the same class names
 /// (vpMeSite, vpImage), so the two cannot share one process; the frames travel through a pipe,
-/// one at a time, so the two trackers alternate on the same decoded frames.
+/// one at a time, so the two trackers alternate on the same grey frames.
 ///
 /// The child's arguments: CONFIG.xml MODEL.cao tx ty tz tux tuy tuz DOWNSCALE (the initial
 /// camera_from_model as a ViSP pose vector). Then, per frame, on its standard input a
-/// VispFrameHeader and width * height * 3 RGB bytes; it answers a VispFrameReply on its standard
-/// output. A header with width 0 ends it. Plain C++, no header of ours or of ViSP.
+/// VispFrameHeader and width * height grey bytes (the grey frame our tracker gets too); it
+/// answers a VispFrameReply on its standard output. A header with width 0 ends it. Plain C++, no header of ours or of ViSP.
 #pragma once
 
 #include <cstdint>

@@ -25,6 +25,7 @@ DECLARE(test_pose_unconstrained_leaving_view);
 DECLARE(test_back_and_forth);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
+DECLARE(test_normal_mask);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -50,6 +51,7 @@ void register_tests() {
   REGISTER(test_back_and_forth);
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);
+  REGISTER(test_normal_mask);
 }
 
 DEFINE_MAIN

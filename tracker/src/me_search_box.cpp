@@ -10,12 +10,11 @@ namespace edgetrack {
 
 PixelBox me_search_box(const ControlPoint& point, const vpMe& me) {
   using std::fabs;
-  // The site (moving_edges.cpp) puts its candidates at pixel + k (cos a, sin a), |k| <= range,
-  // a = atan2(normal.y, normal.x), truncated to whole pixels, and convolves a mask_size mask
-  // whose top-left is half a mask before each. Here cos a and sin a are replaced by the unit
-  // normal, which skips an atan2, a sine and a cosine per point (about 1900 guest instructions
-  // in S40.23). The two differ by rounding only, a few units in the last place of `real`, far
-  // below kRounding, so pushing each end out by range * kRounding keeps every candidate inside.
+  // The site (moving_edges.cpp) puts its candidates at pixel + k normal, |k| <= range, truncated
+  // to whole pixels, and convolves a mask_size mask whose top-left is half a mask before each.
+  // The box's ends are computed differently from the candidates (range |n| here, k n there), so
+  // they may differ by rounding, a few units in the last place of `real`, far below kRounding:
+  // pushing each end out by range * kRounding keeps every candidate inside.
   constexpr real kRounding = real(1.0 / 1024);
   const int range = static_cast<int>(me.getRange());
   const int size = static_cast<int>(me.getMaskSize());

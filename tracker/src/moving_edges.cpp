@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// The moving-edge search per control point, on the ported vpMeSite, with a sub-pixel
-/// refinement that varies continuously with the control point.
+/// The moving-edge search per control point, vpMeSite's search on the ported masks, with a
+/// sub-pixel refinement that varies continuously with the control point.
 #include "edgetrack/moving_edges.h"
 
 #include <cmath>
+#include <type_traits>
+
+#include "edgetrack/normal_mask.h"
+#include "visp3/me/vpMeResponse.h"
 
 namespace edgetrack {
 
@@ -17,15 +21,14 @@ constexpr int kMaxClimb = kRefinementReachAlong - 1;
 /// axis nearest to the normal, v along the other one. 0 near the border.
 class AxisLikelihood {
  public:
-  AxisLikelihood(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, bool along_x)
-      : response_(site.response(grey, &me)), along_x_(along_x) {}
+  AxisLikelihood(const vpMeResponse& response, bool along_x) : response_(response), along_x_(along_x) {}
   int at(int u, int v) const {
     const int value = along_x_ ? response_.at(v, u) : response_.at(u, v);
     return value < 0 ? -value : value;
   }
 
  private:
-  const vpMeResponse response_;
+  const vpMeResponse& response_;
   bool along_x_;
 };
 
@@ -54,17 +57,17 @@ real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
   return real(u);
 }
 
-/// The sub-pixel edge point near the site's pixel (site.i, site.j), which the caller has set.
+/// The sub-pixel edge point near the site's pixel (i, j), of the site's mask `response`.
 /// The site keeps a whole pixel of its path, and which pixel that is (which row, for a mostly
 /// vertical edge) flips with a rounding-size move of the control point. So the edge is located
 /// on the three lines of the axis nearest to the normal around that pixel (a ridge each), and
 /// the match is where the control point's normal line crosses the polyline through those
 /// ridges: a continuous function of the control point.
-Vec2 refined_edge_point(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point) {
+Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, const ControlPoint& point) {
   using std::fabs;
   const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
-  const int u_site = along_x ? site.get_j() : site.get_i(), v_site = along_x ? site.get_i() : site.get_j();
-  const AxisLikelihood likelihood(site, grey, me, along_x);
+  const int u_site = along_x ? j : i, v_site = along_x ? i : j;
+  const AxisLikelihood likelihood(response, along_x);
   const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
   const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
@@ -101,30 +104,71 @@ struct PathPeak {
   int j = 0;
 };
 
+/// The pixel a site's search keeps, with its signed mask response (EdgeMatch::contrast).
+struct SitePixel {
+  int i = 0;
+  int j = 0;
+  int conv = 0;
+};
+
+/// The pixels of a site's path in order, k = -range..range: pixel + k normal, truncated. The
+/// fixed-point builds step by the normal, which adds up to exactly pixel + k normal; floating
+/// point multiplies, as its steps would add rounding.
+class PathWalk {
+ public:
+  PathWalk(const ControlPoint& point, int range)
+      : point_(point), k_(-range), y_(point.pixel.y - range * point.normal.y), x_(point.pixel.x - range * point.normal.x) {}
+  void next(int& i, int& j) {
+    if (std::is_floating_point<real>::value) {
+      i = static_cast<int>(point_.pixel.y + k_ * point_.normal.y);
+      j = static_cast<int>(point_.pixel.x + k_ * point_.normal.x);
+      ++k_;
+    } else {
+      i = static_cast<int>(y_);
+      j = static_cast<int>(x_);
+      y_ += point_.normal.y;
+      x_ += point_.normal.x;
+    }
+  }
+
+ private:
+  const ControlPoint& point_;
+  int k_;
+  real y_, x_;
+};
+
+/// The integers n with real(n) > threshold: those with n > likelihood_floor(threshold).
+int likelihood_floor(const real& threshold) {
+  using std::floor;
+  constexpr int kLimit = 1 << 30;  // far beyond any likelihood
+  if (threshold > real(kLimit)) return kLimit;
+  if (threshold < real(-kLimit)) return -kLimit;
+  return static_cast<int>(floor(threshold));
+}
+
 /// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
 /// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
 /// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
 /// normal in place of (cos alpha, sin alpha), which saves a sine and a cosine per point and
-/// differs by rounding only. conv is the signed mask response; a path end counts as a maximum
-/// when its one neighbour is lower, as the site's search keeps an end.
+/// differs by rounding only. conv is the signed response of the site's mask; a path end counts as
+/// a maximum when its one neighbour is lower, as the site's search keeps an end.
 template <class Visit>
-void for_each_path_peak(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-                        Visit visit) {
+void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, Visit visit) {
   const int range = static_cast<int>(me.getRange());
-  const real threshold = me.getThreshold();
-  const vpMeResponse response = site.response(grey, &me);
-  auto conv_at = [&](int k, int& i, int& j) {
-    i = static_cast<int>(point.pixel.y + k * point.normal.y);
-    j = static_cast<int>(point.pixel.x + k * point.normal.x);
-    return response.at(i, j);
-  };
+  const int threshold = likelihood_floor(me.getThreshold());
+  PathWalk walk(point, range);
   int i = 0, j = 0, next_i = 0, next_j = 0;
-  int current_conv = conv_at(-range, i, j);
+  walk.next(i, j);
+  int current_conv = response.at(i, j);
   int before = -1, current = current_conv < 0 ? -2 * current_conv : 2 * current_conv;
   for (int k = -range; k <= range; ++k) {
-    const int after_conv = k < range ? conv_at(k + 1, next_i, next_j) : 0;
-    const int after = k < range ? (after_conv < 0 ? -2 * after_conv : 2 * after_conv) : -1;
-    if (current > before && current >= after && real(current) > threshold) visit(current_conv, i, j);
+    int after_conv = 0, after = -1;
+    if (k < range) {
+      walk.next(next_i, next_j);
+      after_conv = response.at(next_i, next_j);
+      after = after_conv < 0 ? -2 * after_conv : 2 * after_conv;
+    }
+    if (current > before && current >= after && current > threshold) visit(current_conv, i, j);
     before = current;
     current = after;
     current_conv = after_conv;
@@ -135,10 +179,10 @@ void for_each_path_peak(vpMeSite& site, const vpImage<unsigned char>& grey, cons
 
 /// The strongest local maxima of for_each_path_peak (at most `capacity`, strongest first, ties
 /// in path order). Returns the count.
-int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-               PathPeak* peaks, int capacity) {
+int path_peaks(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, PathPeak* peaks,
+               int capacity) {
   int count = 0;
-  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
     const int likelihood = conv < 0 ? -2 * conv : 2 * conv;
     int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
     while (at > 0 && peaks[at - 1].likelihood < likelihood) {
@@ -155,42 +199,20 @@ int path_peaks(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& m
 /// strongest likelihood compete (weaker ones are mostly noise and background texture, which
 /// the pose step would otherwise fit), and a maximum whose refined point lies within a pixel
 /// (along the normal) of one already kept is the same edge reached again.
-void add_alternatives(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, int hypotheses,
+void add_alternatives(const vpMeResponse& response, const vpMe& me, int hypotheses, const SitePixel& strongest,
                       EdgeMatch& match) {
   using std::fabs;
   PathPeak peaks[kMaxHypotheses + 1];
-  const int strongest_i = site.get_i(), strongest_j = site.get_j();
-  const int count = path_peaks(site, grey, me, match.point, peaks, hypotheses + 1);
+  const int count = path_peaks(response, me, match.point, peaks, hypotheses + 1);
   for (int p = 0; p < count && match.alternative_count < hypotheses - 1; ++p) {
     if (2 * peaks[p].likelihood < peaks[0].likelihood) break;  // too weak to compete
-    if (peaks[p].i == strongest_i && peaks[p].j == strongest_j) continue;
-    site.i = peaks[p].i;
-    site.j = peaks[p].j;
-    const Vec2 q = refined_edge_point(site, grey, me, match.point);
+    if (peaks[p].i == strongest.i && peaks[p].j == strongest.j) continue;
+    const Vec2 q = refined_edge_point(response, peaks[p].i, peaks[p].j, match.point);
     bool known = fabs(dot(match.point.normal, q - match.found)) < real(1);
     for (int a = 0; a < match.alternative_count && !known; ++a)
       known = fabs(dot(match.point.normal, q - match.alternatives[a])) < real(1);
     if (!known) match.alternatives[match.alternative_count++] = q;
   }
-}
-
-/// +1 or -1: the sign that orients vpMe's mask for the normal angle `alpha` along the normal.
-/// vpMe::maskIndex folds the tangent angle alpha + pi/2 into [0, pi) (180 degrees is mask 0),
-/// and each fold by pi turns the mask, and so the response's sign, over.
-int normal_sign(const real& alpha) {
-  using std::round;
-  real theta = alpha + real(M_PI_2);
-  int sign = 1;
-  if (theta < real(0)) {
-    theta += real(M_PI);
-    sign = -sign;
-  }
-  if (theta > real(M_PI)) {
-    theta -= real(M_PI);
-    sign = -sign;
-  }
-  if (static_cast<int>(round(theta * real(180 / M_PI))) == 180) sign = -sign;
-  return sign;
 }
 
 /// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
@@ -200,56 +222,58 @@ int normal_sign(const real& alpha) {
 /// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
 /// where a face turns into view beside a silhouette, its far edge has the silhouette's old
 /// contrast, and on the generated frames that rule followed it off the cube.) False when none
-/// passes (the site's pixel is then left anywhere on the path).
-bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-                       const real& reference) {
+/// passes.
+bool track_by_contrast(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
+                       SitePixel& site) {
   using std::fabs;
   const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
   const bool positive = reference > real(0);
-  int best = 0, best_i = 0, best_j = 0, best_conv = 0;
-  for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
+  int best = 0;
+  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
     const int magnitude = conv < 0 ? -conv : conv;
     if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most) || magnitude <= best) return;
     best = magnitude;
-    best_i = i;
-    best_j = j;
-    best_conv = conv;
+    site = {i, j, conv};
   });
-  if (best == 0) return false;
-  site.i = best_i;
-  site.j = best_j;
-  site.convlt = real(best_conv);
-  site.setState(vpMeSite::NO_SUPPRESSION);
-  return true;
+  return best != 0;
+}
+
+/// vpMeSite::track(I, &me, false) on the path of for_each_path_peak: the pixel of the largest
+/// likelihood above the threshold, the first of equals (which is a local maximum of the path).
+/// False when none passes the threshold.
+bool track_strongest(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, SitePixel& site) {
+  int best = 0;
+  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
+    const int magnitude = conv < 0 ? -conv : conv;
+    if (magnitude <= best) return;
+    best = magnitude;
+    site = {i, j, conv};
+  });
+  return best != 0;
 }
 
 /// The site's search: the contrast test with a reference (track_by_contrast), else, or when no
 /// edge passes it (the edge's look changed: a new background behind a silhouette, a shadow), the
 /// strongest edge within the range, as the paper's tracker takes; a strict reference (borrowed
-/// from the primitive for a point not seen last time) leaves the site unmatched instead.
-void track_site(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
-                const real& alpha, int sign, const real& reference, bool strict) {
-  site.init(point.pixel.y, point.pixel.x, alpha, real(0), sign);
-  if (reference != real(0) && track_by_contrast(site, grey, me, point, reference)) return;
-  if (reference != real(0) && strict) {
-    site.setState(vpMeSite::CONSTRAST);
-    return;
-  }
-  site.track(grey, &me, false);
+/// from the primitive for a point not seen last time) leaves the site unmatched instead. False
+/// when the site is unmatched.
+bool track_site(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
+                bool strict, SitePixel& site) {
+  if (reference != real(0) && track_by_contrast(response, me, point, reference, site)) return true;
+  if (reference != real(0) && strict) return false;
+  return track_strongest(response, me, point, site);
 }
 
 }  // namespace
 
 void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
                          std::vector<real>& out) {
-  using std::atan2;
   out.assign(points.size(), real(0));
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
-    const real alpha = atan2(point.normal.y, point.normal.x);
-    vpMeSite site;
-    site.init(point.pixel.y, point.pixel.x, alpha, real(0), normal_sign(alpha));
-    out[p] = site.convolution(grey, &me);
+    const NormalMask mask = normal_mask(me, point.normal);
+    const vpMeResponse response(grey, me, mask.index, mask.sign);
+    out[p] = real(response.at(static_cast<int>(point.pixel.y), static_cast<int>(point.pixel.x)));
   }
 }
 
@@ -264,28 +288,21 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
                          int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
                          const std::vector<unsigned char>* strict) {
-  using std::atan2;
   matches.clear();
   matches.reserve(points.size());
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
-    vpMeSite site;
-    const real alpha = atan2(point.normal.y, point.normal.x);
-    const int sign = normal_sign(alpha);
-    track_site(site, grey, me, point, alpha, sign, references ? (*references)[p] : real(0),
-               strict && (*strict)[p] != 0);
-    if (site.getState() != vpMeSite::NO_SUPPRESSION) continue;
-    const int strongest_i = site.get_i(), strongest_j = site.get_j();
+    const NormalMask mask = normal_mask(me, point.normal);
+    const vpMeResponse response(grey, me, mask.index, mask.sign);
+    SitePixel site;
+    if (!track_site(response, me, point, references ? (*references)[p] : real(0), strict && (*strict)[p] != 0, site))
+      continue;
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
-    match.contrast = site.convlt;
-    match.found = refined_edge_point(site, grey, me, point);
-    if (hypotheses > 1) {
-      site.i = strongest_i;
-      site.j = strongest_j;
-      add_alternatives(site, grey, me, hypotheses, match);
-    }
+    match.contrast = real(site.conv);
+    match.found = refined_edge_point(response, site.i, site.j, point);
+    if (hypotheses > 1) add_alternatives(response, me, hypotheses, site, match);
   }
 }
 

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# `edgetrack compare` against Debian's ViSP on the first frames of mbt/cube, one case per call:
+# `edgetrack compare` against Debian's ViSP on the first frames of mbt/cube (and of a generated colour
+# sequence), one case per call:
 # compare_test.sh EDGETRACK TMPDIR CASE. Both trackers must run, give finite figures and agree.
 set -u
 edgetrack=$1
 work=$2/$3
 name=$3
 mbt=/usr/share/visp-images-data/ViSP-images/mbt
+models=$(cd "$(dirname "$0")/../../.." && pwd)/data/models
 rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less, check_poses
@@ -58,6 +60,18 @@ case $name in
     compare_cube --last 9 --truth "$work/truth.csv" | tee "$work/compare.txt" || fail "compare --truth failed"
     less "$(field ours_max_distance_mm)" 0.001 || fail "our poses in compare differ from track's"
     less "$(field visp_max_distance_mm)" 20 || fail "ViSP's camera position is 20 mm or more from ours" ;;
+  compare_colour_as_track)
+    # Colour frames: compare gives both trackers one grey conversion of each frame, made outside
+    # the timed calls; ours must track it as `track` tracks the colour frame itself.
+    "$edgetrack" synth --out "$work/seq" --model "$models/cube60.cao" --frames 6 --supersample 1 >/dev/null || fail "synth failed"
+    "$edgetrack" track --model "$models/cube60.cao" --camera "$work/seq/camera.xml" --init-pose "$work/seq/first.pos" \
+      --images "$work/seq/frames/frame%04d.ppm" --quiet --poses "$work/track.csv" || fail "track failed"
+    { echo "frame,tx,ty,tz,tux,tuy,tuz"; tail -n +2 "$work/track.csv" | cut -d, -f1-7; } >"$work/truth.csv"
+    "$edgetrack" compare --model "$models/cube60.cao" --camera "$work/seq/camera.xml" --init-pose "$work/seq/first.pos" \
+      --images "$work/seq/frames/frame%04d.ppm" --truth "$work/truth.csv" | tee "$work/compare.txt" ||
+      fail "compare on colour frames failed"
+    [ "$(field frames)" = 6 ] || fail "expected 6 frames"
+    less "$(field ours_max_distance_mm)" 0.001 || fail "our poses on colour frames in compare differ from track's" ;;
   error_compare_missing_model)
     expect_error "missing.cao" "$edgetrack" compare --model "$work/missing.cao" --camera "$mbt/cube.xml" \
       --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm" ;;

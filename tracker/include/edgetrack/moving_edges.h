@@ -9,7 +9,6 @@
 #include "edgetrack/edge_match.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
-#include "visp3/me/vpMeSite.h"
 
 namespace edgetrack {
 
@@ -20,10 +19,11 @@ namespace edgetrack {
 constexpr int kRefinementReachAlong = 3;
 constexpr int kRefinementReachAcross = 1;
 
-/// Runs vpMeSite::track at every control point: the site starts at the point's pixel with the
-/// normal angle alpha = atan2(n_y, n_x) and keeps the strongest edge within +-me.getRange()
-/// pixels that passes the likelihood threshold (no contrast test: sites are re-sampled every
-/// frame, so there is no previous contrast to compare with). The match is then refined to
+/// Runs vpMeSite::track's search at every control point: a site at the point's pixel with the
+/// normal angle alpha = atan2(n_y, n_x) (its mask from the normal itself, normal_mask.h; its
+/// path along the unit normal) keeps the strongest edge within +-me.getRange() pixels that
+/// passes the likelihood threshold, or with a reference contrast (below) the edge that passes
+/// the contrast test. The match is then refined to
 /// sub-pixel precision (not in ViSP, which keeps whole pixels): on the line of the image axis
 /// nearest to the normal through the site's pixel and on the two lines beside it, the edge's
 /// position is the likelihood's local maximum (climbing up to 2 pixels from the site's column
@@ -32,7 +32,7 @@ constexpr int kRefinementReachAcross = 1;
 /// alone when a side line's peak is under half the middle one). Unlike the site's whole pixel,
 /// which jumps when a rounding-size move of the control point changes the truncated path, this
 /// moves continuously with the control point, so double and fixed-point builds agree. Returns
-/// only the matched points (state NO_SUPPRESSION).
+/// only the matched points.
 ///
 /// With `hypotheses` > 1 (at most kMaxHypotheses; Wuest et al.'s multiple-hypothesis edge
 /// tracking, ViSP 3.7's vpMeSite::trackMultipleHypotheses), each match also keeps up to

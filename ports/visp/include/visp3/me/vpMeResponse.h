@@ -45,16 +45,18 @@ class vpMeResponse {
   int at(int i, int j) const {
     if (outside(i, j)) return 0;
 #if defined(__SSE2__)
-    // Only the vector path inlined: the others' registers would weigh on every caller's loop.
     if (padded_ && size_ == 5) return sign_ * padded_sum<5>(i - half_, j - half_);
-    return sign_ * other_sum(i - half_, j - half_);
-#else
-    return sign_ * sum(i - half_, j - half_);
 #endif
+    // Only the vector path inlined: the others' weights and row pointers, inlined in a caller's
+    // loop, are spilled to the stack and reloaded at every call. The antisymmetric 5 x 5 sum
+    // (upstream's default masks) has a function of its own, its weights loaded where used.
+    if (antisymmetric_ && size_ == 5) return sign_ * antisymmetric_sum_5(i - half_, j - half_);
+    return sign_ * other_sum(i - half_, j - half_);
   }
 
  private:
   [[gnu::noinline]] int other_sum(int i0, int j0) const { return sum(i0, j0); }
+  [[gnu::noinline]] int antisymmetric_sum_5(int i0, int j0) const { return antisymmetric_sum<5>(i0, j0); }
 
   /// Sum of weight * pixel over the window whose top-left pixel is (i0, j0).
   int sum(int i0, int j0) const {
