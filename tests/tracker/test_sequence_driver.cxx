@@ -16,7 +16,6 @@ DECLARE(test_status_leaving_view);
 DECLARE(test_visp_config);
 DECLARE(test_tracker_faces);
 DECLARE(test_hypotheses);
-DECLARE(test_thin_lines);
 DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
@@ -42,7 +41,6 @@ void register_tests() {
   REGISTER(test_visp_config);
   REGISTER(test_tracker_faces);
   REGISTER(test_hypotheses);
-  REGISTER(test_thin_lines);
   REGISTER(test_frame_layouts);
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);

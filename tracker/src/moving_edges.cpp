@@ -193,68 +193,32 @@ int normal_sign(const real& alpha) {
   return sign;
 }
 
-/// Along-axis pixels within which a step and an opposite one are the two sides of one thin line
-/// (up to about two pixels wide, with the image's blur) rather than an edge between regions.
-constexpr int kLineWidth = 2;
-
-/// Whether the edge at pixel (i, j) is a side of a thin line: on the image axis nearest to the
-/// normal, the larger intensity step next to the pixel has an opposite step of at least half
-/// its size within kLineWidth. An edge between two regions changes the intensity once. The
-/// reads stay within the refinement's reach of the path, which me_search_box covers.
-bool thin_line_side(const vpImage<unsigned char>& grey, const ControlPoint& point, int i, int j) {
-  using std::fabs;
-  const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
-  const int u = along_x ? j : i, v = along_x ? i : j;
-  const int u_limit = along_x ? static_cast<int>(grey.getWidth()) : static_cast<int>(grey.getHeight());
-  if (u - kLineWidth - 1 < 0 || u + kLineWidth + 1 >= u_limit) return false;
-  auto at = [&](int w) { return static_cast<int>(along_x ? grey[v][w] : grey[w][v]); };
-  // step(k): the change from pixel u + k to u + k + 1.
-  auto step = [&](int k) { return at(u + k + 1) - at(u + k); };
-  const int before = step(-1), after = step(0);
-  const int own_k = (before < 0 ? -before : before) >= (after < 0 ? -after : after) ? -1 : 0;
-  const int sign = step(own_k) < 0 ? -1 : 1, own = sign * step(own_k);
-  for (int k = own_k - kLineWidth; k <= own_k + kLineWidth; ++k) {
-    if (k == own_k || -2 * sign * step(k) < own) continue;
-    // The same region on both sides: a line, not a seam between two faces.
-    const int outside = at(u + (k > own_k ? k : own_k) + 1) - at(u + (k < own_k ? k : own_k));
-    if (2 * (outside < 0 ? -outside : outside) < own) return true;
-  }
-  return false;
-}
-
 /// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
 /// (EdgeMatch::contrast) the same model point showed in the last trusted frame: of the local
 /// maxima of for_each_path_peak, those
 /// whose conv has the reference's sign and lies within (1 - mu1, 1 + mu2) times it, and of
-/// those the strongest that is no thin line's side (thin_line_side), else the strongest. (A
-/// dark line beside an edge, on the far side from the object, has an inner side of the edge's
-/// polarity and often more contrast; the mask cannot tell them apart, the profile can. Where
-/// only a line passes, it is kept: a real edge may image as a thin line, a seam or a crease.)
-/// (Upstream takes the pixel whose contrast is nearest to the reference: where a face turns
-/// into view beside a silhouette, its far edge has the silhouette's old contrast, and on the
-/// generated frames that rule followed it off the cube.) False when none passes (the site's
-/// pixel is then left anywhere on the path).
+/// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
+/// where a face turns into view beside a silhouette, its far edge has the silhouette's old
+/// contrast, and on the generated frames that rule followed it off the cube.) False when none
+/// passes (the site's pixel is then left anywhere on the path).
 bool track_by_contrast(vpMeSite& site, const vpImage<unsigned char>& grey, const vpMe& me, const ControlPoint& point,
                        const real& reference) {
   using std::fabs;
   const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
   const bool positive = reference > real(0);
-  struct Passing {
-    int magnitude = 0, i = 0, j = 0, conv = 0;
-  };
-  Passing strongest, strongest_edge;  // of all passing maxima, and of those that are no line's side
+  int best = 0, best_i = 0, best_j = 0, best_conv = 0;
   for_each_path_peak(site, grey, me, point, [&](int conv, int i, int j) {
     const int magnitude = conv < 0 ? -conv : conv;
-    if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most)) return;
-    if (magnitude > strongest.magnitude) strongest = {magnitude, i, j, conv};
-    if (magnitude > strongest_edge.magnitude && !thin_line_side(grey, point, i, j))
-      strongest_edge = {magnitude, i, j, conv};
+    if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most) || magnitude <= best) return;
+    best = magnitude;
+    best_i = i;
+    best_j = j;
+    best_conv = conv;
   });
-  if (strongest.magnitude == 0) return false;
-  const Passing& chosen = strongest_edge.magnitude != 0 ? strongest_edge : strongest;
-  site.i = chosen.i;
-  site.j = chosen.j;
-  site.convlt = real(chosen.conv);
+  if (best == 0) return false;
+  site.i = best_i;
+  site.j = best_j;
+  site.convlt = real(best_conv);
   site.setState(vpMeSite::NO_SUPPRESSION);
   return true;
 }

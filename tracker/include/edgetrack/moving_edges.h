@@ -44,9 +44,7 @@ constexpr int kRefinementReachAcross = 1;
 /// single-hypothesis search.
 ///
 /// `references` (one per point, 0: none) are the contrasts the contrast test compares with
-/// (contrast_memory.h); of the maxima that pass it, the site takes the strongest that is no side
-/// of a thin line (a step with an opposite one within two pixels along the image axis nearest
-/// to the normal: a dark line beside an edge, docs/ME.md), else the strongest; where none passes, the site takes the strongest edge, unless `strict`
+/// (contrast_memory.h); where none passes, the site takes the strongest edge, unless `strict`
 /// marks the point (nonzero): its reference is its primitive's, borrowed because the point
 /// itself was not seen in the last trusted frame (ContrastMemory::references), and the point
 /// then gets no match.
