@@ -253,10 +253,10 @@ int main(int argc, char** argv) {
     if (!o.quiet && o.diagnose) print_candidates(detector.value(), d, truth, extent.centre, symmetries);
     if (!o.quiet)
       std::printf("trial %d (%.0f mm): found %d right %d score %.2f match %.2f candidates %zu error %.2f mm %.2f deg "
-                  "%.1f ms %s\n",
+                  "%.1f ms %d points %s\n",
                   k, 1000 * static_cast<double>((truth * extent.centre).z), d.found, ok, static_cast<double>(d.score),
                   static_cast<double>(d.match_share), d.refined.size(), e.centre_mm, e.rotation_deg, ms,
-                  failure_key(failure));
+                  d.points_searched, failure_key(failure));
   }
   std::printf("detection: scene=%s object=%d trials=%d found=%d right=%d rate_percent=%.1f wrong=%d truth_kept=%d "
               "templates=%zu template_bytes=%zu make_ms=%.0f mean_ms=%.2f worst_ms=%.2f cpu_ms=%.2f "

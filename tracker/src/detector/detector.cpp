@@ -15,7 +15,8 @@ namespace edgetrack {
 namespace {
 
 bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
-  return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share && c.support >= params.min_support;
+  return c.status == TrackingStatus::kTracked && c.kept_share >= params.min_kept_share &&
+         c.support >= params.min_support && c.residual_scale <= params.max_residual_scale_px;
 }
 
 /// Better: acceptable over not, then more control points kept (a pose too far away, whose
@@ -57,6 +58,10 @@ Result<bool> check_detector_params(const DetectorParams& p) {
       p.refine_robust_rounds > 10)
     return bad("the screening and refining robust rounds must be 0 to 10");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
+  if (!(p.min_support >= real(0)) || p.min_support > real(1)) return bad("the support must be 0 to 1");
+  if (!(p.confident_scale_px >= real(0)) || p.confident_scale_px > p.max_residual_scale_px ||
+      p.max_residual_scale_px > real(10))
+    return bad("the residual scales must be 0 <= confident <= most <= 10 px");
   return true;
 }
 
@@ -80,6 +85,7 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   screening.pose.robust_rounds = params.screen_robust_rounds;
   refining.me.setSampleStep(params.refine_sample_step);
   refining.pose.robust_rounds = params.refine_robust_rounds;
+  screening.pose.solver = refining.pose.solver = params.solver;
   TrackerParams wide_tracking = refining, fine_tracking = refining;
   wide_tracking.me.setRange(params.wide_range);
   fine_tracking.me.setRange(params.fine_range);
@@ -247,7 +253,11 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   // The trackers read the grey image matching made, in place: no frame is converted again.
   const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
-  for (const TemplateMatch& m : screen(grey)) detection.refined.push_back(refine(grey, m));
+  for (const TemplateMatch& m : screen(grey)) {
+    detection.refined.push_back(refine(grey, m));
+    const RefinedCandidate& last = detection.refined.back();
+    if (acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) break;
+  }
   detection.points_searched = points_searched_;
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)

@@ -38,7 +38,7 @@ struct DetectorParams {
   int refine_iterations = 6;
   int wide_iterations = 4;
   unsigned wide_range = 6;
-  int fine_iterations = 3;
+  int fine_iterations = 8;
   unsigned fine_range = 2;
   /// A run stops before its last frame once a tracked frame moved no control point farther
   /// along its normal than this (pixels): the pose has settled, and the next frame on the same
@@ -51,17 +51,24 @@ struct DetectorParams {
   /// The screening only ranks the matches by the control points they keep, which a third of
   /// the tracking step's points do as well.
   real screen_sample_step = real(15);
-  /// Robust rounds per frame (PoseParams::robust_rounds) of the refining and screening runs:
-  /// a run's next frame starts its first solve weighted at this one's pose, so the frames carry
-  /// the re-weighting on and each needs fewer rounds than a tracked sequence's frame.
-  int refine_robust_rounds = 2;
+  /// Robust rounds per frame (PoseParams::robust_rounds) of the refining and screening runs.
+  /// A run's next frame starts its first solve weighted at this one's pose, so the frames carry
+  /// the re-weighting on; the screening only ranks, so one round does. A refining frame takes more
+  /// than a tracked one: its start is a template's pose, degrees off, and each round is one LM
+  /// step whose weights follow the pose.
+  int refine_robust_rounds = 4;
   int screen_robust_rounds = 1;
+  /// The screening and refining runs' pose solver (PoseParams::solver): the normal equations take
+  /// fewer instructions per solve than MINPACK's QR, and a detection solves a few hundred times.
+  PoseSolver solver = PoseSolver::kNormalEquations;
   /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
   /// frames at the tracking range, and only the `refined_candidates` keeping the most control
-  /// points are refined in full (from their match again): the screen's frames already part
-  /// the matches that are near the object from the rest, at a fraction of the full cost.
+  /// points are refined in full (from their match again), best first, until one is confidently
+  /// right (confident_scale_px): the screen's frames already part the matches that are near the
+  /// object from the rest, at a fraction of the full cost, and the first one refined is most
+  /// often right, so the later ones cost only where the first ones failed.
   int screen_iterations = 3;
-  int refined_candidates = 4;
+  int refined_candidates = 8;
   /// Before screening, a match whose pose is within `suppress_deg` of rotation and
   /// `suppress_radii` model radii of centre of a better one's is dropped (non-maximum
   /// suppression over the pose): neighbouring templates matching the same place refine to the
@@ -78,6 +85,16 @@ struct DetectorParams {
   /// cube and wood toy had 0.5 to 0.95 (an inner edge the light leaves without contrast has
   /// none), so this only refuses a pose the image's gradients do not show at all.
   real min_support = real(0.4);
+  /// Found also needs the refined candidate's robust residual scale (px) at most this. A
+  /// tracked frame may have up to a pixel (StatusParams::tracked_scale_px): edges move and blur
+  /// between frames. A still image refined to convergence keeps only the edges' localisation:
+  /// a pose whose whole edges lie half a pixel off (an out-of-plane tilt the outline hardly
+  /// shows, a neighbouring edge taken for the model's) is wrong, not imprecise.
+  real max_residual_scale_px = real(0.5);
+  /// Candidates are refined best first until one is found with a residual scale at most this
+  /// (px): the moving edges' sites within their pixel of the model's lines, a fit that no other
+  /// candidate's could better.
+  real confident_scale_px = real(0.25);
 };
 
 /// One candidate after refinement.

@@ -22,7 +22,9 @@ struct MatchParams {
   /// The best matches kept per distance of the range (one per template, at the template's best
   /// position). Per distance, because a small template (a far view) lines up with a part of a
   /// near object's edges as well as a near one with the whole: shares compare within a size.
-  int max_candidates = 2;
+  /// Three: the nearest template to the view is often not the best-scoring one at its distance
+  /// (the light leaves an edge faint, clutter lines up with another view's edges).
+  int max_candidates = 3;
 };
 
 struct TemplateMatch {
