@@ -29,6 +29,16 @@ real depth_in_camera(const Se3& camera_from_model, const Vec3& point) {
   return r.m[2][0] * point.x + r.m[2][1] * point.y + r.m[2][2] * point.z + camera_from_model.translation().z;
 }
 
+/// Whether the point p (camera frame, z > 0) projects within `within` pixels of `found` along
+/// `normal`: the distance times z, so that the projection needs no division.
+bool projects_near(const PinholeCamera& camera, const Vec3& p, const Vec2& normal, const Vec2& found,
+                   const real& within) {
+  using std::fabs;
+  const real along_times_z = normal.x * (camera.px * p.x + (camera.u0 - found.x) * p.z) +
+                             normal.y * (camera.py * p.y + (camera.v0 - found.y) * p.z);
+  return fabs(along_times_z) < within * p.z;
+}
+
 }  // namespace
 
 void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
@@ -53,7 +63,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
       const Vec3 p = camera_from_model * m.point.point_in_model;
-      if (p.z <= real(0) || !(fabs(dot(m.point.normal, camera.project(p) - m.found)) < within)) continue;
+      if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
       remembered_.push_back({m.point.edge, m.point.point_in_model, m.contrast});
     }
     first = end;
