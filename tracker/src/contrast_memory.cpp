@@ -7,10 +7,36 @@
 namespace edgetrack {
 namespace {
 
-/// |a - b| summed over the axes, metres: no squares, which S47.16 would round at millimetres.
-real taxicab(const Vec3& a, const Vec3& b) {
+/// Whether |a - b| summed over the axes (metres: no squares, which S47.16 would round at
+/// millimetres) is below `bound`, and then that sum in `distance`. The partial sums only grow,
+/// so an axis that alone reaches the bound settles it without the others.
+bool taxicab_below(const Vec3& a, const Vec3& b, const real& bound, real& distance) {
   using std::fabs;
-  return fabs(a.x - b.x) + fabs(a.y - b.y) + fabs(a.z - b.z);
+  real d = fabs(a.x - b.x);
+  if (!(d < bound)) return false;
+  d += fabs(a.y - b.y);
+  if (!(d < bound)) return false;
+  d += fabs(a.z - b.z);
+  if (!(d < bound)) return false;
+  distance = d;
+  return true;
+}
+
+/// The depth of a model point in the camera frame: the z row of camera_from_model * point alone,
+/// summed in the same order, so the same value without the x and y rows.
+real depth_in_camera(const Se3& camera_from_model, const Vec3& point) {
+  const Mat33& r = camera_from_model.rotation();
+  return r.m[2][0] * point.x + r.m[2][1] * point.y + r.m[2][2] * point.z + camera_from_model.translation().z;
+}
+
+/// Whether the point p (camera frame, z > 0) projects within `within` pixels of `found` along
+/// `normal`: the distance times z, so that the projection needs no division.
+bool projects_near(const PinholeCamera& camera, const Vec3& p, const Vec2& normal, const Vec2& found,
+                   const real& within) {
+  using std::fabs;
+  const real along_times_z = normal.x * (camera.px * p.x + (camera.u0 - found.x) * p.z) +
+                             normal.y * (camera.py * p.y + (camera.v0 - found.y) * p.z);
+  return fabs(along_times_z) < within * p.z;
 }
 
 }  // namespace
@@ -37,7 +63,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
       const Vec3 p = camera_from_model * m.point.point_in_model;
-      if (p.z <= real(0) || !(fabs(dot(m.point.normal, camera.project(p) - m.found)) < within)) continue;
+      if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
       remembered_.push_back({m.point.edge, m.point.point_in_model, m.contrast});
     }
     first = end;
@@ -55,6 +81,9 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
   size_t first = 0, end = 0;
   int edge = -1;
   real primitive(0);
+  // `reach` pixels at depth 1 m, in metres, doubled: the bound is on the taxicab distance, 1 to
+  // sqrt(3) times the straight one, so every point within reach passes it.
+  const real bound_per_metre = real(2) * reach / camera.px;
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     if (point.edge != edge) {
@@ -65,17 +94,12 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
       }
       primitive = mean_of_one_polarity(first, end);
     }
-    const real depth = (camera_from_model * point.point_in_model).z;
+    const real depth = depth_in_camera(camera_from_model, point.point_in_model);
     if (depth <= real(0)) continue;
-    // `reach` pixels at this depth, in metres, doubled: the bound is on the taxicab distance,
-    // 1 to sqrt(3) times the straight one, so every point within reach passes it.
-    real nearest = real(2) * reach * depth / camera.px;
+    real nearest = bound_per_metre * depth;
     for (size_t k = first; k < end; ++k) {
-      const real d = taxicab(remembered_[k].point_in_model, point.point_in_model);
-      if (d < nearest) {
-        nearest = d;
+      if (taxicab_below(remembered_[k].point_in_model, point.point_in_model, nearest, nearest))
         out[p] = remembered_[k].contrast;
-      }
     }
     if (out[p] == real(0) && primitive != real(0)) {
       out[p] = primitive;

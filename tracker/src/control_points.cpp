@@ -107,6 +107,33 @@ void sample_circle(const Circle& circle, int primitive, const PinholeCamera& cam
   }
 }
 
+/// Every primitive's points, or with `faces` those of the primitives it tracks.
+void sample_primitives(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                       const SamplingParams& params, const FaceVisibility* faces, std::vector<ControlPoint>& points) {
+  points.clear();
+  const auto wanted = [faces](int primitive) { return faces == nullptr || faces->edge_tracked(primitive); };
+  const Window window{real(params.border), real(camera.width - 1 - params.border), real(params.border),
+                      real(camera.height - 1 - params.border)};
+  for (size_t e = 0; e < model.edges.size(); ++e)
+    if (wanted(static_cast<int>(e)))
+      sample_segment(model.vertices[model.edges[e].a], model.vertices[model.edges[e].b], static_cast<int>(e), camera,
+                     camera_from_model, params, window, points);
+  const Vec3 centre = camera_centre_in_model(camera_from_model);
+  for (size_t c = 0; c < model.cylinders.size(); ++c) {
+    Vec3 lines[2][2];
+    if (!cylinder_generators(model.cylinders[c], centre, lines)) continue;
+    for (int k = 0; k < 2; ++k) {
+      const int primitive = cylinder_primitive(model, static_cast<int>(c), k);
+      if (wanted(primitive))
+        sample_segment(lines[k][0], lines[k][1], primitive, camera, camera_from_model, params, window, points);
+    }
+  }
+  for (size_t k = 0; k < model.circles.size(); ++k) {
+    const int primitive = circle_primitive(model, static_cast<int>(k));
+    if (wanted(primitive)) sample_circle(model.circles[k], primitive, camera, camera_from_model, params, window, points);
+  }
+}
+
 }  // namespace
 
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
@@ -118,23 +145,12 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
 
 void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
                            const SamplingParams& params, std::vector<ControlPoint>& points) {
-  points.clear();
-  const Window window{real(params.border), real(camera.width - 1 - params.border), real(params.border),
-                      real(camera.height - 1 - params.border)};
-  for (size_t e = 0; e < model.edges.size(); ++e)
-    sample_segment(model.vertices[model.edges[e].a], model.vertices[model.edges[e].b], static_cast<int>(e), camera,
-                   camera_from_model, params, window, points);
-  const Vec3 centre = camera_centre_in_model(camera_from_model);
-  for (size_t c = 0; c < model.cylinders.size(); ++c) {
-    Vec3 lines[2][2];
-    if (!cylinder_generators(model.cylinders[c], centre, lines)) continue;
-    for (int k = 0; k < 2; ++k)
-      sample_segment(lines[k][0], lines[k][1], cylinder_primitive(model, static_cast<int>(c), k), camera,
-                     camera_from_model, params, window, points);
-  }
-  for (size_t k = 0; k < model.circles.size(); ++k)
-    sample_circle(model.circles[k], circle_primitive(model, static_cast<int>(k)), camera, camera_from_model,
-                  params, window, points);
+  sample_primitives(model, camera, camera_from_model, params, nullptr, points);
+}
+
+void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                           const SamplingParams& params, const FaceVisibility& faces, std::vector<ControlPoint>& points) {
+  sample_primitives(model, camera, camera_from_model, params, &faces, points);
 }
 
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids) {

@@ -10,22 +10,27 @@
 namespace edgetrack {
 namespace {
 
-/// `count` pixels of one row, from its first pixel to be converted.
-void convert_row(PixelLayout layout, const uint8_t* in, unsigned char* out, unsigned int count) {
+/// Rows of `count` pixels, from the first pixel to be converted of each, `rows` times, the rows
+/// `in_stride` and `out_stride` bytes apart: the layout is looked at once per box.
+void convert_rows(PixelLayout layout, const uint8_t* in, int in_stride, unsigned char* out, int out_stride, int rows,
+                  unsigned int count) {
+  const auto in_step = static_cast<unsigned int>(in_stride), out_step = static_cast<unsigned int>(out_stride);
   switch (layout) {
     case PixelLayout::kRgb565:
-      vpImageConvert::RGB565ToGrey(reinterpret_cast<const uint16_t*>(in), out, count);
+      vpImageConvert::RGB565ToGrey(in, in_step, out, out_step, static_cast<unsigned int>(rows), count);
       return;
     case PixelLayout::kRgb24:
-      for (; count > 0; --count, in += 3) *out++ = vpImageConvert::rgbToGrey(in[0], in[1], in[2]);
+      for (; rows > 0; --rows, in += in_step, out += out_step)
+        for (unsigned int k = 0; k < count; ++k) out[k] = vpImageConvert::rgbToGrey(in[3 * k], in[3 * k + 1], in[3 * k + 2]);
       return;
     case PixelLayout::kBgr24:
-      for (; count > 0; --count, in += 3) *out++ = vpImageConvert::rgbToGrey(in[2], in[1], in[0]);
+      for (; rows > 0; --rows, in += in_step, out += out_step)
+        for (unsigned int k = 0; k < count; ++k) out[k] = vpImageConvert::rgbToGrey(in[3 * k + 2], in[3 * k + 1], in[3 * k]);
       return;
     case PixelLayout::kGrey8:
     case PixelLayout::kNv21:
     case PixelLayout::kI420:
-      std::memcpy(out, in, count);
+      for (; rows > 0; --rows, in += in_step, out += out_step) std::memcpy(out, in, count);
       return;
   }
 }
@@ -37,15 +42,15 @@ unsigned int convert_to_grey(const FrameView& frame, const PixelBox& box, vpImag
   const int bottom = std::min(box.bottom, frame.height), right = std::min(box.right, frame.width);
   if (left >= right || top >= bottom) return 0;
   const unsigned int count = static_cast<unsigned int>(right - left);
-  const int step = bytes_per_pixel(frame.layout);
-  for (int y = top; y < bottom; ++y) convert_row(frame.layout, frame.row(y) + left * step, grey[y] + left, count);
+  const int width = static_cast<int>(grey.getWidth());
+  convert_rows(frame.layout, frame.row(top) + left * bytes_per_pixel(frame.layout), frame.row_bytes, grey[top] + left,
+               width, bottom - top, count);
   return static_cast<unsigned int>(bottom - top) * count;
 }
 
 unsigned int BoxGreyScaler::convert(const FrameView& frame, vpImage<unsigned char>& grey) {
-  const size_t rows = static_cast<size_t>(frame.height);
-  left_.assign(rows, frame.width);
-  right_.assign(rows, 0);
+  // Only the rows the boxes reach carry spans: those are reset and summed, not the frame's.
+  int first_row = frame.height, end_row = 0;
   unsigned int box_pixels = 0;
   for (PixelBox& box : boxes_) {
     box.top = std::max(box.top, 0);
@@ -54,20 +59,33 @@ unsigned int BoxGreyScaler::convert(const FrameView& frame, vpImage<unsigned cha
     box.right = std::min(box.right, frame.width);
     if (box.left >= box.right || box.top >= box.bottom) continue;
     box_pixels += static_cast<unsigned int>(box.bottom - box.top) * static_cast<unsigned int>(box.right - box.left);
-    for (int y = box.top; y < box.bottom; ++y) {
-      left_[y] = std::min(left_[y], box.left);
-      right_[y] = std::max(right_[y], box.right);
+    first_row = std::min(first_row, box.top);
+    end_row = std::max(end_row, box.bottom);
+  }
+  if (first_row >= end_row) return 0;
+  left_.resize(static_cast<size_t>(frame.height));
+  right_.resize(static_cast<size_t>(frame.height));
+  std::fill(left_.begin() + first_row, left_.begin() + end_row, frame.width);
+  std::fill(right_.begin() + first_row, right_.begin() + end_row, 0);
+  int* const lefts = left_.data();
+  int* const rights = right_.data();
+  for (const PixelBox& box : boxes_) {
+    const int left = box.left, right = box.right, bottom = box.bottom;  // not reloaded after each store
+    if (left >= right) continue;
+    for (int y = box.top; y < bottom; ++y) {
+      lefts[y] = std::min(lefts[y], left);
+      rights[y] = std::max(rights[y], right);
     }
   }
   unsigned int span_pixels = 0;
-  for (size_t y = 0; y < rows; ++y)
+  for (int y = first_row; y < end_row; ++y)
     if (left_[y] < right_[y]) span_pixels += static_cast<unsigned int>(right_[y] - left_[y]);
   if (span_pixels >= box_pixels) {
     unsigned int converted = 0;
     for (const PixelBox& box : boxes_) converted += convert_to_grey(frame, box, grey);
     return converted;
   }
-  for (int y = 0; y < frame.height; ++y)
+  for (int y = first_row; y < end_row; ++y)
     if (left_[y] < right_[y]) convert_to_grey(frame, PixelBox{y, left_[y], y + 1, right_[y]}, grey);
   return span_pixels;
 }

@@ -152,8 +152,7 @@ void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, 
   if (edge_id_source_) edge_id_source_->draw(model_, start, edge_ids_);
   else edge_ids_.render(model_, start);
   face_visibility_.update(model_, camera_, start, params_.faces);
-  sample_control_points(model_, camera_, start, sampling_, sampled_);
-  face_visibility_.keep_tracked(sampled_);
+  sample_control_points(model_, camera_, start, sampling_, face_visibility_, sampled_);
   keep_visible(sampled_, edge_ids_, visible_);
   if (guessing) {
     references_.assign(visible_.size(), real(0));

@@ -116,11 +116,13 @@ awk -F'\t' -v f="$frames" '
     if (n ~ /EdgeIdBuffer|clip_and_project|to_screen|project$|fill_triangle|draw_line|face_passes|FaceVisibility/) return "visible edges: Edge-ID fill, lines and face tests"
     if (n ~ /sample_segment|control_point|clip_to_view|keep_visible|shows/) return "visible edges: sampling the control points"
     if (n ~ /vpMe|convolve|moving_edges|refined_edge_point|me_search_box|normal_sign|sin_or_cos/) return "moving edges"
-    if (n ~ /RGB565ToGrey|convert_to_grey/) return "grey conversion"
+    if (n ~ /RGB565ToGrey|convert_to_grey|BoxGreyScaler|grey_scale/) return "grey conversion"
     if (n ~ /ContrastMemory/) return "contrast memory"
+    if (n ~ /pose_uncertainty|pixel_gradient|whitened_square/) return "status: pose uncertainty"
+    if (n ~ /Tracker::judge|judge_frame|MotionModel|largest_image_shift/) return "status: frame measures, judgement and prediction"
     if (n ~ /multiply_general|divide_general|sqrt|__udivmoddi4|__aeabi|operator\//) return "fixed-point multiply, divide, sqrt out of line"
     if (n ~ /^mem(set|cpy|move)/) return "memset, memcpy"
-    return "other (status, prediction, bookkeeping)"
+    return "other (shared geometry, bookkeeping)"
   }
   { a = area($1); t[a] += $2; total += $2 }
   END { for (k in t) printf "%s\t%.0f\t%.1f\n", k, t[k] / f, 100 * t[k] / total }' "$work/working_tree.short" |

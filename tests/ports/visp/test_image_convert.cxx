@@ -158,6 +158,17 @@ void test_on_demand() {
              vpImageConvert::RGB565ToGrey(frame.bitmap, raw, -3, cols - 2, 2, cols + 4), 4u);
   TEST_EQUAL("a box outside the frame converts nothing", vpImageConvert::RGB565ToGrey(frame.bitmap, raw, 5, cols, 9, cols + 3),
              0u);
+
+  // Rows strided apart on both sides: 7 pixels a row, four a round and three after.
+  vpImage<unsigned char> strided(rows, cols, 7);
+  vpImageConvert::RGB565ToGrey(reinterpret_cast<const uint8_t*>(frame[5] + 6), 2 * cols, strided[5] + 6, cols, 4, 7);
+  bool strided_box_only = true;
+  for (unsigned int i = 0; i < rows; ++i)
+    for (unsigned int j = 0; j < cols; ++j) {
+      const bool inside = i >= 5 && i < 9 && j >= 6 && j < 13;
+      strided_box_only = strided_box_only && strided[i][j] == (inside ? full[i][j] : 7);
+    }
+  TEST("strided rows convert exactly their rows x columns, by the rule", strided_box_only, true);
 }
 
 }  // namespace

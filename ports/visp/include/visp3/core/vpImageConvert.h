@@ -20,11 +20,11 @@
 class vpImageConvert {
  public:
   /// The rounding rule above for one pixel.
-  static unsigned char rgbToGrey(unsigned int r, unsigned int g, unsigned int b) {
+  static constexpr unsigned char rgbToGrey(unsigned int r, unsigned int g, unsigned int b) {
     return static_cast<unsigned char>((13933u * r + 46871u * g + 4732u * b + 32768u) >> 16);
   }
   /// One RGB565 pixel (red in the top 5 bits) to grey, by the rule above.
-  static unsigned char rgb565ToGrey(uint16_t p) {
+  static constexpr unsigned char rgb565ToGrey(uint16_t p) {
     const unsigned int r5 = p >> 11, g6 = (p >> 5) & 0x3Fu, b5 = p & 0x1Fu;
     return rgbToGrey((r5 << 3) | (r5 >> 2), (g6 << 2) | (g6 >> 4), (b5 << 3) | (b5 >> 2));
   }
@@ -40,6 +40,11 @@ class vpImageConvert {
   static void RGBaToGrey(unsigned char* rgba, unsigned char* grey, unsigned int size);
   /// New in the port (the paper's handheld pixel format): `size` RGB565 pixels to grey.
   static void RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, unsigned int size);
+  /// New in the port: `rows` rows of `cols` RGB565 pixels to grey, the rows `src_stride` bytes
+  /// apart in `src` (2-byte aligned) and `grey_stride` bytes apart in `grey` (a camera buffer's
+  /// box into an image's, one call per box).
+  static void RGB565ToGrey(const uint8_t* src, unsigned int src_stride, unsigned char* grey, unsigned int grey_stride,
+                           unsigned int rows, unsigned int cols);
   /// Whole-frame RGB565 to grey; `dest` takes the size of `src`.
   static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest);
   /// Converts only rows [top, bottom) and columns [left, right) (clipped to the image);
