@@ -52,6 +52,19 @@ StatusCase leaving_view() {
   return c;
 }
 
+/// The farthest a cube vertex inside the QVGA image at `truth` is drawn from there by `drawn`, px.
+double overlay_offset_px(const Se3& drawn, const Se3& truth) {
+  static const Result<EdgeModel> model = load_model(model_path(Scene::kCube));
+  const PinholeCamera camera = qvga_camera();
+  double worst = 0;
+  for (const Vec3& v : model.value().vertices) {
+    const Vec2 at = camera.project(truth * v);
+    if (at.x < real(0) || at.y < real(0) || at.x > real(camera.width - 1) || at.y > real(camera.height - 1)) continue;
+    worst = std::fmax(worst, static_cast<double>(norm(camera.project(drawn * v) - at)));
+  }
+  return worst;
+}
+
 }  // namespace
 
 std::vector<StatusCase> status_cases() {
@@ -64,8 +77,13 @@ StatusOutcome status_outcome(const StatusCase& c, const SequenceRun& run) {
   StatusOutcome o;
   const int frames = static_cast<int>(run.frames.size());
   for (int k = 0; k < frames; ++k) {
-    const bool lost = run.frames[static_cast<size_t>(k)].status == TrackingStatus::kLost;
+    const FrameResult& frame = run.frames[static_cast<size_t>(k)];
+    const bool lost = frame.status == TrackingStatus::kLost;
     o.lost += lost;
+    o.uncertain += frame.status == TrackingStatus::kUncertain;
+    if (frame.status == TrackingStatus::kTracked)
+      o.worst_tracked_px =
+          std::fmax(o.worst_tracked_px, overlay_offset_px(frame.camera_from_model, run.truth[static_cast<size_t>(k)]));
     if (lost && o.first_lost < 0) o.first_lost = k;
     if (k >= c.first_bad && k < c.visible_again) o.missed += !lost;
     else if (k < c.wholly_in_view || k >= c.visible_again) o.wrongly_lost += lost;

@@ -31,6 +31,10 @@ std::vector<StatusCase> status_cases();
 /// What a run of a case did.
 struct StatusOutcome {
   int lost = 0;             ///< frames reported lost
+  int uncertain = 0;        ///< frames reported uncertain
+  /// The largest overlay offset of a frame reported tracked: the farthest a model vertex in the
+  /// image is drawn from its true projection, pixels.
+  double worst_tracked_px = 0;
   int first_lost = -1;      ///< the first lost frame (-1: none)
   int missed = 0;           ///< frames in [first_bad, visible_again) not reported lost
   int wrongly_lost = 0;     ///< lost frames outside it (the leaving view: among the wholly-in-view frames)

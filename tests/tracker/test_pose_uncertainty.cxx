@@ -127,6 +127,7 @@ static void test_pose_uncertainty_measure() {
 static void test_pose_unconstrained_leaving_view() {
   TrackerParams without;
   without.status.max_pose_uncertainty_px = real(kUnconstrainedPx) + real(1);
+  without.status.lost_uncertainty_range_share = real(kUnconstrainedPx) + real(1);  // never past any range
   std::printf("%s leaving the view, without the uncertainty bound:\n", real_name());
   const LeavingCounts before = run_leaving(without);
   std::printf("%s leaving the view, with it:\n", real_name());

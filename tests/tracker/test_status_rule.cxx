@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The status rule on hand-made measures: each reason is named by the case it stands for, the
-/// chance threshold follows the searched range with its floor, and after a lost frame an
-/// uncertain one stays lost.
+/// chance threshold follows the searched range with its floor, a correction the matches
+/// support is no reason, the pose uncertainty is uncertain past a pixel and lost past the range,
+/// after a lost frame an uncertain one stays lost, and the settings' check refuses bad ones.
 #include <string>
 
+#include "edgetrack/pose_uncertainty.h"
+#include "edgetrack/tracker_params.h"
 #include "edgetrack/tracking_status.h"
 #include "testlib/testlib_test.h"
 
@@ -85,9 +88,25 @@ static void test_status_rule() {
   TEST("half the matches outliers: uncertain",
        is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kManyOutliers), true);
   m = tracked_frame();
-  m.correction_px = real(4.5);
-  TEST("a correction beyond the range: uncertain",
-       is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kLargeCorrection), true);
+  m.correction_px = real(9);
+  TEST("a correction beyond the range that the matches support: tracked",
+       judge_frame(m, params, min_points).status, TrackingStatus::kTracked);
+  m = tracked_frame();
+  m.pose_uncertainty_px = real(1.5);
+  TEST("a pose uncertainty over a pixel: uncertain",
+       is(judge_frame(m, params, min_points), TrackingStatus::kUncertain, StatusReason::kPoseUnconstrained), true);
+  m.pose_uncertainty_px = real(4.5);
+  TEST("beyond the range searched: lost",
+       is(judge_frame(m, params, min_points), TrackingStatus::kLost, StatusReason::kPoseUndetermined), true);
+  m.range = 8;
+  TEST("within a wider range: uncertain", judge_frame(m, params, min_points).status, TrackingStatus::kUncertain);
+  m = tracked_frame();
+  m.kept = m.matched = 8;
+  m.inlier_share = real(1);
+  m.matched_share = real(8.0 / 60.0);
+  m.pose_uncertainty_px = real(kUnconstrainedPx);
+  TEST("few matches that leave a direction free: lost, not only too few to check",
+       is(judge_frame(m, params, min_points), TrackingStatus::kLost, StatusReason::kPoseUndetermined), true);
   m = tracked_frame();
   m.saturations = 1;
   TEST("a saturation: uncertain",
@@ -100,6 +119,19 @@ static void test_status_rule() {
        is(judge_frame(m, params, min_points), TrackingStatus::kLost, StatusReason::kNotReacquired), true);
   m.residual_scale = real(0.4);
   TEST("after a loss, a tracked frame is tracked", judge_frame(m, params, min_points).status, TrackingStatus::kTracked);
+  TEST("the default settings pass their check", check_status_params(params).empty(), true);
+  StatusParams bad = params;
+  bad.lost_scale_floor_px = real(0.5);
+  TEST("a chance floor below the tracked scale is refused", check_status_params(bad).empty(), false);
+  bad = params;
+  bad.min_inlier_share = real(1.5);
+  TEST("a share above 1 is refused", check_status_params(bad).empty(), false);
+  bad = params;
+  bad.edge_location_px = real(-0.1);
+  TEST("a negative edge location error is refused", check_status_params(bad).empty(), false);
+  TrackerParams tracker_params;
+  tracker_params.status.lost_uncertainty_range_share = real(0);
+  TEST("and the tracker's settings check refuses them", check_tracker_params(tracker_params).has_value(), true);
   for (int r = 0; r < kStatusReasonCount; ++r)
     TEST("every reason has a name", std::string(reason_name(static_cast<StatusReason>(r))) != "?", true);
 }

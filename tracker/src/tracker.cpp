@@ -201,8 +201,9 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
   m.translation_change_mm = real(1000) * norm(solved.translation() - start.translation());
   m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
   m.range = me_.getRange();
-  m.pose_uncertainty_px = pose_uncertainty_px(matches_, model_, camera_, solved, m.residual_scale, params_.pose.tukey_c,
-                                              params_.pose.tukey_floor);
+  const real sigma = std::max(m.residual_scale, params_.status.edge_location_px);
+  m.pose_uncertainty_px =
+      pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
   const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);

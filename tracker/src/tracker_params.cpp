@@ -68,6 +68,8 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
     return SettingProblem{"", "the number of edge hypotheses must be 1 to " + std::to_string(kMaxHypotheses) + ", not " +
                                   number(params.hypotheses)};
   if (params.border < 0) return SettingProblem{"", "the image border must be at least 0 pixels, not " + number(params.border)};
+  const std::string status = check_status_params(params.status);
+  if (!status.empty()) return SettingProblem{"", status};
   return std::nullopt;
 }
 

@@ -24,13 +24,27 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kFewToCheck: return "too few matches to check the fit";
     case StatusReason::kLooseFit: return "residual scale above a tracked frame's";
     case StatusReason::kNotReacquired: return "not found again after a loss";
-    case StatusReason::kLargeCorrection: return "pose moved farther than the search range";
     case StatusReason::kSaturated: return "fixed-point saturation";
     case StatusReason::kNotDetected: return "not found by the detector";
     case StatusReason::kUnconfirmed: return "detected, not yet confirmed by a tracked frame";
     case StatusReason::kPoseUnconstrained: return "the matches leave the pose unconstrained";
+    case StatusReason::kPoseUndetermined: return "the matches leave the pose uncertain beyond the search range";
   }
   return "?";
+}
+
+std::string check_status_params(const StatusParams& p) {
+  const auto positive = [](const real& v) { return v > real(0); };
+  if (!positive(p.tracked_scale_px)) return "status: the tracked residual scale must be positive (pixels)";
+  if (!positive(p.lost_range_share) || !positive(p.lost_scale_floor_px) || p.lost_scale_floor_px < p.tracked_scale_px)
+    return "status: the chance scale's share of the range must be positive, its floor at least the tracked scale";
+  if (p.min_matched_share < real(0) || p.min_matched_share > real(1) || p.min_inlier_share < real(0) ||
+      p.min_inlier_share > real(1))
+    return "status: the matched and inlier shares must be in [0, 1]";
+  if (!positive(p.max_pose_uncertainty_px) || !positive(p.lost_uncertainty_range_share))
+    return "status: the pose uncertainty bounds must be positive";
+  if (p.edge_location_px < real(0)) return "status: the edge location error must be at least 0 pixels";
+  return "";
 }
 
 FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points) {
@@ -44,11 +58,12 @@ FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int 
   real lost_scale = params.lost_range_share * real(static_cast<int>(m.range));
   if (lost_scale < params.lost_scale_floor_px) lost_scale = params.lost_scale_floor_px;
   if (m.residual_scale > lost_scale) return lost(StatusReason::kChanceResiduals);
+  if (m.pose_uncertainty_px > params.lost_uncertainty_range_share * real(static_cast<int>(m.range)))
+    return lost(StatusReason::kPoseUndetermined);
   if (m.kept < 2 * min_points) return uncertain(StatusReason::kFewToCheck);
   if (m.matched_share < params.min_matched_share) return uncertain(StatusReason::kFewMatched);
   if (m.inlier_share < params.min_inlier_share) return uncertain(StatusReason::kManyOutliers);
   if (m.residual_scale > params.tracked_scale_px) return uncertain(StatusReason::kLooseFit);
-  if (m.correction_px > real(static_cast<int>(m.range))) return uncertain(StatusReason::kLargeCorrection);
   if (m.saturations > 0) return uncertain(StatusReason::kSaturated);
   if (m.pose_uncertainty_px > params.max_pose_uncertainty_px) return uncertain(StatusReason::kPoseUnconstrained);
   return {TrackingStatus::kTracked, StatusReason::kNone};

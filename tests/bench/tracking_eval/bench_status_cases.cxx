@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Prints the markdown rows of tracking_eval's status table: each case of status_cases.h (noise,
 /// flat, fully covered, leaving the view) tracked from the true first pose with the defaults:
-/// the frames lost, the first frame without a trackable object against the first lost one, the
-/// frames lost outside the bad ones, and how many frames after the object is visible again a
-/// frame is tracked within 1 mm of the truth.
+/// the frames lost and uncertain, the first frame without a trackable object against the first
+/// lost one, the frames lost outside the bad ones, the largest overlay offset of a frame
+/// reported tracked, and how many frames after the object is visible again a frame is tracked within
+/// 1 mm of the truth.
 #include <cstdio>
 
 #include "run_sequence.h"
@@ -28,8 +29,8 @@ int main() {
     if (!returns) std::snprintf(back, sizeof back, "-");
     else if (o.back < 0) std::snprintf(back, sizeof back, "never");
     else std::snprintf(back, sizeof back, "%d (%d), %.2f mm", o.back - c.visible_again, o.back, o.worst_after_back_mm);
-    std::printf("| %s | %d | %s | %d | %d | %d | %d | %s | %d |\n", c.name.c_str(), c.frames, bad, o.first_lost, o.lost,
-                o.missed, o.wrongly_lost, back, retried);
+    std::printf("| %s | %d | %s | %d | %d | %d | %d | %d | %.2f | %s | %d |\n", c.name.c_str(), c.frames, bad, o.first_lost,
+                o.lost, o.uncertain, o.missed, o.wrongly_lost, o.worst_tracked_px, back, retried);
   }
   return 0;
 }

@@ -40,6 +40,9 @@ synth_kind() {
   "$edgetrack" synth --out "$work/$name" --model "$model" "$@" >"$work/$name.txt"
 }
 
+# uncertain_frames POSES.csv: the frames `track` reported uncertain.
+uncertain_frames() { awk -F, 'NR > 1 && $10 == "uncertain"' "$1" | wc -l; }
+
 # generated_row LABEL NAME MODEL: our `track` (its lost rule) and both trackers in `compare`;
 # the S40.23 build's `track` against the double one's poses (their truth columns).
 generated_row() {
@@ -57,8 +60,9 @@ generated_row() {
   motion=$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$seq.txt")
   share=$(sed -n 's/.*covers \([0-9.]*\) % .*/\1 %/p' "$seq.txt")
   retried=$(sed -n 's/^ *\([0-9]*\) frames retried.*, \([0-9]*\) of them.*/\1 \/ \2/p' "$work/track.txt")
-  printf '| %s | %s | %s | %d | %s | %.3f | %.3f | %.3f | %.4f | %d | %.3f | %.3f | %.3f | %.3f / %.3f |\n' "$label" "$motion" \
-    "${share:--}" "$(value lost "$work/eval.txt")" "${retried:-0 / 0}" "$(value distance_mm "$work/eval.txt")" \
+  printf '| %s | %s | %s | %d | %d | %s | %.3f | %.3f | %.3f | %.4f | %d | %.3f | %.3f | %.3f | %.3f / %.3f |\n' "$label" "$motion" \
+    "${share:--}" "$(value lost "$work/eval.txt")" "$(uncertain_frames "$work/poses.csv")" "${retried:-0 / 0}" \
+    "$(value distance_mm "$work/eval.txt")" \
     "$(value max_distance_mm "$work/eval.txt")" "$(value rotation_deg "$work/eval.txt")" \
     "$(value max_distance_mm "$work/s40.txt")" "$(value visp_lost "$work/compare.txt")" \
     "$(value visp_distance_mm "$work/compare.txt")" "$(value visp_max_distance_mm "$work/compare.txt")" \
@@ -73,14 +77,15 @@ mbt_row() {
   local args=(--model "$mbt/$model" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos"
               --images "$mbt/cube/image%04d.pgm" --downscale "$factor")
   if ! "$edgetrack" track "${args[@]}" --poses "$work/mbt.csv" --quiet >/dev/null 2>"$work/track.err"; then
-    printf '| %s | %s | refused: %s | | | | | | |\n' "$model" "$size" "$(sed 's/^edgetrack track: //; s/|/\\|/g' "$work/track.err" | head -n 1)"
+    printf '| %s | %s | refused: %s | | | | | | | | |\n' "$model" "$size" "$(sed 's/^edgetrack track: //; s/|/\\|/g' "$work/track.err" | head -n 1)"
     return
   fi
   local lost
   lost=$(awk -F, 'NR > 1 && $10 == "lost"' "$work/mbt.csv" | wc -l)
   "$edgetrack" compare "${args[@]}" --repeat 3 2>/dev/null >"$work/compare.txt"
-  printf '| %s | %s | %d of %d | %d | %d | %.2f | %.2f | %.3f | %.3f | %.0f / %.0f |\n' "$model" "$size" "$lost" \
-    "$(value frames "$work/compare.txt")" "$(value ours_lost "$work/compare.txt")" "$(value visp_lost "$work/compare.txt")" \
+  printf '| %s | %s | %d of %d | %d | %d | %d | %.2f | %.2f | %.3f | %.3f | %.0f / %.0f |\n' "$model" "$size" "$lost" \
+    "$(value frames "$work/compare.txt")" "$(uncertain_frames "$work/mbt.csv")" "$(value ours_lost "$work/compare.txt")" \
+    "$(value visp_lost "$work/compare.txt")" \
     "$(value corner_px "$work/compare.txt")" "$(value corner_max_px "$work/compare.txt")" \
     "$(value ours_median_ms "$work/compare.txt")" "$(value visp_median_ms "$work/compare.txt")" \
     "$(value ours_points "$work/compare.txt")" "$(value visp_points "$work/compare.txt")"
@@ -142,7 +147,7 @@ echo "\"occluder\" a dark board in front sweeping across the object, sized each 
 echo "$cover_share of its image (\`--cover $cover_share\`); \"clutter\" dark lines parallel to every model edge,"
 echo "$clutter_mm mm beside it (\`--clutter $clutter_mm\`, $(sed -n 's/.* \([0-9.]*\) px off them.*/\1/p' "$work/cube60_clutter.txt") px off the cube's edges in the first frame)."
 echo "Both trackers start from the true first pose with their defaults and the camera-only XML that"
-echo "synth writes. Ours: \`edgetrack track\` (its lost rule) and \`edgetrack eval\`; \"retried\": the frames"
+echo "synth writes. Ours: \`edgetrack track\` (its status: lost, uncertain) and \`edgetrack eval\`; \"retried\": the frames"
 echo "it ran again from the last trusted pose / of those, the ones the retry tracked (docs/ARCHITECTURE.md);"
 echo "\"S40.23 - double\": the largest per-frame distance between the camera positions of the S40.23 and"
 echo "the double builds' \`track\`. ViSP 3.5's"
@@ -150,8 +155,8 @@ echo "vpMbGenericTracker (edge): \`edgetrack compare --truth\`, lost when track(
 echo "camera position in the object frame (mean and largest distance, mm) and the rotation (degrees);"
 echo "median ms of each tracking call in \`compare\`."
 echo
-echo "| sequence | motion px/frame | covered | lost | retried | mean mm | largest mm | rotation deg | S40.23 - double mm | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg | median ms ours / ViSP |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| sequence | motion px/frame | covered | lost | uncertain | retried | mean mm | largest mm | rotation deg | S40.23 - double mm | ViSP lost | ViSP mean mm | ViSP largest mm | ViSP rotation deg | median ms ours / ViSP |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
   [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
   generated_row "$name, slow" "${model}_slow" "$models/$model.cao"
@@ -168,23 +173,24 @@ echo "fully covered); and leaving the view sideways, accelerating to about 9 px 
 echo "frames without a trackable object (leaving: from the first whose true pose leaves fewer than 6 control"
 echo "points); \"missed\": bad frames not reported lost; \"wrongly lost\": lost frames outside the bad ones"
 echo "(leaving: among the frames with the cube wholly in view); \"back\": frames from the object's return"
-echo "to the first tracked within 1 mm of the truth (that frame), and the largest error from then on."
+echo "to the first tracked within 1 mm of the truth (that frame), and the largest error from then on;"
+echo "\"largest tracked mm\": the largest camera position error of a frame reported tracked."
 echo "On the real sequences, where the overlay stays on the object, no frame is lost: \"track lost\" below."
 echo
-echo "| case | frames | bad | first lost | lost | missed | wrongly lost | back | retried |"
-echo "|---|---:|---:|---:|---:|---:|---:|---|---:|"
+echo "| case | frames | bad | first lost | lost | uncertain | missed | wrongly lost | largest tracked mm | back | retried |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
 "$status_cases"
 echo
 echo "ViSP's real mbt/cube (218 frames) with its files as shipped: \`cube.xml\` alone as \`--camera\`,"
 echo "\`cube.0.pos\`, at 640x480 and halved to QVGA (\`--downscale 2\`: camera, sample step and range"
-echo "halved for both trackers). \"track lost\": \`edgetrack track\`'s lost frames. Then \`edgetrack"
+echo "halved for both trackers). \"track lost\", \"track uncertain\": \`edgetrack track\`'s lost and uncertain frames. Then \`edgetrack"
 echo "compare --repeat 3\`: ViSP's tracker loads the same XML and .cao; ours takes the XML's <camera>"
 echo "and <ecm>; the two alternate frame by frame; lost there: ours when the pose step fails, ViSP"
 echo "when track() throws. Corner difference: the mean over frames of the mean distance between the"
 echo "model's vertices projected with each tracker's pose (pixels of the tracked size), and its"
 echo "largest frame. Times: median ms of the tracking call (ours \`Tracker::track\`, ViSP \`track()\`)."
 echo
-echo "| model | size | track lost | compare: ours lost | ViSP lost | corner px mean | corner px largest | ours ms | ViSP ms | control points ours / ViSP |"
+echo "| model | size | track lost | track uncertain | compare: ours lost | ViSP lost | corner px mean | corner px largest | ours ms | ViSP ms | control points ours / ViSP |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube.cao cube_and_cylinder.cao; do
   for factor in 1 2; do mbt_row "$model" "$factor"; done

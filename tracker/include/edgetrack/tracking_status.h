@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "real/real.h"
 
@@ -22,13 +23,13 @@ enum class StatusReason {
   kFewToCheck,        ///< uncertain: too few matches kept to tell a fit from chance
   kLooseFit,          ///< uncertain: the robust residual scale is above a tracked frame's
   kNotReacquired,     ///< lost: after a lost frame, only a frame that would be tracked counts as found again
-  kLargeCorrection,   ///< uncertain: the pose moved a control point farther along its normal than the search reaches
   kSaturated,         ///< uncertain: fixed-point results saturated during the frame
   kNotDetected,       ///< lost: the detector ran and did not find the model (AutoInitTracker)
   kUnconfirmed,       ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
-  kPoseUnconstrained  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
+  kPoseUnconstrained,  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
+  kPoseUndetermined    ///< lost: the matches leave it uncertain by more than the search reaches
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kPoseUnconstrained) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kPoseUndetermined) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);
@@ -42,13 +43,17 @@ struct FrameMeasures {
   real matched_share{0};    ///< kept / visible
   real inlier_share{0};     ///< kept / matched
   real residual_scale{0};   ///< px, 1.4826 * median |distance| of the matches at the final pose
-  real correction_px{0};    ///< px, largest move of a control point along its normal, prediction to solved pose
+  /// px, largest move of a control point along its normal, prediction to solved pose; no rule
+  /// of its own: a point moved beyond its search cannot be an inlier, which the shares count
+  real correction_px{0};
   real translation_change_mm{0};  ///< solved pose against the prediction
   real rotation_change_deg{0};
   unsigned range = 0;       ///< the moving-edge range this frame searched, px
   bool after_loss = false;  ///< the previous frame was lost
   std::uint64_t saturations = 0;  ///< fixed-point saturations counted during the frame (0 in float builds)
-  real pose_uncertainty_px{0};    ///< px, the overlay's standard deviation the matches leave (pose_uncertainty.h)
+  /// px, the overlay's standard deviation the matches leave (pose_uncertainty.h), with the
+  /// residual scale taken as at least StatusParams::edge_location_px
+  real pose_uncertainty_px{0};
 };
 
 /// The rule's thresholds, each with what it stands for.
@@ -67,17 +72,30 @@ struct StatusParams {
   /// Above: uncertain. One standard deviation of a model vertex's image position that the
   /// residual noise leaves in the pose: past a pixel the overlay visibly wanders where no edge holds it.
   real max_pose_uncertainty_px = real(1);
+  /// Lost when the pose uncertainty exceeds this share of the range searched: the overlay may
+  /// be off by more than the next frame's search reaches, so the tracker cannot be expected to
+  /// find the edges again from it (a few edges left of an object leaving the view).
+  real lost_uncertainty_range_share = real(1);
+  /// The least residual scale the pose uncertainty assumes, px: how well the moving edges
+  /// place an edge against the true one (blur, the raster, the masks' orientation steps; what
+  /// `tracking_eval_me_offsets` measures at the true pose). That error is shared along an edge,
+  /// so the residuals about the fitted pose do not show it; with a few edges left the pose fits
+  /// them exactly and the residual scale falls far below it (docs/ARCHITECTURE.md).
+  real edge_location_px = real(0.3);
 };
+
+/// The first setting outside its limits, as "status: ...", or an empty string.
+std::string check_status_params(const StatusParams& params);
 
 struct FrameStatus {
   TrackingStatus status = TrackingStatus::kLost;
   StatusReason reason = StatusReason::kPoseFailed;
 };
 
-/// The status rule: lost when there is nothing to track, the pose could not be solved, or the
-/// residuals look like chance; uncertain when the pose rests on a minority of the model, fits
-/// loosely, moved farther than the search reaches, fixed point saturated, or the matches leave
-/// some of the model's image position uncertain by more than max_pose_uncertainty_px; tracked
+/// The status rule: lost when there is nothing to track, the pose could not be solved, the
+/// residuals look like chance, or the matches leave the model's image position uncertain by
+/// more than the search reaches; uncertain when the pose rests on a minority of the model, fits
+/// loosely, fixed point saturated, or that uncertainty is over max_pose_uncertainty_px; tracked
 /// otherwise.
 /// After a lost frame an uncertain one stays lost: the prediction it started from is weak, and
 /// a wider search on clutter finds fits that are loose but not at chance. Fewer kept matches
