@@ -8,17 +8,10 @@
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/raster.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
-
-/// Pixels [x0, x1] x [y0, y1] of an image, inclusive.
-struct PixelRect {
-  int x0 = 0;
-  int y0 = 0;
-  int x1 = -1;
-  int y1 = -1;
-};
 
 /// The boxes of the two rims (axis_a's, axis_b's) of cylinder `cylinder` of `model` projected with
 /// camera_from_model, grown by a pixel beyond the rasteriser's 1/16-pixel rounding and clipped to
