@@ -2,8 +2,8 @@
 /// Where the inside of a cylinder's tessellated side can show: only through its two open ends.
 /// The inscribed prism is convex, so from a camera outside it a viewing ray that meets a
 /// back-facing facet has crossed a front-facing facet first, or an end. The back facets therefore
-/// decide the nearest surface only inside the images of the two rims, and Edge-ID fills them
-/// there alone: the same depth buffer for a fraction of the long, thin facets' rows.
+/// decide the nearest surface only inside the images of the two rims, and Edge-ID tests them
+/// there alone: the same nearest surface with far fewer triangles under its lines.
 #pragma once
 
 #include "edgetrack/edge_model.h"
