@@ -27,7 +27,8 @@ class SoftOverlay : public Overlay {
   RgbImage draw(const RgbImage& frame, const EdgeModel& model, const Se3& camera_from_model, const Cone& cone) override {
     edge_ids_.render(model, camera_from_model);
     RgbImage out = frame;
-    std::vector<int32_t> depth = edge_ids_.inverse_depth();
+    std::vector<int32_t> depth;
+    edge_ids_.surface_depth(depth);
     std::vector<uint8_t> covered(depth.size(), 0);
     const ConeMesh mesh = cone_mesh(cone, 32);
     const double light[3] = {0.45, -0.75, -0.5};

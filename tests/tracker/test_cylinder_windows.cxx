@@ -59,7 +59,9 @@ static void test_cylinder_windows() {
     ids.render(model, pose);
     ++poses;
     const std::vector<int32_t> expected = every_facet_filled(model, camera, pose);
-    same += ids.inverse_depth() == expected;
+    std::vector<int32_t> depth;
+    ids.surface_depth(depth);
+    same += depth == expected;
     PixelRect boxes[2];
     if (cylinder_rim_boxes(model, 0, camera, pose, boxes)) {
       ++windowed;

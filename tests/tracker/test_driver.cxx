@@ -18,6 +18,7 @@ DECLARE(test_contours);
 DECLARE(test_input_checks);
 DECLARE(test_face_visibility);
 DECLARE(test_cylinder_windows);
+DECLARE(test_line_in_triangle);
 DECLARE(test_detector_core);
 DECLARE(test_template_files);
 
@@ -38,6 +39,7 @@ void register_tests() {
   REGISTER(test_input_checks);
   REGISTER(test_face_visibility);
   REGISTER(test_cylinder_windows);
+  REGISTER(test_line_in_triangle);
   REGISTER(test_detector_core);
   REGISTER(test_template_files);
 }

@@ -52,7 +52,9 @@ static void test_edge_id_buffer() {
   TEST("face-on, the 4 front edges are shown at 90 % or more of their points", front_shown, true);
   TEST("face-on, no point of the 8 other edges is shown", others_hidden, true);
   TEST_EQUAL("the centre of the front face is no edge", ids.edge_at(160, 120), -1);
-  TEST("the front face is in the depth buffer at the centre", ids.inverse_depth()[120 * 320 + 160] > 0, true);
+  std::vector<int32_t> depth;
+  ids.surface_depth(depth);
+  TEST("the front face is in the depth buffer at the centre", depth[120 * 320 + 160] > 0, true);
   TEST_EQUAL("outside the image there is no edge", ids.edge_at(-1, 5), -1);
 
   // Turned: three faces visible, the farthest corner's three edges hidden.
@@ -80,9 +82,10 @@ static void test_edge_id_buffer() {
   ids.render(cube, face_on);
   EdgeIdBuffer fresh(camera);
   fresh.render(cube, face_on);
-  TEST("a reused buffer equals a fresh one", ids.colours() == fresh.colours() &&
-                                                 ids.inverse_depth() == fresh.inverse_depth(),
-       true);
+  std::vector<int32_t> fresh_depth;
+  ids.surface_depth(depth);
+  fresh.surface_depth(fresh_depth);
+  TEST("a reused buffer equals a fresh one", ids.colours() == fresh.colours() && depth == fresh_depth, true);
 
   // Partly outside the image and partly behind the camera: no crash, nothing drawn off-image.
   const Se3 close(Mat33::identity(), {real(0.02), real(0), real(0.0)});

@@ -2,7 +2,9 @@
 /// Near-plane and screen clipping in `real`, then conversion to the rasteriser's integers.
 #include "edgetrack/raster.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace edgetrack {
 namespace {
@@ -54,6 +56,60 @@ int clip_pass(const V* in, int count, V* out, Distance distance) {
 }
 
 }  // namespace
+
+bool setup_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& clip, PixelTriangle& t) {
+  int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
+  if (area < 0) {
+    std::swap(b, c);
+    area = -area;
+  }
+  if (area < 16) return false;
+  const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
+  const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
+  t.box.x0 = std::max(clip.x0, (min_x + 15) >> kSubpixelBits);
+  t.box.x1 = std::min(clip.x1, max_x >> kSubpixelBits);
+  t.box.y0 = std::max(clip.y0, (min_y + 15) >> kSubpixelBits);
+  t.box.y1 = std::min(clip.y1, max_y >> kSubpixelBits);
+  if (t.box.x0 > t.box.x1 || t.box.y0 > t.box.y1) return false;
+  t.a = a;
+  t.b = b;
+  t.c = c;
+  const int64_t dxb = b.x - a.x, dyb = b.y - a.y, dwb = b.w - a.w;
+  const int64_t dxc = c.x - a.x, dyc = c.y - a.y, dwc = c.w - a.w;
+  t.gx = ((dwb * dyc - dwc * dyb) * 256) / area;
+  t.gy = ((dxb * dwc - dxc * dwb) * 256) / area;
+  // Edge functions are products of two coordinate differences plus one more: under 2^14 Q4
+  // units (1024 pixels) on both axes they fit in 32 bits, which halves the inner loop on ARM.
+  const int32_t span = std::max(max_x - min_x, max_y - min_y);
+  const int32_t reach = std::max(std::max(std::abs(min_x), std::abs(max_x)), std::max(std::abs(min_y), std::abs(max_y)));
+  t.narrow = span < (1 << 14) && reach < (1 << 14);
+  return true;
+}
+
+LineWalk walk_line(const ScreenVertex& a, const ScreenVertex& b) {
+  const int32_t dx = b.x - a.x, dy = b.y - a.y;
+  LineWalk line;
+  line.x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+  const int32_t major_a = line.x_major ? a.x : a.y, major_b = line.x_major ? b.x : b.y;
+  const int32_t minor_a = line.x_major ? a.y : a.x;
+  const int32_t d_major = major_b - major_a, d_minor = line.x_major ? dy : dx;
+  const int half = 1 << (kSubpixelBits - 1);
+  line.first = (major_a + half) >> kSubpixelBits;
+  const int last = (major_b + half) >> kSubpixelBits;
+  line.dir = line.first <= last ? 1 : -1;
+  line.count = (last - line.first) * line.dir + 1;
+  // Minor coordinate and w at a major position m: value_a + slope * (m - major_a), slopes in Q16
+  // (scaled by multiplying: the values may be negative, where a left shift is undefined).
+  const int64_t q16 = 65536;
+  const int64_t minor_slope = d_major != 0 ? int64_t(d_minor) * q16 / d_major : 0;
+  const int64_t w_slope = d_major != 0 ? int64_t(b.w - a.w) * q16 / d_major : 0;
+  const int64_t offset = int64_t(line.first) * (1 << kSubpixelBits) - major_a;
+  line.minor = int64_t(minor_a) * q16 + minor_slope * offset;
+  line.w = int64_t(a.w) * q16 + w_slope * offset;
+  line.minor_step = minor_slope * line.dir * (1 << kSubpixelBits);
+  line.w_step = w_slope * line.dir * (1 << kSubpixelBits);
+  return line;
+}
 
 int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camera)[3],
                               ScreenVertex (&out)[kMaxClippedVertices]) {

@@ -2,23 +2,16 @@
 /// Where the inside of a cylinder's tessellated side can show: only through its two open ends.
 /// The inscribed prism is convex, so from a camera outside it a viewing ray that meets a
 /// back-facing facet has crossed a front-facing facet first, or an end. The back facets therefore
-/// decide the nearest surface only inside the images of the two rims, and Edge-ID fills them
-/// there alone: the same depth buffer for a fraction of the long, thin facets' rows.
+/// decide the nearest surface only inside the images of the two rims, and Edge-ID tests them
+/// there alone: the same nearest surface with far fewer triangles under its lines.
 #pragma once
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/raster.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
-
-/// Pixels [x0, x1] x [y0, y1] of an image, inclusive.
-struct PixelRect {
-  int x0 = 0;
-  int y0 = 0;
-  int x1 = -1;
-  int y1 = -1;
-};
 
 /// The boxes of the two rims (axis_a's, axis_b's) of cylinder `cylinder` of `model` projected with
 /// camera_from_model, grown by a pixel beyond the rasteriser's 1/16-pixel rounding and clipped to

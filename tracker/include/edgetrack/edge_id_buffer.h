@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Edge-ID visibility (paper, section 3.4): the model's faces and tessellated cylinder sides go
-/// into an inverse-depth buffer, then its edges, cylinder silhouettes and circle polygons, with
-/// hidden-line removal, into a 16-bit RGB565 colour buffer, each in the colour that encodes its
-/// primitive number (EdgeModel). A control point of primitive i is visible when the colour at
-/// its pixel decodes to i.
+/// Edge-ID visibility (paper, section 3.4): the model's edges, cylinder silhouettes and circle
+/// polygons are drawn with hidden-line removal into a 16-bit RGB565 colour buffer, each in the
+/// colour that encodes its primitive number (EdgeModel). A control point of primitive i is
+/// visible when the colour at its pixel decodes to i. Hidden-line removal needs the nearest
+/// surface only under the lines, so the faces and tessellated cylinder sides are rasterised at the
+/// lines' pixels alone (raster.h, line_in_triangle): the same depths there as filling them whole,
+/// for a cost that follows the lines' length instead of the surfaces' area.
 #pragma once
 
 #include <cstdint>
@@ -23,15 +25,15 @@ class EdgeIdBuffer {
   /// Buffers for images of the camera's size; they are allocated here, once.
   explicit EdgeIdBuffer(const PinholeCamera& camera);
 
-  /// Redraws the buffers for the model seen from camera_from_model. On a closed model
-  /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when
-  /// its inverse depth is within 1/128 (0.8 %) of the nearest surface there, so edges lying on
-  /// their own faces pass and edges behind other faces do not; a cylinder's silhouette (and the
-  /// part of a circle closing it that the side cannot hide) also passes over that cylinder's side.
+  /// Redraws the colours for the model seen from camera_from_model. On a closed model
+  /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when its inverse depth is
+  /// within 1/128 (0.8 %) of the nearest surface there, so edges lying on their own faces pass
+  /// and edges behind other faces do not; a cylinder's silhouette (and the part of a circle
+  /// closing it that the side cannot hide) also passes over that cylinder's side.
   void render(const EdgeModel& model, const Se3& camera_from_model);
 
   /// Takes an Edge-ID image drawn elsewhere (GL): width * height RGB565 pixels, row 0 at the
-  /// top, in the paper's 8-level code. The depth buffer is cleared: it stays this renderer's.
+  /// top, in the paper's 8-level code. The surfaces are forgotten: they stay this renderer's.
   void assign(const uint16_t* rgb565);
 
   /// The edge index drawn at pixel (x, y), or -1 for the background or outside the image.
@@ -44,28 +46,48 @@ class EdgeIdBuffer {
   int width() const { return camera_.width; }
   int height() const { return camera_.height; }
   const std::vector<uint16_t>& colours() const { return colours_; }
-  const std::vector<int32_t>& inverse_depth() const { return inverse_depth_; }
+  /// The Q20 1/Z of the nearest surface of the last render() at every pixel (0 = none), filled
+  /// whole into `depth` (width * height) for whoever needs more than the lines' pixels.
+  void surface_depth(std::vector<int32_t>& depth) const;
 
  private:
-  void clear_dirty();
-  void grow_dirty(int x0, int y0, int x1, int y1);
-  void draw_surfaces(const EdgeModel& model, const Se3& camera_from_model);
-  /// The cylinders' sides into the depth buffer, back facets only where they can show
-  /// (cylinder_windows.h).
-  void draw_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
-  /// Draws the segment where it is not hidden; pixels whose nearest surface is `exempt_owner`
-  /// (a cylinder number + 1, or -1 for none) never hide it.
-  void draw_edge(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
+  /// A line to draw this frame, and the owner whose side never hides it (a cylinder number + 1,
+  /// or -1 for none).
+  struct Segment {
+    LineWalk line;
+    uint16_t code = 0;
+    int exempt_owner = -1;
+  };
+  /// A triangle of a surface as this frame projects it, and its owner (a cylinder number + 1, or
+  /// 0 for a face).
+  struct Occluder {
+    PixelTriangle triangle;
+    int16_t owner = 0;
+  };
+  void clear_colours();
+  void reserve_for(const EdgeModel& model);
+  void add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
+  void collect_segments(const EdgeModel& model, const Se3& camera_from_model);
+  void add_occluders(const ScreenVertex* polygon, int count, const PixelRect& clip, int16_t owner);
+  void collect_faces(const EdgeModel& model, const Se3& camera_from_model);
+  /// The cylinders' sides, back facets only where they can show (cylinder_windows.h).
+  void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
+  /// The nearest surface and its owner at every pixel of this frame's lines.
+  void find_nearest_surfaces();
+  void draw_segments();
 
   PinholeCamera camera_;
+  PixelRect screen_;
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background
-  std::vector<int32_t> inverse_depth_;  ///< Q20 1/Z of the nearest face, 0 = none
-  std::vector<int16_t> surface_owner_;  ///< the cylinder number + 1 whose side is nearest, 0 = a face or none
-  bool owners_written_ = false;         ///< surface_owner_ has non-zero pixels in the dirty area (cylinders drawn)
+  std::vector<int32_t> nearest_;        ///< Q20 1/Z of the nearest surface, 0 = none; valid under segments_
+  std::vector<int16_t> nearest_owner_;  ///< that surface's Occluder::owner; valid under segments_
+  bool clear_all_ = false;              ///< colours_ holds more than segments_ drew (assign)
   std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
   std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each primitive
   std::vector<ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides
   std::vector<uint8_t> front_;          ///< per face: drawn this frame (front-facing or not closed)
+  std::vector<Segment> segments_;       ///< this frame's lines (the last frame's until render clears them)
+  std::vector<Occluder> occluders_;     ///< this frame's surface triangles, faces first
   /// Per cylinder, this frame: its rim boxes, whether they apply, and the projected orientation
   /// of its front facets (+1 or -1; that of the facet facing the camera most).
   struct RimBoxes {
@@ -82,7 +104,6 @@ class EdgeIdBuffer {
   };
   std::vector<RimBoxes> rim_boxes_;
   std::vector<ProjectedFacet> facets_;  ///< per model.cylinder_surface triangle
-  int dirty_x0_ = 0, dirty_y0_ = 0, dirty_x1_ = -1, dirty_y1_ = -1;  ///< area drawn last time
 };
 
 }  // namespace edgetrack

@@ -35,6 +35,45 @@ int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camer
 bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const Vec3& b, ScreenVertex& sa,
                               ScreenVertex& sb);
 
+/// Pixels [x0, x1] x [y0, y1] of an image, inclusive.
+struct PixelRect {
+  int x0 = 0;
+  int y0 = 0;
+  int x1 = -1;
+  int y1 = -1;
+};
+
+/// A triangle as fill_triangle rasterises it: corners in counter-clockwise order (positive
+/// doubled area), the gradient of w per Q4 step scaled by 2^8 (w(p) = a.w + (gx * (p.x - a.x) +
+/// gy * (p.y - a.y)) >> 8), its pixel box within the clip rectangle, and whether its edge
+/// functions fit in 32 bits there.
+struct PixelTriangle {
+  ScreenVertex a, b, c;
+  int64_t gx = 0;
+  int64_t gy = 0;
+  PixelRect box;
+  bool narrow = false;
+};
+
+/// The pixels draw_line visits, one per step along the major axis: pixel k (0 <= k < count) is at
+/// major coordinate first + k * dir and at the minor one nearest to the exact line; w is
+/// interpolated. minor and w are Q4 and Q20 scaled by 2^16, at pixel 0.
+struct LineWalk {
+  bool x_major = true;
+  int first = 0;
+  int dir = 1;
+  int count = 0;
+  int64_t minor = 0, minor_step = 0;
+  int64_t w = 0, w_step = 0;
+
+  int minor_at(int k) const { return minor_pixel(minor + int64_t(k) * minor_step); }
+  static int minor_pixel(int64_t minor_q16) {
+    return static_cast<int>((minor_q16 + (int64_t(1) << (15 + kSubpixelBits))) >> (16 + kSubpixelBits));
+  }
+};
+
+LineWalk walk_line(const ScreenVertex& a, const ScreenVertex& b);
+
 namespace raster_detail {
 
 /// One edge function e + (x - x0) * step of a triangle, row by row (e grows by `row_step` per
@@ -128,77 +167,204 @@ void scan_triangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
   }
 }
 
+/// The per-pixel test: the centre of (x, y) on the inner side of t's three edges.
+template <class Int>
+bool inside(const PixelTriangle& t, int x, int y) {
+  const Int px = Int(x) * (1 << kSubpixelBits), py = Int(y) * (1 << kSubpixelBits);
+  auto edge = [px, py](const ScreenVertex& u, const ScreenVertex& v) {
+    return Int(v.x - u.x) * (py - Int(u.y)) - Int(v.y - u.y) * (px - Int(u.x));
+  };
+  return edge(t.a, t.b) >= 0 && edge(t.b, t.c) >= 0 && edge(t.c, t.a) >= 0;
+}
+
+/// The state of a walk along a line inside a triangle at one step: the pixel, the three edge
+/// functions and w's accumulator (that of scan_triangle) there.
+template <class Int>
+struct TriangleWalk {
+  int k = 0, m = 0, n = 0;
+  int64_t minor_q16 = 0;
+  Int e[3] = {0, 0, 0};
+  int64_t acc = 0;
+
+  void start(const LineWalk& line, const PixelTriangle& t, int at) {
+    k = at;
+    m = line.first + at * line.dir;
+    minor_q16 = line.minor + int64_t(at) * line.minor_step;
+    n = LineWalk::minor_pixel(minor_q16);
+    const Int unit = 1 << kSubpixelBits;
+    const Int px = Int(line.x_major ? m : n) * unit, py = Int(line.x_major ? n : m) * unit;
+    const ScreenVertex* corner[3] = {&t.a, &t.b, &t.c};
+    for (int i = 0; i < 3; ++i) {
+      const ScreenVertex &u = *corner[i], &v = *corner[(i + 1) % 3];
+      e[i] = Int(v.x - u.x) * (py - Int(u.y)) - Int(v.y - u.y) * (px - Int(u.x));
+    }
+    acc = t.gx * (int64_t(px) - t.a.x) + t.gy * (int64_t(py) - t.a.y);
+  }
+};
+
+/// Narrows [k0, k1] to the steps where the line's pixels can lie inside the triangle: along the
+/// exact line each edge function is affine in k, and a pixel is off it by at most half a pixel
+/// across, which moves the function by at most half its change per pixel across (`across`).
+/// Conservative, so no covered pixel is dropped; one division per edge.
+template <class Int>
+void narrow_steps(const LineWalk& line, const TriangleWalk<Int>& at, const Int (&along)[3], const Int (&across)[3],
+                  int& k0, int& k1) {
+  const int64_t one = int64_t(1) << (16 + kSubpixelBits);  // a pixel, in minor_q16 units
+  for (int i = 0; i < 3 && k0 <= k1; ++i) {
+    const int64_t c = across[i], slack = (c < 0 ? -c : c) * (one / 2);
+    // one * e along the exact line at step at.k + j: offset + j * slope.
+    const int64_t offset = one * int64_t(at.e[i]) + c * (at.minor_q16 - int64_t(at.n) * one) + slack;
+    const int64_t slope = one * int64_t(along[i]) + c * line.minor_step;
+    if (slope == 0) {
+      if (offset < 0) k1 = k0 - 1;
+    } else if (slope > 0) {
+      if (offset < 0) k0 = std::max(k0, at.k + static_cast<int>((-offset + slope - 1) / slope));
+    } else if (offset < 0) {
+      k1 = k0 - 1;
+    } else {
+      k1 = std::min(k1, at.k + static_cast<int>(offset / -slope));
+    }
+  }
+}
+
+/// line_in_triangle with edge functions in `Int` (wide enough on screen, as for scan_triangle).
+/// The edge functions and w's accumulator follow the line's pixels by additions: a step moves
+/// the major coordinate by one pixel, and the minor one by the pixels its rounding moves.
+template <class Int, class Plot>
+void walk_in_triangle(const LineWalk& line, const PixelTriangle& t, Plot& plot) {
+  const bool xm = line.x_major;
+  const int major_lo = xm ? t.box.x0 : t.box.y0, major_hi = xm ? t.box.x1 : t.box.y1;
+  const int minor_lo = xm ? t.box.y0 : t.box.x0, minor_hi = xm ? t.box.y1 : t.box.x1;
+  int k0 = (major_lo - line.first) * line.dir, k1 = (major_hi - line.first) * line.dir;
+  if (k0 > k1) std::swap(k0, k1);
+  k0 = std::max(k0, 0);
+  k1 = std::min(k1, line.count - 1);
+  if (k0 > k1) return;
+  // The minor coordinate is monotonic along the line: its ends over [k0, k1] bound it.
+  const int n0 = line.minor_at(k0), n1 = line.minor_at(k1);
+  if (std::max(n0, n1) < minor_lo || std::min(n0, n1) > minor_hi) return;
+  const Int unit = 1 << kSubpixelBits;
+  const int minor_sign = line.minor_step < 0 ? -1 : 1;
+  const ScreenVertex* corner[3] = {&t.a, &t.b, &t.c};
+  Int along[3], across[3];  // each edge function's change per step, and per pixel across (+1 minor)
+  for (int i = 0; i < 3; ++i) {
+    const ScreenVertex &u = *corner[i], &v = *corner[(i + 1) % 3];
+    const Int ex = Int(v.x - u.x), ey = Int(v.y - u.y);
+    along[i] = (xm ? -ey : ex) * unit * line.dir;
+    across[i] = (xm ? ex : -ey) * unit;
+  }
+  TriangleWalk<Int> walk;
+  walk.start(line, t, k0);
+  // Long walks first skip the steps that cannot be inside.
+  constexpr int kNarrowFrom = 16;
+  if (k1 - k0 >= kNarrowFrom) {
+    narrow_steps(line, walk, along, across, k0, k1);
+    if (k0 > k1) return;
+    if (k0 != walk.k) walk.start(line, t, k0);
+  }
+  Int minor_step[3];
+  for (int i = 0; i < 3; ++i) minor_step[i] = across[i] * minor_sign;
+  const int64_t acc_major = (xm ? t.gx : t.gy) * unit * line.dir;
+  const int64_t acc_minor = (xm ? t.gy : t.gx) * unit * minor_sign;
+  int m = walk.m, n = walk.n;
+  int64_t minor_q16 = walk.minor_q16, acc = walk.acc;
+  Int e0 = walk.e[0], e1 = walk.e[1], e2 = walk.e[2];
+  for (int k = k0;;) {
+    if (n >= minor_lo && n <= minor_hi) {
+      if (e0 >= 0 && e1 >= 0 && e2 >= 0) plot(xm ? m : n, xm ? n : m, static_cast<int32_t>(t.a.w + (acc >> 8)));
+    } else if ((minor_sign > 0) == (n > minor_hi)) {
+      break;  // past the box: the minor coordinate only moves on
+    }
+    if (++k > k1) break;
+    m += line.dir;
+    minor_q16 += line.minor_step;
+    e0 += along[0];
+    e1 += along[1];
+    e2 += along[2];
+    acc += acc_major;
+    for (const int next = LineWalk::minor_pixel(minor_q16); n != next; n += minor_sign) {
+      e0 += minor_step[0];
+      e1 += minor_step[1];
+      e2 += minor_step[2];
+      acc += acc_minor;
+    }
+  }
+}
+
 }  // namespace raster_detail
 
-/// Calls plot(x, y, w) for every pixel centre inside the triangle; w is interpolated exactly
-/// (affine in screen space). Triangles under 1/16 pixel^2 are skipped. Returns false when
-/// nothing of the triangle lies on the screen; otherwise its pixel bounding box is in box.
+/// Sets t up for filling the triangle abc inside `clip` (fill_triangle); false when nothing is
+/// drawn: under 1/16 pixel^2, or no pixel of its box inside clip.
+bool setup_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& clip, PixelTriangle& t);
+
+/// Calls plot(x, y, w) for every pixel centre of t's box inside the triangle; w is interpolated
+/// exactly (affine in screen space).
+template <class Plot>
+void fill_triangle(const PixelTriangle& t, Plot&& plot) {
+  if (t.narrow)
+    raster_detail::scan_triangle<int32_t>(t.a, t.b, t.c, t.box.x0, t.box.x1, t.box.y0, t.box.y1, t.gx, t.gy, plot);
+  else
+    raster_detail::scan_triangle<int64_t>(t.a, t.b, t.c, t.box.x0, t.box.x1, t.box.y0, t.box.y1, t.gx, t.gy, plot);
+}
+
+/// Calls plot(x, y, w) for every pixel centre inside the triangle on a width x height image.
+/// Triangles under 1/16 pixel^2 are skipped. Returns false when nothing of the triangle lies on
+/// the screen; otherwise its pixel bounding box is in box.
 template <class Plot>
 bool fill_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, int width, int height, Plot&& plot,
                    int (*box)[4] = nullptr) {
-  int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
-  if (area < 0) {
-    std::swap(b, c);
-    area = -area;
-  }
-  if (area < 16) return false;
-  const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
-  const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
-  const int x0 = std::max(0, (min_x + 15) >> kSubpixelBits), x1 = std::min(width - 1, max_x >> kSubpixelBits);
-  const int y0 = std::max(0, (min_y + 15) >> kSubpixelBits), y1 = std::min(height - 1, max_y >> kSubpixelBits);
-  if (x0 > x1 || y0 > y1) return false;
+  PixelTriangle t;
+  if (!setup_triangle(a, b, c, PixelRect{0, 0, width - 1, height - 1}, t)) return false;
   if (box) {
-    (*box)[0] = x0;
-    (*box)[1] = y0;
-    (*box)[2] = x1;
-    (*box)[3] = y1;
+    (*box)[0] = t.box.x0;
+    (*box)[1] = t.box.y0;
+    (*box)[2] = t.box.x1;
+    (*box)[3] = t.box.y1;
   }
-  // Gradient of w per Q4 step, scaled by 2^8: w(p) = a.w + (gx * (p.x - a.x) + gy * (p.y - a.y)) >> 8.
-  const int64_t dxb = b.x - a.x, dyb = b.y - a.y, dwb = b.w - a.w;
-  const int64_t dxc = c.x - a.x, dyc = c.y - a.y, dwc = c.w - a.w;
-  const int64_t gx = ((dwb * dyc - dwc * dyb) * 256) / area;
-  const int64_t gy = ((dxb * dwc - dxc * dwb) * 256) / area;
-  // Edge functions are products of two coordinate differences plus one more: under 2^14 Q4
-  // units (1024 pixels) on both axes they fit in 32 bits, which halves the inner loop on ARM.
-  const int32_t span = std::max(max_x - min_x, max_y - min_y);
-  const int32_t reach = std::max(std::max(std::abs(min_x), std::abs(max_x)), std::max(std::abs(min_y), std::abs(max_y)));
-  if (span < (1 << 14) && reach < (1 << 14))
-    raster_detail::scan_triangle<int32_t>(a, b, c, x0, x1, y0, y1, gx, gy, plot);
-  else
-    raster_detail::scan_triangle<int64_t>(a, b, c, x0, x1, y0, y1, gx, gy, plot);
+  fill_triangle(t, plot);
   return true;
+}
+
+/// True when fill_triangle(t) plots pixel (x, y): the pixel is in t's box and its centre on the
+/// inner side of the three edges, the per-pixel test the row scan narrows its spans to.
+inline bool covers(const PixelTriangle& t, int x, int y) {
+  if (x < t.box.x0 || x > t.box.x1 || y < t.box.y0 || y > t.box.y1) return false;
+  return t.narrow ? raster_detail::inside<int32_t>(t, x, y) : raster_detail::inside<int64_t>(t, x, y);
+}
+
+/// The w fill_triangle(t) plots at pixel (x, y).
+inline int32_t depth_at(const PixelTriangle& t, int x, int y) {
+  const int64_t acc = t.gx * (int64_t(x) * (1 << kSubpixelBits) - t.a.x) + t.gy * (int64_t(y) * (1 << kSubpixelBits) - t.a.y);
+  return static_cast<int32_t>(t.a.w + (acc >> 8));
 }
 
 /// Calls plot(x, y, w) for the pixels of the segment: one pixel per column (or per row, when
 /// the segment is steeper than 45 degrees), the nearest to the exact line; w is interpolated.
 template <class Plot>
-void draw_line(const ScreenVertex& a, const ScreenVertex& b, int width, int height, Plot&& plot) {
-  const int32_t dx = b.x - a.x, dy = b.y - a.y;
-  const bool x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
-  const int32_t major_a = x_major ? a.x : a.y, major_b = x_major ? b.x : b.y;
-  const int32_t minor_a = x_major ? a.y : a.x;
-  const int32_t d_major = major_b - major_a, d_minor = x_major ? dy : dx;
-  const int half = 1 << (kSubpixelBits - 1);
-  const int first = (major_a + half) >> kSubpixelBits, last = (major_b + half) >> kSubpixelBits;
-  const int dir = first <= last ? 1 : -1;
-  // Minor coordinate and w at a major position m: value_a + slope * (m - major_a), slopes in Q16
-  // (scaled by multiplying: the values may be negative, where a left shift is undefined).
-  const int64_t q16 = 65536;
-  const int64_t minor_slope = d_major != 0 ? int64_t(d_minor) * q16 / d_major : 0;
-  const int64_t w_slope = d_major != 0 ? int64_t(b.w - a.w) * q16 / d_major : 0;
-  const int64_t offset = int64_t(first) * (1 << kSubpixelBits) - major_a;
-  int64_t minor = int64_t(minor_a) * q16 + minor_slope * offset;
-  int64_t w = int64_t(a.w) * q16 + w_slope * offset;
-  const int64_t minor_step = minor_slope * dir * (1 << kSubpixelBits);
-  const int64_t w_step = w_slope * dir * (1 << kSubpixelBits);
-  for (int m = first;; m += dir) {
-    const int n = static_cast<int>((minor + half * q16) >> (16 + kSubpixelBits));
-    const int x = x_major ? m : n, y = x_major ? n : m;
+void draw_line(const LineWalk& line, int width, int height, Plot&& plot) {
+  int64_t minor = line.minor, w = line.w;
+  for (int k = 0, m = line.first; k < line.count; ++k, m += line.dir) {
+    const int n = LineWalk::minor_pixel(minor);
+    const int x = line.x_major ? m : n, y = line.x_major ? n : m;
     if (x >= 0 && x < width && y >= 0 && y < height) plot(x, y, static_cast<int32_t>(w >> 16));
-    if (m == last) break;
-    minor += minor_step;
-    w += w_step;
+    minor += line.minor_step;
+    w += line.w_step;
   }
+}
+
+template <class Plot>
+void draw_line(const ScreenVertex& a, const ScreenVertex& b, int width, int height, Plot&& plot) {
+  draw_line(walk_line(a, b), width, height, plot);
+}
+
+/// Calls plot(x, y, w) for the pixels of the line that fill_triangle(t) plots too, with w the
+/// triangle's there: only the steps whose major coordinate lies in t's box are visited.
+template <class Plot>
+void line_in_triangle(const LineWalk& line, const PixelTriangle& t, Plot&& plot) {
+  if (t.narrow)
+    raster_detail::walk_in_triangle<int32_t>(line, t, plot);
+  else
+    raster_detail::walk_in_triangle<int64_t>(line, t, plot);
 }
 
 }  // namespace edgetrack
