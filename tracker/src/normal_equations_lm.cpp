@@ -3,9 +3,9 @@
 #include "edgetrack/normal_equations_lm.h"
 
 #include <cmath>
-#include <limits>
 
 #include "edgetrack/small_cholesky.h"
+#include "edgetrack/sum_of_products.h"
 
 namespace edgetrack {
 namespace {
@@ -19,18 +19,7 @@ const real kSmallestPivot = real(1e-5);
 const real kFirstDamping = real(1e-3);
 const real kLargestDamping = real(1e6);
 
-/// Fixed point: fixedpoint::dot_product's one rounding per sum instead of one per product.
-template <class T>
-T dot_of(int m, const T* a, const T* b) {
-  if constexpr (!std::numeric_limits<T>::is_iec559) {
-    return dot_product(m, a, b);
-  } else {
-    T sum(0);
-    for (int i = 0; i < m; ++i) sum += a[i] * b[i];
-    return sum;
-  }
-}
-real dot(int m, const real* a, const real* b) { return dot_of(m, a, b); }
+real dot(int m, const real* a, const real* b) { return sum_of_products(m, a, b); }
 
 /// The scaled normal equations at one x: s = D^-1 J^T J D^-1 (lower triangle, unit diagonal
 /// where a column is not zero), g = D^-1 J^T f and d = D's diagonal, the column norms of J.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "edgetrack/millimetres.h"
 #include "edgetrack/normal_equations_lm.h"
 #include "netlib/minpack.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
@@ -14,13 +15,6 @@
 
 namespace edgetrack {
 namespace {
-
-/// The solve works in millimetres (the translation parameters and the camera-frame points). In
-/// metres the Jacobian's translation columns are px / Z ~ 1500 px/m, past the 512 below which
-/// S40.23's multiply is one 32 x 32-bit product (real/fixed64.h), both in the Jacobian and in
-/// MINPACK's QR of it; in millimetres they are ~1.5 px/mm. MINPACK scales each column by its
-/// norm, so in exact arithmetic the steps do not depend on the unit.
-constexpr int kMillimetresPerMetre = 1000;
 
 /// The left Jacobian of SO(3), J(w) = I + b hat(w) + c hat(w)^2: d(exp(hat(w)) y)/dw is
 /// -hat(exp(hat(w)) y) J(w).
@@ -43,28 +37,32 @@ class PointToLineProblem {
   PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
                      const PinholeCamera& camera, const Se3& start, PoseWorkspace& w)
       : start_(start),
-        start_translation_mm_(real(kMillimetresPerMetre) * start.translation()),
+        start_translation_mm_(to_millimetres(start.translation())),
         count_(matches.size()),
+        weighted_(!weights.empty()),
+        weights_(weights.data()),
         w_(w) {
     for (int k = 0; k < 3; ++k) {
       w.rotated[k].resize(count_);
-      w.coefficients[k].resize(count_);
       w.unweighted[k].resize(count_);
       w.turned[k].resize(count_);
       w.moved[k].resize(count_);
     }
+    for (int k = 0; k < 2; ++k) w.gradient[k].resize(count_);
+    w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     for (size_t i = 0; i < count_; ++i) {
       const EdgeMatch& m = matches[i];
-      const Vec3 rotated = start.rotation() * (real(kMillimetresPerMetre) * m.point.point_in_model);
-      // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z, times the match's weight.
+      const Vec3 rotated = start.rotation() * to_millimetres(m.point.point_in_model);
+      // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z; the residual is delta times the
+      // match's weight.
       const Vec2& n = m.point.normal;
       const Vec3 unweighted{n.x * camera.px, n.y * camera.py,
                             n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
-      const Vec3 coefficients = weights.empty() ? unweighted : weights[i] * unweighted;
       set(w.rotated, i, rotated);
       set(w.unweighted, i, unweighted);
-      set(w.coefficients, i, coefficients);
+      w.gradient[0][i] = weighted_ ? weights[i] * unweighted.x : unweighted.x;
+      w.gradient[1][i] = weighted_ ? weights[i] * unweighted.y : unweighted.y;
     }
   }
 
@@ -84,9 +82,7 @@ class PointToLineProblem {
   /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
   bool signed_distances(const real* x, std::vector<real>& out) {
     if (!evaluated_at(x) && !f(x, scratch())) return false;
-    const std::vector<real>* u = w_.unweighted;
-    const std::vector<real>* p = w_.moved;
-    for (size_t i = 0; i < count_; ++i) out[i] = (u[0][i] * p[0][i] + u[1][i] * p[1][i] + u[2][i] * p[2][i]) / p[2][i];
+    std::copy(w_.evaluated.begin(), w_.evaluated.begin() + static_cast<std::ptrdiff_t>(count_), out.begin());
     return true;
   }
 
@@ -129,9 +125,10 @@ class PointToLineProblem {
     const bool turn = !is_identity(r);
     const Vec3 t = start_translation_mm_ + v;
     const std::vector<real>* q = w_.rotated;
-    const std::vector<real>* k = w_.coefficients;
+    const std::vector<real>* u = w_.unweighted;
     std::vector<real>* z = w_.turned;
     std::vector<real>* p = w_.moved;
+    real* const delta = w_.evaluated.data();
     evaluated_ = false;
     for (size_t i = 0; i < count_; ++i) {
       const Vec3 rotated{q[0][i], q[1][i], q[2][i]};
@@ -140,7 +137,8 @@ class PointToLineProblem {
       if (pi.z <= real(0)) return false;
       set(z, i, zi);
       set(p, i, pi);
-      fx[i] = (k[0][i] * pi.x + k[1][i] * pi.y + k[2][i] * pi.z) / pi.z;
+      delta[i] = (u[0][i] * pi.x + u[1][i] * pi.y + u[2][i] * pi.z) / pi.z;
+      fx[i] = weighted_ ? weights_[i] * delta[i] : delta[i];
     }
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
     evaluated_ = true;
@@ -154,7 +152,7 @@ class PointToLineProblem {
     if (!evaluated_at(x) && !f(x, scratch())) return false;
     const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
     const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
-    const std::vector<real>* k = w_.coefficients;
+    const std::vector<real>* k = w_.gradient;
     const std::vector<real>* z = w_.turned;
     const std::vector<real>* p = w_.moved;
     real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
@@ -191,6 +189,8 @@ class PointToLineProblem {
   Se3 start_;
   Vec3 start_translation_mm_;
   size_t count_;
+  bool weighted_;
+  const real* weights_;
   PoseWorkspace& w_;
   real evaluated_at_[6] = {};
   bool evaluated_ = false;
@@ -210,18 +210,27 @@ bool keeps_best_estimate(int code) {
          code == vnl_levenberg_marquardt_of<real>::FAILED_GTOL_TOO_SMALL;
 }
 
+/// What one solve gives back.
+struct SolveResult {
+  bool solved = false;  ///< LM ended with an estimate (and the distances at it were measured)
+  Se3 pose;             ///< when solved
+  int evaluations = 0;
+  int iterations = 0;  ///< Jacobian evaluations
+  real start_rms{0};
+  real end_rms{0};
+};
+
 /// One Levenberg-Marquardt solve (MINPACK's lmder with the arguments vnl_levenberg_marquardt
 /// passes it, called directly so that its buffers are the workspace's, or with
-/// PoseSolver::kNormalEquations normal_equations_lm) over `matches` from
-/// `start`, stopped after `max_evaluations` residual evaluations; adds its counts to
-/// `solution`. With `distances`, also the unweighted signed point-to-line distances at the new
-/// pose.
-bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const PinholeCamera& camera,
-                const Se3& start, const PoseParams& params, int max_evaluations, PoseWorkspace& workspace,
-                PoseSolution& solution, Se3& pose, std::vector<real>* distances) {
+/// PoseSolver::kNormalEquations normal_equations_lm) over `matches` weighted by
+/// workspace.weights (empty: all 1) from `start`, stopped after `max_evaluations` residual
+/// evaluations. When solved, workspace.distances become the unweighted signed point-to-line
+/// distances at the new pose; otherwise they are left as they were.
+SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                       const PoseParams& params, int max_evaluations, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
-  PointToLineProblem problem(matches, weights, camera, start, workspace);
+  PointToLineProblem problem(matches, workspace.weights, camera, start, workspace);
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -237,14 +246,24 @@ bool solve_once(const std::vector<EdgeMatch>& matches, const std::vector<real>& 
                                 workspace.jacobian.data(), m, params.f_tolerance, params.x_tolerance,
                                 params.g_tolerance, max_evaluations, diag, 1, real(100), 0, &nfev, &njev, ipvt, qtf,
                                 wa1, wa2, wa3, workspace.work.data());
-  solution.evaluations += problem.evaluations();
-  solution.iterations += njev;
-  if (solution.evaluations == problem.evaluations()) solution.start_rms = problem.start_rms();
-  solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), matches.size());
+  SolveResult result;
+  result.evaluations = problem.evaluations();
+  result.iterations = njev;
+  result.start_rms = problem.start_rms();
+  result.end_rms = PointToLineProblem::rms(workspace.residuals.data(), matches.size());
   const bool ok = info >= vnl_levenberg_marquardt::CONVERGED_FTOL && info <= vnl_levenberg_marquardt::CONVERGED_GTOL;
-  if (!(ok || keeps_best_estimate(info))) return false;
-  pose = problem.pose(x);
-  return !distances || problem.signed_distances(x, *distances);
+  if (!(ok || keeps_best_estimate(info))) return result;
+  result.pose = problem.pose(x);
+  result.solved = problem.signed_distances(x, workspace.distances);
+  return result;
+}
+
+/// Adds one solve's counts to `solution`; the first solve's start RMS is the solution's.
+void add_counts(const SolveResult& solve, PoseSolution& solution) {
+  if (solution.evaluations == 0) solution.start_rms = solve.start_rms;
+  solution.evaluations += solve.evaluations;
+  solution.iterations += solve.iterations;
+  solution.end_rms = solve.end_rms;
 }
 
 /// The median of |values| (the distances may be signed); `magnitudes` is work.
@@ -293,9 +312,10 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
   using std::fabs;
   real c = params.tukey_c * real(1.4826) * median_of(distances, scratch);
   if (c < params.tukey_floor) c = params.tukey_floor;
+  const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
   for (size_t i = 0; i < matches.size(); ++i) {
-    const real u = fabs(distances[i]) / c;
+    const real u = fabs(distances[i]) * inv_c;
     matches[i].outlier = u >= real(1);
     weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
     outliers += matches[i].outlier;
@@ -332,11 +352,10 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  Se3 pose;
-  if (!solve_once(matches, weights, camera, start, params, params.max_evaluations, workspace, solution, pose,
-                  &distances))
-    return solution;
-  solution.camera_from_model = pose;
+  const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, workspace);
+  add_counts(first, solution);
+  if (!first.solved) return solution;
+  solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
     solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes);
@@ -348,10 +367,11 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     choose_nearest_hypotheses(matches, distances);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    if (!solve_once(matches, weights, camera, pose, params, params.robust_evaluations, workspace, solution, pose,
-                    &distances))
-      break;
-    solution.camera_from_model = pose;
+    const SolveResult robust_solve =
+        solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, workspace);
+    add_counts(robust_solve, solution);
+    if (!robust_solve.solved) break;
+    solution.camera_from_model = robust_solve.pose;
   }
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of

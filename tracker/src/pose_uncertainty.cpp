@@ -4,7 +4,9 @@
 
 #include <cmath>
 
+#include "edgetrack/millimetres.h"
 #include "edgetrack/small_cholesky.h"
+#include "edgetrack/sum_of_products.h"
 
 namespace edgetrack {
 namespace {
@@ -43,7 +45,7 @@ Perturbation perturbation_of(const EdgeModel& model) {
   p.centre = (real(1) / real(count)) * sum;
   real farthest(0);  // mm^2: one square root at the end
   for_each_overlay_point(model, [&](const Vec3& v) {
-    const Vec3 d = real(1000) * (v - p.centre);
+    const Vec3 d = to_millimetres(v - p.centre);
     const real r2 = dot(d, d);
     if (r2 > farthest) farthest = r2;
   });
@@ -68,6 +70,29 @@ void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const
   g[4] = turn.y;
   g[5] = turn.z;
 }
+
+/// The lower triangle of the information matrix, sum of r r^T over rows r of W^(1/2) J, summed
+/// a block of rows at a time: column sums of products (sum_of_products.h) instead of a product
+/// and a sum per row and entry.
+class InformationSum {
+ public:
+  explicit InformationSum(real (&information)[kDof][kDof]) : information_(information) {}
+  void add(const real row[kDof]) {
+    for (int k = 0; k < kDof; ++k) rows_[k][count_] = row[k];
+    if (++count_ == kBlock) flush();
+  }
+  void flush() {
+    for (int i = 0; i < kDof; ++i)
+      for (int j = 0; j <= i; ++j) information_[i][j] += sum_of_products(count_, rows_[i], rows_[j]);
+    count_ = 0;
+  }
+
+ private:
+  static constexpr int kBlock = 32;
+  real (&information_)[kDof][kDof];
+  real rows_[kDof][kBlock];
+  int count_ = 0;
+};
 
 /// Rescales the lower triangle of the information matrix from w in radians to w times the radius
 /// (mm at the farthest vertex), once per frame rather than per match.
@@ -104,27 +129,27 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   const real unconstrained = real(kUnconstrainedPx);
   const Perturbation perturbation = perturbation_of(model);
   const real inv_radius = real(1) / perturbation.radius_mm;
-  const Vec3 centre_mm = real(1000) * (pose * perturbation.centre);
+  const Vec3 centre_mm = to_millimetres(pose * perturbation.centre);
   real cut = tukey_c * sigma;
   if (cut < tukey_floor) cut = tukey_floor;
   const real inv_cut = real(1) / cut;
   real information[kDof][kDof] = {};
+  InformationSum sum(information);
   real g[kDof];
   for (const EdgeMatch& match : matches) {
     if (match.outlier) continue;
-    const Vec3 in_camera = real(1000) * (pose * match.point.point_in_model);
+    const Vec3 in_camera = to_millimetres(pose * match.point.point_in_model);
     if (in_camera.z <= real(0)) continue;
     const real inv_z = real(1) / in_camera.z;
     const Vec2 pixel{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
     const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
     if (u >= real(1)) continue;
-    const real weight = (real(1) - u * u) * (real(1) - u * u);
+    const real root_weight = real(1) - u * u;  // Tukey's weight is its square
     pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
-    for (int i = 0; i < kDof; ++i) {
-      const real wg = weight * g[i];
-      for (int j = 0; j <= i; ++j) information[i][j] += wg * g[j];
-    }
+    for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
+    sum.add(g);
   }
+  sum.flush();
   scale_turns(information, inv_radius);
   real largest(0);
   for (int k = 0; k < kDof; ++k)
@@ -139,7 +164,7 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   real worst(0);  // the largest |L^-1 g_u|^2 + |L^-1 g_v|^2
   bool off_scale = false;
   for_each_overlay_point(model, [&](const Vec3& v) {
-    const Vec3 in_camera = real(1000) * (pose * v);
+    const Vec3 in_camera = to_millimetres(pose * v);
     if (off_scale || in_camera.z <= real(0)) return;
     const real inv_z = real(1) / in_camera.z;
     const Vec3 offset = in_camera - centre_mm;

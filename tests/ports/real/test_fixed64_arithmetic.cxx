@@ -337,11 +337,15 @@ void check_dot_product(std::uint64_t seed) {
   T a[80], b[80];
   for (int i = 0; i < kSamples / 20; ++i) {
     const int n = 1 + static_cast<int>(random.below(80));
-    const int bits = i % 3 == 0 ? 62 : i % 3 == 1 ? 40 : 30;  // past, near and within the fast path
+    // Past, near and within the fast path, and (every fourth) each element's own size, so that
+    // int32 products and 128-bit ones alternate in one sum.
+    const int widths[3] = {62, 40, 30};
+    const int bits = widths[i % 3];
     Exact sum(0);
     for (int k = 0; k < n; ++k) {
-      a[k] = T::from_raw(random.raw(bits));
-      b[k] = T::from_raw(random.raw(bits));
+      const int width = i % 4 == 3 ? widths[random.below(3)] : bits;
+      a[k] = T::from_raw(random.raw(width));
+      b[k] = T::from_raw(random.raw(width));
       sum = sum + Exact(a[k].raw()) * Exact(b[k].raw());
     }
     const std::uint64_t before = fixedpoint::saturation_count();
@@ -358,11 +362,44 @@ void check_dot_product(std::uint64_t seed) {
   TEST("two products of half an ulp each sum to one ulp", dot_product(2, half_ulp, half).raw(), 1);
 }
 
+/// add_multiple(n, s, x, y) gives y[i] + s * x[i] bit for bit, saturations counted alike, for
+/// scales and elements within, near and past the fast paths.
+template <int F>
+void check_add_multiple(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  int failures = 0, printed = 0;
+  const int widths[3] = {62, 40, 30};
+  T x[40], y[40], expected[40];
+  for (int i = 0; i < kSamples / 20; ++i) {
+    const int n = 1 + static_cast<int>(random.below(40));
+    const T s = T::from_raw(random.raw(widths[i % 3]));
+    for (int k = 0; k < n; ++k) {
+      x[k] = T::from_raw(random.raw(widths[random.below(3)]));
+      y[k] = T::from_raw(random.raw(widths[random.below(3)]));
+    }
+    std::uint64_t before = fixedpoint::saturation_count();
+    for (int k = 0; k < n; ++k) expected[k] = y[k] + s * x[k];
+    const std::uint64_t expected_count = fixedpoint::saturation_count() - before;
+    before = fixedpoint::saturation_count();
+    add_multiple(n, s, x, y);
+    bool same = fixedpoint::saturation_count() - before == expected_count;
+    for (int k = 0; k < n; ++k) same = same && y[k].raw() == expected[k].raw();
+    if (!same) {
+      ++failures;
+      fixed64_test::report_failure(printed, "add_multiple of " + std::to_string(n) + " by " + describe(s));
+    }
+  }
+  TEST((std::string("add_multiple of ") + type_name<F>() + " is y + s * x, bit for bit").c_str(), failures, 0);
+}
+
 void test_fixed64_norm_and_dot_product() {
   check_euclidean_norm<16>(0x5eed0011);
   check_euclidean_norm<23>(0x5eed0012);
   check_dot_product<16>(0x5eed0013);
   check_dot_product<23>(0x5eed0014);
+  check_add_multiple<16>(0x5eed0015);
+  check_add_multiple<23>(0x5eed0016);
 }
 
 void test_fixed64_add_subtract() {

@@ -83,8 +83,9 @@ struct PoseSolution {
 /// array per coordinate), the layout of MINPACK's column-major Jacobian.
 struct PoseWorkspace {
   std::vector<real> rotated[3];       ///< R0 * point_in_model, millimetres
-  std::vector<real> coefficients[3];  ///< (a, b, c) of each weighted residual
-  std::vector<real> unweighted[3];    ///< the same before the weights
+  std::vector<real> unweighted[3];    ///< (a, b, c) of each distance (a X + b Y + c Z) / Z
+  std::vector<real> gradient[2];      ///< a and b times the match's weight, for the Jacobian
+  std::vector<real> evaluated;        ///< the distances at the last evaluation, unweighted
   std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
   std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4

@@ -353,16 +353,29 @@ constexpr fixed64<F> dot_product(int n, const fixed64<F>* a, const fixed64<F>* b
   std::uint64_t low = 0;
   std::int64_t high = 0;  // the sum, high * 2^64 + low (two's complement)
   int saturated = 0;      // the sign of a partial sum that passed the cap
+  // The int32 products' low and high words, summed apart (two 32-bit additions with carry each
+  // on ARMv5TE) and folded into the sum before each cap test and at the end.
+  std::uint64_t low_words = 0;
+  std::int64_t high_words = 0;
+  const auto fold = [&] {
+    const std::uint64_t shifted = static_cast<std::uint64_t>(high_words) << 32;
+    const std::uint64_t part = shifted + low_words;
+    const std::uint64_t sum = low + part;
+    high += (high_words >> 32) + (part < shifted ? 1 : 0) + (sum < low ? 1 : 0);
+    low = sum;
+    low_words = 0;
+    high_words = 0;
+  };
   for (int i = 0; i < n && saturated == 0; ++i) {
     const std::int64_t x = a[i].raw(), y = b[i].raw();
     const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(x));
     const auto y32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(y));
     if (__builtin_expect(((x ^ x32) | (y ^ y32)) == 0, 1)) {
       const std::int64_t product = std::int64_t{x32} * y32;
-      const std::uint64_t sum = low + static_cast<std::uint64_t>(product);
-      high += (product < 0 ? -1 : 0) + (sum < low ? 1 : 0);
-      low = sum;
+      low_words += static_cast<std::uint32_t>(static_cast<std::uint64_t>(product));
+      high_words += static_cast<std::int32_t>(static_cast<std::uint64_t>(product) >> 32);
     } else {
+      fold();
       detail::Uint128 m = detail::multiply(detail::magnitude(x), detail::magnitude(y));
       if ((x ^ y) < 0) m = detail::Uint128{0, 0} - m;
       const std::uint64_t sum = low + m.lo;
@@ -376,10 +389,43 @@ constexpr fixed64<F> dot_product(int n, const fixed64<F>* a, const fixed64<F>* b
     detail::count_saturation();
     return saturated < 0 ? std::numeric_limits<fixed64<F>>::lowest() : std::numeric_limits<fixed64<F>>::max();
   }
+  fold();
   const bool negative = high < 0;
   detail::Uint128 m{static_cast<std::uint64_t>(high), low};
   if (negative) m = detail::Uint128{0, 0} - m;
   return fixed64<F>::from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(m, F)));
+}
+
+/// y[i] += s * x[i] for i < n, bit for bit as those operators give it (each product rounded, each
+/// sum saturating), but a scale s past the int32 range times an x[i] within it takes two
+/// 32 x 32-bit products instead of operator*'s out-of-line 128-bit one: MINPACK's Householder
+/// updates scale a column by a sum over the whole column.
+template <int F>
+constexpr void add_multiple(int n, fixed64<F> s, const fixed64<F>* x, fixed64<F>* y) {
+  const std::int64_t sr = s.raw();
+  const auto s32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(sr));
+  if (sr == s32) {  // operator*'s own fast paths
+    for (int i = 0; i < n; ++i) y[i] += s * x[i];
+    return;
+  }
+  const std::uint64_t ms = detail::magnitude(sr);
+  const std::uint64_t ms0 = ms & 0xffffffffu, ms1 = ms >> 32;
+  for (int i = 0; i < n; ++i) {
+    const std::int64_t xr = x[i].raw();
+    const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(xr));
+    if (xr != x32) {
+      y[i] += s * x[i];
+      continue;
+    }
+    // |s| |x| = ms1 |x| 2^32 + ms0 |x|, below 2^95: detail::multiply(ms, |x|) with two partial
+    // products, rounded and saturated as multiply_general does.
+    const std::uint64_t mx = detail::magnitude(xr);
+    const std::uint64_t low = ms0 * mx, high = ms1 * mx;
+    const detail::Uint128 product = detail::Uint128{high >> 32, high << 32} + detail::Uint128{0, low};
+    const bool negative = (sr ^ xr) < 0;
+    y[i] += fixed64<F>::from_raw(
+        detail::signed_from_magnitude(negative, detail::shift_right_rounded(product, F)));
+  }
 }
 
 /// Largest whole number not above x; exact.
