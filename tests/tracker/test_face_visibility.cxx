@@ -142,11 +142,13 @@ void level_of_detail(const EdgeModel& cube, const PinholeCamera& camera) {
   lod.min_line_length = real(40);
   lines.update(free_line.value(), camera, Se3(), lod);
   TEST("it is with 40", lines.edge_tracked(0), true);
-  std::vector<ControlPoint> points = sample_control_points(free_line.value(), camera, Se3(), SamplingParams{});
+  std::vector<ControlPoint> points;
+  sample_control_points(free_line.value(), camera, Se3(), SamplingParams{}, lines, points);
+  TEST("the tracked line is sampled", points.empty(), false);
   lod.min_line_length = real(50);
   lines.update(free_line.value(), camera, Se3(), lod);
-  lines.keep_tracked(points);
-  TEST("keep_tracked drops the points of untracked edges", points.empty(), true);
+  sample_control_points(free_line.value(), camera, Se3(), SamplingParams{}, lines, points);
+  TEST("an untracked edge is not sampled", points.empty(), true);
 }
 
 }  // namespace

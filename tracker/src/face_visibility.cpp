@@ -152,10 +152,4 @@ void FaceVisibility::update(const EdgeModel& model, const PinholeCamera& camera,
   }
 }
 
-void FaceVisibility::keep_tracked(std::vector<ControlPoint>& points) const {
-  points.erase(std::remove_if(points.begin(), points.end(),
-                              [this](const ControlPoint& p) { return !edge_tracked(p.edge); }),
-               points.end());
-}
-
 }  // namespace edgetrack

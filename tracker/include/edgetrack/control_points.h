@@ -46,8 +46,8 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
 /// allocates only while the point count grows).
 void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
                            const SamplingParams& params, std::vector<ControlPoint>& points);
-/// The same for only the primitives `faces` tracks (FaceVisibility::edge_tracked): the points
-/// FaceVisibility::keep_tracked would keep, without sampling the others first.
+/// The same for only the primitives `faces` tracks (FaceVisibility::edge_tracked); the others
+/// are not sampled at all.
 void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
                            const SamplingParams& params, const FaceVisibility& faces, std::vector<ControlPoint>& points);
 

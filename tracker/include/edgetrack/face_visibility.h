@@ -14,8 +14,6 @@
 
 namespace edgetrack {
 
-struct ControlPoint;
-
 /// The <face> and <lod> settings with ViSP's meanings; the defaults are vpMbTracker's (what
 /// ViSP's edge tracker uses when a configuration file has no such block).
 struct FaceVisibilityParams {
@@ -76,8 +74,6 @@ class FaceVisibility {
   bool edge_tracked(int edge) const {
     return static_cast<size_t>(edge) >= edge_tracked_.size() || edge_tracked_[static_cast<size_t>(edge)] != 0;
   }
-  /// Removes, in place, the control points of edges not tracked.
-  void keep_tracked(std::vector<ControlPoint>& points) const;
 
  private:
   bool face_passes(const EdgeModel& model, int face, const PinholeCamera& camera, const Se3& camera_from_model,
