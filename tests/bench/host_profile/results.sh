@@ -57,10 +57,12 @@ run_args() {
 }
 
 # steps CALLGRIND_FILE: "visible | grey | ME | pose | other | total" per frame, from the inclusive
-# cost of each call Tracker::track makes (the rest, its own code included, is "other").
+# cost of each call Tracker::track makes, itself or through Tracker::attempt (a frame's tracking
+# from one start pose; the rest, their own code included, is "other").
 steps() {
   callgrind_annotate --tree=calling --inclusive=yes "$1" 2>/dev/null | awk -v f="$frames" '
     /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); total = $1; go = 1; next }
+    /\*  .*edgetrack::Tracker::attempt\(/ { go = 1; next }
     go && /^ *$/ { go = 0 }
     go && / >   / {
       c = $1; gsub(",", "", c); name = $0
