@@ -160,7 +160,8 @@ for scene in cube wood_toy; do
   g=$work/guest-$scene-with.txt
   [ -f "$g" ] || continue
   read -r per worst <"$g"
-  verdict "$([ "$per" -le 300000000 ] && echo 1 || echo 0)" \
-    "at most 300 M guest instructions per detection in S40.23, $scene: $(printf '%.1f' "$(echo "$per / 1000000" | bc -l)") M (worst of $arm_trials: $(printf '%.1f' "$(echo "$worst / 1000000" | bc -l)") M)"
+  # Per detection: every one of the counted detections, the worst included, not only the mean.
+  verdict "$([ "$per" -le 300000000 ] && [ "$worst" -le 300000000 ] && echo 1 || echo 0)" \
+    "at most 300 M guest instructions per detection in S40.23, $scene: mean $(printf '%.1f' "$(echo "$per / 1000000" | bc -l)") M, worst of $arm_trials $(printf '%.1f' "$(echo "$worst / 1000000" | bc -l)") M"
 done
 verdict "$(echo "$memory <= 4194304" | bc)" "templates in at most 4 MB: $(printf '%.2f' "$(echo "$memory / 1048576" | bc -l)") MB"
