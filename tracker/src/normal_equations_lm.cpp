@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "edgetrack/small_cholesky.h"
-#include "edgetrack/sum_of_products.h"
+#include "real/sum_of_products.h"
 
 namespace edgetrack {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/small_cholesky.h"
-#include "edgetrack/sum_of_products.h"
+#include "real/sum_of_products.h"
 
 namespace edgetrack {
 namespace {

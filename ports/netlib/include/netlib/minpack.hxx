@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "netlib/minpack.h"
+#include "real/sum_of_products.h"
 
 namespace netlib {
 namespace minpack_detail {
@@ -39,19 +40,6 @@ T abs_of(const T& a) {
   return abs(a);
 }
 
-/// a[0] b[0] + ... + a[n-1] b[n-1]: MINPACK's loop for floating point; for fixed point the
-/// exact sum rounded once (real/fixed64.h), which is both closer and cheaper than a rounding
-/// and a saturation test per product.
-template <class T>
-T dot_of(int n, const T* a, const T* b) {
-  if constexpr (!std::numeric_limits<T>::is_iec559) {
-    return dot_product(n, a, b);
-  } else {
-    T sum(0);
-    for (int i = 0; i < n; ++i) sum += a[i] * b[i];
-    return sum;
-  }
-}
 
 /// y[i] += s x[i]: MINPACK's loop for floating point; for fixed point the same operations
 /// without the 128-bit product when s is large (real/fixed64.h).
@@ -129,7 +117,6 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
   using std::sqrt;
   using K = minpack_detail::k<T>;
   using minpack_detail::add_multiple_of;
-  using minpack_detail::dot_of;
   using minpack_detail::max_of;
   for (int j = 0; j < n; ++j) {
     acnorm[j] = enorm(m, a + j * lda, machine);
@@ -176,7 +163,7 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
       // Apply it to the remaining columns and update their norms.
       for (int k = j + 1; k < n; ++k) {
         T* const ak = a + k * lda;
-        const T temp = dot_of(m - j, aj + j, ak + j) / aj[j];
+        const T temp = sum_of_products(m - j, aj + j, ak + j) / aj[j];
         // ak -= temp aj: negating temp first changes no rounding (both types round symmetrically).
         add_multiple_of(m - j, -temp, aj + j, ak + j);
         if (pivot && rdiag[k] != T(0)) {
@@ -419,7 +406,7 @@ int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, 
     for (int j = 0; j < n; ++j) {
       T* const fj = fjac + j * ldfjac;
       if (fj[j] != T(0)) {
-        const T temp = -dot_of(m - j, fj + j, wa4 + j) / fj[j];
+        const T temp = -sum_of_products(m - j, fj + j, wa4 + j) / fj[j];
         add_multiple_of(m - j, temp, fj + j, wa4 + j);
       }
       fj[j] = wa1[j];
