@@ -9,6 +9,7 @@
 
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
+#include "edgetrack/millimetres.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/tracker_params.h"
 
@@ -198,7 +199,7 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
   const Se3& solved = result.pose.camera_from_model;
   m.correction_px = largest_normal_shift(visible_, camera_, solved);
   const Se3 change = solved * start.inverse();
-  m.translation_change_mm = real(1000) * norm(solved.translation() - start.translation());
+  m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
   m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
   m.range = me_.getRange();
   const real sigma = std::max(m.residual_scale, params_.status.edge_location_px);
