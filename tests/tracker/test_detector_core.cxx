@@ -4,6 +4,7 @@
 /// linearised memory's layout, a hand-made template found where it was drawn, the viewpoint
 /// sphere, the templates made from the cube (bounded, well spread, within 4 MB), and the
 /// detector's parameter limits.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -258,6 +259,38 @@ void test_matching_equals_direct_sums() {
     TEST("some templates reach the share", expected > 0, true);
     TEST_EQUAL("matching keeps exactly the templates the direct sums do", static_cast<int>(matches.size()), expected);
     TEST_EQUAL("each at the direct sums' first best position and score", differ, 0);
+  }
+  // With few kept per distance, a template's sums stop where it could not enter its distance's
+  // full list: the lists are still the direct sums' best per distance (share, then index).
+  std::vector<TemplateMatch> direct;
+  for (size_t index = 0; index < set.value().templates.size(); ++index) {
+    TemplateMatch m = direct_best(set.value(), maps, index);
+    m.template_index = static_cast<int>(index);
+    m.share = real(m.score) / real(kBestSimilarity * set.value().templates[index].count);
+    direct.push_back(m);
+  }
+  auto better = [](const TemplateMatch& a, const TemplateMatch& b) {
+    return a.share > b.share || (a.share == b.share && a.template_index < b.template_index);
+  };
+  std::stable_sort(direct.begin(), direct.end(), better);
+  for (const int kept : {1, 3}) {
+    MatchParams match_params;
+    match_params.min_share = real(0.3);
+    match_params.max_candidates = kept;
+    match_templates(set.value(), maps, match_params, scores, runs, per_distance, matches);
+    std::vector<TemplateMatch> expected;
+    std::vector<int> per(static_cast<size_t>(set.value().distance_count), 0);
+    for (const TemplateMatch& m : direct) {
+      int& n = per[static_cast<size_t>(set.value().templates[static_cast<size_t>(m.template_index)].distance_index)];
+      if (m.share >= match_params.min_share && n < kept) ++n, expected.push_back(m);
+    }
+    int differ = static_cast<int>(matches.size() != expected.size());
+    for (size_t k = 0; k < matches.size() && k < expected.size(); ++k)
+      differ += matches[k].template_index != expected[k].template_index || matches[k].score != expected[k].score ||
+                matches[k].x != expected[k].x || matches[k].y != expected[k].y;
+    std::printf("%d per distance: %zu matches over %d distances\n", kept, matches.size(), set.value().distance_count);
+    TEST("more templates than kept at some distance", direct.size() > expected.size(), true);
+    TEST_EQUAL("the matches are the direct sums' best per distance, in order", differ, 0);
   }
 }
 
