@@ -32,11 +32,12 @@ class AxisLikelihood {
   bool along_x_;
 };
 
-/// The edge's position on line v: from u, climbs (at most kMaxClimb pixels, ties towards lower
-/// u, the same in every build) to a local maximum of the likelihood, then fits a parabola
-/// through it and its two neighbours. `peak` receives the maximum's likelihood.
-real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
-  int centre = likelihood.at(u, v), before = likelihood.at(u - 1, v), after = likelihood.at(u + 1, v);
+/// The edge's position on line v: from u (whose likelihood is `centre`), climbs (at most
+/// kMaxClimb pixels, ties towards lower u, the same in every build) to a local maximum of the
+/// likelihood, then fits a parabola through it and its two neighbours. `peak` receives the
+/// maximum's likelihood.
+real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int centre, int& peak) {
+  int before = likelihood.at(u - 1, v), after = likelihood.at(u + 1, v);
   for (int climb = 0; climb < kMaxClimb && (before > centre || after > centre); ++climb) {
     if (before >= after) {
       --u;
@@ -57,13 +58,14 @@ real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
   return real(u);
 }
 
-/// The sub-pixel edge point near the site's pixel (i, j), of the site's mask `response`.
+/// The sub-pixel edge point near the site's pixel (i, j), of the site's mask `response`, whose
+/// value there the search read already (`conv`).
 /// The site keeps a whole pixel of its path, and which pixel that is (which row, for a mostly
 /// vertical edge) flips with a rounding-size move of the control point. So the edge is located
 /// on the three lines of the axis nearest to the normal around that pixel (a ridge each), and
 /// the match is where the control point's normal line crosses the polyline through those
 /// ridges: a continuous function of the control point.
-Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, const ControlPoint& point) {
+Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, const ControlPoint& point) {
   using std::fabs;
   const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
   const int u_site = along_x ? j : i, v_site = along_x ? i : j;
@@ -74,7 +76,9 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, const Contro
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
   for (int k = 0; k < 3; ++k) {
-    ridge[k] = ridge_on_line(likelihood, u_site, v_site + k - 1, peak[k]);
+    const int v = v_site + k - 1;
+    const int centre = k == 1 ? (conv < 0 ? -conv : conv) : likelihood.at(u_site, v);
+    ridge[k] = ridge_on_line(likelihood, u_site, v, centre, peak[k]);
     side[k] = nu * (real(v_site + k - 1) - v0) - nv * (ridge[k] - u0);
   }
   real u = ridge[1], v = real(v_site);
@@ -102,6 +106,7 @@ struct PathPeak {
   int likelihood = 0;
   int i = 0;
   int j = 0;
+  int conv = 0;
 };
 
 /// The pixel a site's search keeps, with its signed mask response (EdgeMatch::contrast).
@@ -189,7 +194,7 @@ int path_peaks(const vpMeResponse& response, const vpMe& me, const ControlPoint&
       if (at < capacity) peaks[at] = peaks[at - 1];
       --at;
     }
-    if (at < capacity) peaks[at] = {likelihood, i, j};
+    if (at < capacity) peaks[at] = {likelihood, i, j, conv};
   });
   return count;
 }
@@ -207,7 +212,7 @@ void add_alternatives(const vpMeResponse& response, const vpMe& me, int hypothes
   for (int p = 0; p < count && match.alternative_count < hypotheses - 1; ++p) {
     if (2 * peaks[p].likelihood < peaks[0].likelihood) break;  // too weak to compete
     if (peaks[p].i == strongest.i && peaks[p].j == strongest.j) continue;
-    const Vec2 q = refined_edge_point(response, peaks[p].i, peaks[p].j, match.point);
+    const Vec2 q = refined_edge_point(response, peaks[p].i, peaks[p].j, peaks[p].conv, match.point);
     bool known = fabs(dot(match.point.normal, q - match.found)) < real(1);
     for (int a = 0; a < match.alternative_count && !known; ++a)
       known = fabs(dot(match.point.normal, q - match.alternatives[a])) < real(1);
@@ -301,7 +306,7 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     EdgeMatch& match = matches.back();
     match.point = point;
     match.contrast = real(site.conv);
-    match.found = refined_edge_point(response, site.i, site.j, point);
+    match.found = refined_edge_point(response, site.i, site.j, site.conv, point);
     if (hypotheses > 1) add_alternatives(response, me, hypotheses, site, match);
   }
 }
