@@ -2,6 +2,7 @@
 /// The contrast memory between frames.
 #include "edgetrack/contrast_memory.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace edgetrack {
@@ -68,6 +69,42 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
     }
     first = end;
   }
+  group();
+}
+
+void ContrastMemory::group() {
+  groups_.clear();
+  for (size_t first = 0, end = 0; first < remembered_.size(); first = end) {
+    Group g;
+    g.edge = remembered_[first].edge;
+    g.first = first;
+    for (end = first; end < remembered_.size() && remembered_[end].edge == g.edge; ++end) {
+    }
+    g.end = end;
+    // The axis of the largest change from the first point to the last: a straight edge's.
+    using std::fabs;
+    const Vec3 spread = remembered_[end - 1].point_in_model - remembered_[first].point_in_model;
+    const real sx = fabs(spread.x), sy = fabs(spread.y), sz = fabs(spread.z);
+    g.axis = sx >= sy && sx >= sz ? 0 : sy >= sz ? 1 : 2;
+    bool grows = true, falls = true;
+    for (size_t k = first + 1; k < end; ++k) {
+      const real& before = coordinate(remembered_[k - 1].point_in_model, g.axis);
+      const real& after = coordinate(remembered_[k].point_in_model, g.axis);
+      grows = grows && !(after < before);
+      falls = falls && !(after > before);
+    }
+    g.order = grows ? 1 : falls ? -1 : 0;
+    groups_.push_back(g);
+  }
+}
+
+size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, const Group& g) const {
+  if (g.order == 0 || g.end - g.first < kBisectFrom) return g.first;
+  const auto begin = remembered.begin() + static_cast<std::ptrdiff_t>(g.first);
+  const auto end = remembered.begin() + static_cast<std::ptrdiff_t>(g.end);
+  return static_cast<size_t>(
+      std::partition_point(begin, end, [this, &g](const Remembered& r) { return before(g, r.point_in_model); }) -
+      remembered.begin());
 }
 
 void ContrastMemory::references(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
@@ -75,10 +112,11 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
                                 std::vector<unsigned char>& borrowed) const {
   out.assign(points.size(), real(0));
   borrowed.assign(points.size(), 0);
-  // The remembered points come grouped by primitive: [first, end) are those of the current
-  // point's, found again only when the primitive changes, with their mean contrast when they
-  // share one polarity (else 0).
-  size_t first = 0, end = 0;
+  // The remembered points come grouped by primitive (groups_): the current point's group is
+  // found again only when the primitive changes, with its mean contrast when its points share
+  // one polarity (else 0).
+  const Group none;
+  const Group* g = &none;
   int edge = -1;
   real primitive(0);
   // `reach` pixels at depth 1 m, in metres, doubled: the bound is on the taxicab distance, 1 to
@@ -88,16 +126,19 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
     const ControlPoint& point = points[p];
     if (point.edge != edge) {
       edge = point.edge;
-      for (first = 0; first < remembered_.size() && remembered_[first].edge != edge; ++first) {
-      }
-      for (end = first; end < remembered_.size() && remembered_[end].edge == edge; ++end) {
-      }
-      primitive = mean_of_one_polarity(first, end);
+      g = &none;
+      for (const Group& candidate : groups_)
+        if (candidate.edge == edge) {
+          g = &candidate;
+          break;
+        }
+      primitive = mean_of_one_polarity(g->first, g->end);
     }
     const real depth = depth_in_camera(camera_from_model, point.point_in_model);
     if (depth <= real(0)) continue;
     real nearest = bound_per_metre * depth;
-    for (size_t k = first; k < end; ++k) {
+    const Window window(*g, point.point_in_model, nearest);
+    for (size_t k = window.first_candidate(remembered_, *g); k < g->end && !window.after(*g, remembered_[k].point_in_model); ++k) {
       if (taxicab_below(remembered_[k].point_in_model, point.point_in_model, nearest, nearest))
         out[p] = remembered_[k].contrast;
     }

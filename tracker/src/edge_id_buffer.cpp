@@ -68,7 +68,8 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
 void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner) {
   ScreenVertex a, b;
   if (!clip_and_project_segment(camera_, a_in_camera, b_in_camera, a, b)) return;
-  segments_.push_back({walk_line(a, b), code, exempt_owner});
+  const LineWalk line = walk_line(a, b);
+  segments_.push_back({line, line_box(line), code, exempt_owner});
 }
 
 void EdgeIdBuffer::collect_segments(const EdgeModel& model, const Se3& camera_from_model) {
@@ -178,9 +179,12 @@ void EdgeIdBuffer::find_nearest_surfaces() {
       owner[i] = 0;
     });
   // In the order a whole-surface fill would take, keeping the first of equal depths: the same
-  // nearest surface at every pixel, however many lines cross it.
+  // nearest surface at every pixel, however many lines cross it. A triangle whose box misses
+  // the line's box has none of its pixels (most of a tessellated side's facets, for each line).
   for (const Segment& s : segments_)
     for (const Occluder& o : occluders_) {
+      const PixelRect& box = o.triangle.box;
+      if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
       const int16_t id = o.owner;
       line_in_triangle(s.line, o.triangle, [depth, owner, width, id](int x, int y, int32_t w) {
         const size_t i = static_cast<size_t>(y) * width + x;

@@ -32,11 +32,11 @@ class AxisLikelihood {
   bool along_x_;
 };
 
-/// The edge's position on line v: from u, climbs (at most kMaxClimb pixels, ties towards lower
+/// The edge's position on line v: from u, whose likelihood and its neighbours' are `centre`,
+/// `before` (u - 1) and `after` (u + 1), climbs (at most kMaxClimb pixels, ties towards lower
 /// u, the same in every build) to a local maximum of the likelihood, then fits a parabola
 /// through it and its two neighbours. `peak` receives the maximum's likelihood.
-real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
-  int centre = likelihood.at(u, v), before = likelihood.at(u - 1, v), after = likelihood.at(u + 1, v);
+real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int before, int centre, int after, int& peak) {
   for (int climb = 0; climb < kMaxClimb && (before > centre || after > centre); ++climb) {
     if (before >= after) {
       --u;
@@ -57,13 +57,14 @@ real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int& peak) {
   return real(u);
 }
 
-/// The sub-pixel edge point near the site's pixel (i, j), of the site's mask `response`.
+/// The sub-pixel edge point near the site's pixel (i, j), of the site's mask `response`, whose
+/// value there the search read already (`conv`).
 /// The site keeps a whole pixel of its path, and which pixel that is (which row, for a mostly
 /// vertical edge) flips with a rounding-size move of the control point. So the edge is located
 /// on the three lines of the axis nearest to the normal around that pixel (a ridge each), and
 /// the match is where the control point's normal line crosses the polyline through those
 /// ridges: a continuous function of the control point.
-Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, const ControlPoint& point) {
+Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, const ControlPoint& point) {
   using std::fabs;
   const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
   const int u_site = along_x ? j : i, v_site = along_x ? i : j;
@@ -71,10 +72,25 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, const Contro
   const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
   const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
+  // The 3 x 3 pixels around the site's in one batch (the site's own response is conv), then
+  // whatever the climbs reach one at a time.
+  int block_i[9], block_j[9], block[9];
+  for (int k = 0; k < 9; ++k) {
+    const int u = u_site + k % 3 - 1, v = v_site + k / 3 - 1;
+    block_i[k] = along_x ? v : u;
+    block_j[k] = along_x ? u : v;
+  }
+  block_i[4] = block_i[8];
+  block_j[4] = block_j[8];
+  response.at_each(block_i, block_j, 8, block);
+  block[8] = block[4];
+  block[4] = conv;
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
   for (int k = 0; k < 3; ++k) {
-    ridge[k] = ridge_on_line(likelihood, u_site, v_site + k - 1, peak[k]);
+    const int* line = block + 3 * k;
+    ridge[k] = ridge_on_line(likelihood, u_site, v_site + k - 1, line[0] < 0 ? -line[0] : line[0],
+                             line[1] < 0 ? -line[1] : line[1], line[2] < 0 ? -line[2] : line[2], peak[k]);
     side[k] = nu * (real(v_site + k - 1) - v0) - nv * (ridge[k] - u0);
   }
   real u = ridge[1], v = real(v_site);
@@ -102,6 +118,7 @@ struct PathPeak {
   int likelihood = 0;
   int i = 0;
   int j = 0;
+  int conv = 0;
 };
 
 /// The pixel a site's search keeps, with its signed mask response (EdgeMatch::contrast).
@@ -157,111 +174,137 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
   const int range = static_cast<int>(me.getRange());
   const int threshold = likelihood_floor(me.getThreshold());
   PathWalk walk(point, range);
-  int i = 0, j = 0, next_i = 0, next_j = 0;
-  walk.next(i, j);
-  int current_conv = response.at(i, j);
-  int before = -1, current = current_conv < 0 ? -2 * current_conv : 2 * current_conv;
-  for (int k = -range; k <= range; ++k) {
-    int after_conv = 0, after = -1;
-    if (k < range) {
+  // before, current: the likelihoods of the pixels before the current one (i, j) and of it;
+  // each pixel read (`after`) settles whether the current one is a maximum.
+  int before = -1, current = -1, current_conv = 0, i = 0, j = 0;
+  const int length = 2 * range + 1;
+  if constexpr (vpMe::kPaddedRow != 0) {
+    // Vector masks: the responses a chunk of the path at a time (vpMeResponse::at_each loads the
+    // mask once per chunk). Without them, one at a time: the arrays would cost more than they save.
+    constexpr int kChunk = 16;
+    int path_i[kChunk], path_j[kChunk], conv[kChunk];
+    for (int start = 0; start < length; start += kChunk) {
+      const int n = length - start < kChunk ? length - start : kChunk;
+      for (int k = 0; k < n; ++k) walk.next(path_i[k], path_j[k]);
+      response.at_each(path_i, path_j, n, conv);
+      for (int k = 0; k < n; ++k) {
+        const int after = conv[k] < 0 ? -2 * conv[k] : 2 * conv[k];
+        if (start + k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
+        before = start + k > 0 ? current : -1;
+        current = after;
+        current_conv = conv[k];
+        i = path_i[k];
+        j = path_j[k];
+      }
+    }
+  } else {
+    for (int k = 0; k < length; ++k) {
+      int next_i = 0, next_j = 0;
       walk.next(next_i, next_j);
-      after_conv = response.at(next_i, next_j);
-      after = after_conv < 0 ? -2 * after_conv : 2 * after_conv;
+      const int conv = response.at(next_i, next_j), after = conv < 0 ? -2 * conv : 2 * conv;
+      if (k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
+      before = k > 0 ? current : -1;
+      current = after;
+      current_conv = conv;
+      i = next_i;
+      j = next_j;
     }
-    if (current > before && current >= after && current > threshold) visit(current_conv, i, j);
-    before = current;
-    current = after;
-    current_conv = after_conv;
-    i = next_i;
-    j = next_j;
   }
+  if (current > before && current > threshold) visit(current_conv, i, j);  // the far end: no pixel after
 }
 
-/// The strongest local maxima of for_each_path_peak (at most `capacity`, strongest first, ties
-/// in path order). Returns the count.
-int path_peaks(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, PathPeak* peaks,
-               int capacity) {
-  int count = 0;
+/// What one pass over a site's path (for_each_path_peak) finds for the site's search and its
+/// alternatives, so that no choice reads the path's responses twice.
+struct PathSearch {
+  /// vpMeSite::track(I, &me, false): the maximum of the largest likelihood above the threshold,
+  /// the first of equals; valid when strongest_magnitude > 0.
+  SitePixel strongest;
+  int strongest_magnitude = 0;
+  /// Upstream's contrast test against the reference (with one): of the maxima whose conv has the
+  /// reference's sign and lies within (1 - mu1, 1 + mu2) times it, the strongest. (Upstream takes
+  /// the pixel whose contrast is nearest to the reference: where a face turns into view beside a
+  /// silhouette, its far edge has the silhouette's old contrast, and on the generated frames that
+  /// rule followed it off the cube.) Valid when contrast_magnitude > 0.
+  SitePixel by_contrast;
+  int contrast_magnitude = 0;
+  /// The strongest maxima (at most the capacity asked for, strongest first, ties in path
+  /// order), for the alternatives.
+  PathPeak peaks[kMaxHypotheses + 1];
+  int peak_count = 0;
+};
+
+/// One pass over the site's path. `reference` is the oriented contrast (EdgeMatch::contrast)
+/// the same model point showed in the last trusted frame, 0 for none; `capacity` (at most
+/// kMaxHypotheses + 1) is how many maxima to keep in `peaks`, 0 for none.
+PathSearch search_path(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
+                       int capacity) {
+  using std::fabs;
+  PathSearch found;
+  const bool with_reference = reference != real(0);
+  real least(0), most(0);
+  if (with_reference) {
+    least = (real(1) - me.getMu1()) * fabs(reference);
+    most = (real(1) + me.getMu2()) * fabs(reference);
+  }
+  const bool positive = reference > real(0);
   for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
-    const int likelihood = conv < 0 ? -2 * conv : 2 * conv;
-    int at = count < capacity ? count++ : capacity;  // insertion into the sorted list
-    while (at > 0 && peaks[at - 1].likelihood < likelihood) {
-      if (at < capacity) peaks[at] = peaks[at - 1];
-      --at;
+    const int magnitude = conv < 0 ? -conv : conv;
+    if (magnitude > found.strongest_magnitude) {
+      found.strongest_magnitude = magnitude;
+      found.strongest = {i, j, conv};
     }
-    if (at < capacity) peaks[at] = {likelihood, i, j};
+    if (with_reference && (conv > 0) == positive && real(magnitude) > least && real(magnitude) < most &&
+        magnitude > found.contrast_magnitude) {
+      found.contrast_magnitude = magnitude;
+      found.by_contrast = {i, j, conv};
+    }
+    if (capacity > 0) {
+      const int likelihood = 2 * magnitude;
+      int at = found.peak_count < capacity ? found.peak_count++ : capacity;  // insertion into the sorted list
+      while (at > 0 && found.peaks[at - 1].likelihood < likelihood) {
+        if (at < capacity) found.peaks[at] = found.peaks[at - 1];
+        --at;
+      }
+      if (at < capacity) found.peaks[at] = {likelihood, i, j, conv};
+    }
   });
-  return count;
+  return found;
 }
 
-/// Adds the weaker local maxima of the site's path as alternatives of `match` (up to
-/// hypotheses - 1), each refined as the strongest is. Only maxima of at least half the
-/// strongest likelihood compete (weaker ones are mostly noise and background texture, which
-/// the pose step would otherwise fit), and a maximum whose refined point lies within a pixel
-/// (along the normal) of one already kept is the same edge reached again.
-void add_alternatives(const vpMeResponse& response, const vpMe& me, int hypotheses, const SitePixel& strongest,
+/// The site's pixel: by the contrast test with a reference, else, or when no edge passes it (the
+/// edge's look changed: a new background behind a silhouette, a shadow), the strongest edge
+/// within the range, as the paper's tracker takes; a strict reference (borrowed from the
+/// primitive for a point not seen last time) leaves the site unmatched instead. False when the
+/// site is unmatched.
+bool choose_site(const PathSearch& found, const real& reference, bool strict, SitePixel& site) {
+  if (reference != real(0) && found.contrast_magnitude > 0) {
+    site = found.by_contrast;
+    return true;
+  }
+  if (reference != real(0) && strict) return false;
+  site = found.strongest;
+  return found.strongest_magnitude > 0;
+}
+
+/// Adds the weaker local maxima of the site's path (`found`, kept with capacity hypotheses + 1)
+/// as alternatives of `match` (up to hypotheses - 1), each refined as the strongest is. Only
+/// maxima of at least half the strongest likelihood compete (weaker ones are mostly noise and
+/// background texture, which the pose step would otherwise fit), and a maximum whose refined
+/// point lies within a pixel (along the normal) of one already kept is the same edge reached
+/// again.
+void add_alternatives(const vpMeResponse& response, const PathSearch& found, int hypotheses, const SitePixel& site,
                       EdgeMatch& match) {
   using std::fabs;
-  PathPeak peaks[kMaxHypotheses + 1];
-  const int count = path_peaks(response, me, match.point, peaks, hypotheses + 1);
-  for (int p = 0; p < count && match.alternative_count < hypotheses - 1; ++p) {
+  const PathPeak* peaks = found.peaks;
+  for (int p = 0; p < found.peak_count && match.alternative_count < hypotheses - 1; ++p) {
     if (2 * peaks[p].likelihood < peaks[0].likelihood) break;  // too weak to compete
-    if (peaks[p].i == strongest.i && peaks[p].j == strongest.j) continue;
-    const Vec2 q = refined_edge_point(response, peaks[p].i, peaks[p].j, match.point);
+    if (peaks[p].i == site.i && peaks[p].j == site.j) continue;
+    const Vec2 q = refined_edge_point(response, peaks[p].i, peaks[p].j, peaks[p].conv, match.point);
     bool known = fabs(dot(match.point.normal, q - match.found)) < real(1);
     for (int a = 0; a < match.alternative_count && !known; ++a)
       known = fabs(dot(match.point.normal, q - match.alternatives[a])) < real(1);
     if (!known) match.alternatives[match.alternative_count++] = q;
   }
-}
-
-/// The site's pixel by upstream's contrast test against `reference`, the oriented contrast
-/// (EdgeMatch::contrast) the same model point showed in the last trusted frame: of the local
-/// maxima of for_each_path_peak, those
-/// whose conv has the reference's sign and lies within (1 - mu1, 1 + mu2) times it, and of
-/// those the strongest. (Upstream takes the pixel whose contrast is nearest to the reference:
-/// where a face turns into view beside a silhouette, its far edge has the silhouette's old
-/// contrast, and on the generated frames that rule followed it off the cube.) False when none
-/// passes.
-bool track_by_contrast(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
-                       SitePixel& site) {
-  using std::fabs;
-  const real least = (real(1) - me.getMu1()) * fabs(reference), most = (real(1) + me.getMu2()) * fabs(reference);
-  const bool positive = reference > real(0);
-  int best = 0;
-  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
-    const int magnitude = conv < 0 ? -conv : conv;
-    if ((conv > 0) != positive || !(real(magnitude) > least && real(magnitude) < most) || magnitude <= best) return;
-    best = magnitude;
-    site = {i, j, conv};
-  });
-  return best != 0;
-}
-
-/// vpMeSite::track(I, &me, false) on the path of for_each_path_peak: the pixel of the largest
-/// likelihood above the threshold, the first of equals (which is a local maximum of the path).
-/// False when none passes the threshold.
-bool track_strongest(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, SitePixel& site) {
-  int best = 0;
-  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
-    const int magnitude = conv < 0 ? -conv : conv;
-    if (magnitude <= best) return;
-    best = magnitude;
-    site = {i, j, conv};
-  });
-  return best != 0;
-}
-
-/// The site's search: the contrast test with a reference (track_by_contrast), else, or when no
-/// edge passes it (the edge's look changed: a new background behind a silhouette, a shadow), the
-/// strongest edge within the range, as the paper's tracker takes; a strict reference (borrowed
-/// from the primitive for a point not seen last time) leaves the site unmatched instead. False
-/// when the site is unmatched.
-bool track_site(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
-                bool strict, SitePixel& site) {
-  if (reference != real(0) && track_by_contrast(response, me, point, reference, site)) return true;
-  if (reference != real(0) && strict) return false;
-  return track_strongest(response, me, point, site);
 }
 
 }  // namespace
@@ -294,15 +337,16 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     const ControlPoint& point = points[p];
     const NormalMask mask = normal_mask(me, point.normal);
     const vpMeResponse response(grey, me, mask.index, mask.sign);
+    const real reference = references ? (*references)[p] : real(0);
+    const PathSearch found = search_path(response, me, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);
     SitePixel site;
-    if (!track_site(response, me, point, references ? (*references)[p] : real(0), strict && (*strict)[p] != 0, site))
-      continue;
+    if (!choose_site(found, reference, strict && (*strict)[p] != 0, site)) continue;
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
     match.contrast = real(site.conv);
-    match.found = refined_edge_point(response, site.i, site.j, point);
-    if (hypotheses > 1) add_alternatives(response, me, hypotheses, site, match);
+    match.found = refined_edge_point(response, site.i, site.j, site.conv, point);
+    if (hypotheses > 1) add_alternatives(response, found, hypotheses, site, match);
   }
 }
 

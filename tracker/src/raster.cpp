@@ -113,17 +113,32 @@ LineWalk walk_line(const ScreenVertex& a, const ScreenVertex& b) {
 
 int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camera)[3],
                               ScreenVertex (&out)[kMaxClippedVertices]) {
+  auto near_distance = [](const Vec3& v) { return v.z - kNear; };
   Vec3 near_clipped[4];
-  const int n3 = clip_pass(in_camera, 3, near_clipped, [](const Vec3& v) { return v.z - kNear; });
-  if (n3 < 3) return 0;
+  const Vec3* in_front = in_camera;
+  int n3 = 3;
+  // A pass that keeps every vertex returns them as they were: skipped when none is cut.
+  if (!(near_distance(in_camera[0]) >= real(0) && near_distance(in_camera[1]) >= real(0) &&
+        near_distance(in_camera[2]) >= real(0))) {
+    n3 = clip_pass(in_camera, 3, near_clipped, near_distance);
+    if (n3 < 3) return 0;
+    in_front = near_clipped;
+  }
   Projected a[kMaxClippedVertices], b[kMaxClippedVertices];
-  for (int i = 0; i < n3; ++i) a[i] = project(camera, near_clipped[i]);
+  for (int i = 0; i < n3; ++i) a[i] = project(camera, in_front[i]);
   const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
   const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
-  int n = clip_pass(a, n3, b, [&](const Projected& v) { return v.x - lo_x; });
-  n = clip_pass(b, n, a, [&](const Projected& v) { return hi_x - v.x; });
-  n = clip_pass(a, n, b, [&](const Projected& v) { return v.y - lo_y; });
-  n = clip_pass(b, n, a, [&](const Projected& v) { return hi_y - v.y; });
+  bool on_screen = true;
+  for (int i = 0; i < n3 && on_screen; ++i)
+    on_screen = a[i].x - lo_x >= real(0) && hi_x - a[i].x >= real(0) && a[i].y - lo_y >= real(0) &&
+                hi_y - a[i].y >= real(0);
+  int n = n3;
+  if (!on_screen) {
+    n = clip_pass(a, n, b, [&](const Projected& v) { return v.x - lo_x; });
+    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_x - v.x; });
+    n = clip_pass(a, n, b, [&](const Projected& v) { return v.y - lo_y; });
+    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_y - v.y; });
+  }
   for (int i = 0; i < n; ++i) out[i] = to_screen(a[i]);
   return n >= 3 ? n : 0;
 }

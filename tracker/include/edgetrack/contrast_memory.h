@@ -16,7 +16,10 @@ namespace edgetrack {
 class ContrastMemory {
  public:
   /// Forgets every contrast (a new start): the next frame's sites take the strongest edge.
-  void clear() { remembered_.clear(); }
+  void clear() {
+    remembered_.clear();
+    groups_.clear();
+  }
   /// Replaces the memory with the contrast of each match that the pose step kept, that lies
   /// within `within` pixels (along its normal) of its projection at camera_from_model, the
   /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
@@ -44,7 +47,44 @@ class ContrastMemory {
     Vec3 point_in_model;
     real contrast{0};
   };
+  /// The remembered points of one primitive, remembered_[first, end), and the model axis along
+  /// which they spread most with whether their coordinate there only grows (+1), only falls (-1)
+  /// or neither (0): along a straight edge the sampling's order is monotonic, so the points
+  /// within reach of a point are a run found by bisection instead of a scan of them all.
+  struct Group {
+    int edge = 0;
+    size_t first = 0, end = 0;
+    int axis = 0;
+    int order = 0;
+  };
+  /// Groups the points of each primitive (remembered_ holds them contiguously).
+  void group();
+  /// Along a monotonic group's axis, the coordinates that can lie within `bound` (taxicab) of a
+  /// point: within twice the bound, so that a point left out fails the bound whatever the
+  /// rounding of the differences.
+  class Window {
+   public:
+    Window(const Group& g, const Vec3& point, const real& bound)
+        : below_(coordinate(point, g.axis) - real(2) * bound), above_(coordinate(point, g.axis) + real(2) * bound) {}
+    /// Whether a point of `g` lies before the window in g's order (never when g is not monotonic).
+    bool before(const Group& g, const Vec3& p) const {
+      return g.order > 0 ? !(coordinate(p, g.axis) > below_) : g.order < 0 && !(coordinate(p, g.axis) < above_);
+    }
+    /// Whether a point of `g` lies after the window in g's order (never when g is not monotonic).
+    bool after(const Group& g, const Vec3& p) const {
+      return g.order > 0 ? !(coordinate(p, g.axis) < above_) : g.order < 0 && !(coordinate(p, g.axis) > below_);
+    }
+    /// The first point of `g` not before the window: by bisection in a long monotonic group.
+    size_t first_candidate(const std::vector<Remembered>& remembered, const Group& g) const;
+
+   private:
+    real below_, above_;
+  };
+  /// Groups shorter than this are scanned from their start (bisection would cost more).
+  static constexpr size_t kBisectFrom = 32;
+  static const real& coordinate(const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
   std::vector<Remembered> remembered_;
+  std::vector<Group> groups_;
 };
 
 }  // namespace edgetrack

@@ -51,10 +51,11 @@ class EdgeIdBuffer {
   void surface_depth(std::vector<int32_t>& depth) const;
 
  private:
-  /// A line to draw this frame, and the owner whose side never hides it (a cylinder number + 1,
-  /// or -1 for none).
+  /// A line to draw this frame, the box of its pixels, and the owner whose side never hides it
+  /// (a cylinder number + 1, or -1 for none).
   struct Segment {
     LineWalk line;
+    PixelRect box;
     uint16_t code = 0;
     int exempt_owner = -1;
   };

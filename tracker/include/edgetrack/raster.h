@@ -74,6 +74,15 @@ struct LineWalk {
 
 LineWalk walk_line(const ScreenVertex& a, const ScreenVertex& b);
 
+/// The box of the pixels draw_line visits for `line` (off the screen too).
+inline PixelRect line_box(const LineWalk& line) {
+  const int m0 = line.first, m1 = line.first + (line.count - 1) * line.dir;
+  const int n0 = line.minor_at(0), n1 = line.minor_at(line.count - 1);  // monotonic along the line
+  const int major_lo = std::min(m0, m1), major_hi = std::max(m0, m1);
+  const int minor_lo = std::min(n0, n1), minor_hi = std::max(n0, n1);
+  return line.x_major ? PixelRect{major_lo, minor_lo, major_hi, minor_hi} : PixelRect{minor_lo, major_lo, minor_hi, major_hi};
+}
+
 namespace raster_detail {
 
 /// One edge function e + (x - x0) * step of a triangle, row by row (e grows by `row_step` per

@@ -41,6 +41,37 @@ class vpMeResponse {
   /// True when the mask centred at (i, j) would reach the border strip.
   bool outside(int i, int j) const { return i < first_ || i > last_i_ || j < first_ || j > last_j_; }
 
+  /// at(i[k], j[k]) into out[k] for k < n. With the vector path the mask's rows are loaded once
+  /// for the batch (a site's path, a refinement's lines) instead of once per pixel.
+  void at_each(const int* i, const int* j, int n, int* out) const {
+    // The limits in locals: stores to `out` could otherwise alias them and reload them per pixel.
+#if defined(__SSE2__)
+    if (padded_ && size_ == 5) {
+      const int first = first_, last_i = last_i_, last_j = last_j_, sign = sign_, half = half_;
+      const unsigned char* bitmap = image_.bitmap;
+      const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+      __m128i weights[5];
+      for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
+      for (int k = 0; k < n; ++k) {
+        const int row = i[k], column = j[k];
+        const bool out_of_image = row < first || row > last_i || column < first || column > last_j;
+        out[k] = out_of_image ? 0 : sign * padded_sum_5(weights, bitmap + (row - half) * stride + (column - half), stride);
+      }
+      return;
+    }
+#endif
+    const int first = first_, last_i = last_i_, last_j = last_j_, sign = sign_, half = half_;
+    const bool antisymmetric_5 = antisymmetric_ && size_ == 5;
+    for (int k = 0; k < n; ++k) {
+      const int row = i[k], column = j[k];
+      if (row < first || row > last_i || column < first || column > last_j) {
+        out[k] = 0;
+        continue;
+      }
+      out[k] = sign * (antisymmetric_5 ? antisymmetric_sum_5(row - half, column - half) : other_sum(row - half, column - half));
+    }
+  }
+
   /// sign * sum of weight * pixel over the window centred at (i, j); 0 when outside(i, j).
   int at(int i, int j) const {
     if (outside(i, j)) return 0;
@@ -111,16 +142,23 @@ class vpMeResponse {
   /// pixels right of the window, which the constructor checked lie in the row.
   template <int Size>
   int padded_sum(int i0, int j0) const {
-    static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
-    const unsigned char* window = image_[i0] + j0;
+    static_assert(Size == 5, "the padded rows of a 5 x 5 mask");
+    __m128i weights[5];
+    for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
     const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+    return padded_sum_5(weights, image_.bitmap + i0 * stride + j0, stride);
+  }
+
+  /// padded_sum<5> of the window whose top-left pixel is at `window`, the mask's rows already in
+  /// registers.
+  static int padded_sum_5(const __m128i (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
+    static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
     const __m128i zero = _mm_setzero_si128();
     __m128i total = _mm_setzero_si128();
-    for (int a = 0; a < Size; ++a) {
+    for (int a = 0; a < 5; ++a) {
       const __m128i pixels =
           _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(window + a * stride)), zero);
-      const __m128i weights = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
-      total = _mm_add_epi32(total, _mm_madd_epi16(pixels, weights));
+      total = _mm_add_epi32(total, _mm_madd_epi16(pixels, weights[a]));
     }
     total = _mm_add_epi32(total, _mm_shuffle_epi32(total, _MM_SHUFFLE(1, 0, 3, 2)));
     total = _mm_add_epi32(total, _mm_shuffle_epi32(total, _MM_SHUFFLE(2, 3, 0, 1)));
