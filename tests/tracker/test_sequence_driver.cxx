@@ -19,6 +19,7 @@ DECLARE(test_hypotheses);
 DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
+DECLARE(test_detection_refine_from_truth);
 DECLARE(test_auto_init_recovery);
 DECLARE(test_pose_uncertainty_measure);
 DECLARE(test_pose_unconstrained_leaving_view);
@@ -45,6 +46,7 @@ void register_tests() {
   REGISTER(test_frame_layouts);
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);
+  REGISTER(test_detection_refine_from_truth);
   REGISTER(test_auto_init_recovery);
   REGISTER(test_pose_uncertainty_measure);
   REGISTER(test_pose_unconstrained_leaving_view);

@@ -178,7 +178,10 @@ void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, 
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
   PoseParams pose_params = params_.pose;
-  pose_params.weigh_at_start = !guessing;
+  // A guessed start's own distances still weigh the first solve: Tukey's c grows with their
+  // median, so a start some pixels off keeps the matches near it while a strongest edge on the
+  // clutter beyond stands out. A prediction after a loss is no start near anything.
+  pose_params.weigh_at_start = !guessing || (start_is_guess_ && !started_ && !motion_.lost_last_frame());
   result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   end(Step::kPose);
   clock.lap(Step::kPose, result);

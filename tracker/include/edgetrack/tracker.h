@@ -127,8 +127,9 @@ class Tracker {
   /// behind the camera.
   /// A given pose (a .pos file, a click, a refined detection) is where the edges are: the first
   /// frame takes their contrast there and weighs the matches by their distance to it. A guess
-  /// (a detector's unrefined candidate) is trusted for neither, as the prediction after a lost
-  /// frame is not, until a frame is tracked from it.
+  /// (a detector's unrefined candidate) is not trusted for the contrasts, as the prediction
+  /// after a lost frame is not, until a frame is tracked from it; its distances still weigh the
+  /// first solve (PoseParams::weigh_at_start), which the prediction after a loss does not.
   enum class StartPose { kGiven, kGuess };
   bool reset(const Se3& camera_from_model, StartPose start = StartPose::kGiven);
   /// The visible control points and the matches of the last frame (with the pose step's

@@ -57,6 +57,7 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.screen_robust_rounds < 0 || p.screen_robust_rounds > 10 || p.refine_robust_rounds < 0 ||
       p.refine_robust_rounds > 10)
     return bad("the screening and refining robust rounds must be 0 to 10");
+  if (p.given_iterations < 0 || p.given_iterations > 50) return bad("given refining frames must be 0 to 50");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   if (!(p.min_support >= real(0)) || p.min_support > real(1)) return bad("the support must be 0 to 1");
   if (!(p.confident_scale_px >= real(0)) || p.confident_scale_px > p.max_residual_scale_px ||
@@ -131,9 +132,10 @@ void Detector::match(const FrameView& frame) {
   suppress_neighbours();
 }
 
-bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate) {
+bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate,
+                          Tracker::StartPose start) {
   int lost_in_a_row = 0;
-  if (!tracker.reset(candidate.camera_from_model, Tracker::StartPose::kGuess)) return false;
+  if (!tracker.reset(candidate.camera_from_model, start)) return false;
   for (int k = 0; k < iterations; ++k) {
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
@@ -178,9 +180,13 @@ void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candida
 }
 
 RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match) {
+  return refine(frame, match, pose_of_match(templates_, match, params_.spread));
+}
+
+RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
   RefinedCandidate near;
   near.match = match;
-  near.camera_from_model = pose_of_match(templates_, match, params_.spread);
+  near.camera_from_model = start;
   RefinedCandidate wide = near;
   // The tracking range first: a wider search from a pose that is nearly right lets the moving
   // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
@@ -191,13 +197,26 @@ RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& m
     near = wide;
   else if (!near_ran)
     return near;
+  // Started as a guess, each point took the strongest edge in its range, and the frames after
+  // followed the contrasts of those: beside a parallel edge or on textured clutter the run can
+  // settle a few pixels off. Started again as a given pose, the contrasts are taken where this
+  // pose puts the model's edges and the first solve is weighted at it, as a tracked frame is.
+  RefinedCandidate given = near;
+  if (params_.given_iterations > 0 && near.status != TrackingStatus::kLost &&
+      run_frames(tracker_, frame, params_.given_iterations, given, Tracker::StartPose::kGiven) &&
+      better(given, near, params_))
+    near = given;
+  settle(frame, near);
+  return near;
+}
+
+void Detector::settle(const FrameView& frame, RefinedCandidate& candidate) {
   // The narrow search settles the pose; the judgement stays the tracking range's, since a search
   // that narrow finds edges near any pose on a cluttered image.
-  if (!acceptable(near, params_)) return near;
-  RefinedCandidate settled = near;
+  if (!acceptable(candidate, params_)) return;
+  RefinedCandidate settled = candidate;
   if (run_frames(fine_, frame, params_.fine_iterations, settled) && settled.status == TrackingStatus::kTracked)
-    near.camera_from_model = settled.camera_from_model;
-  return near;
+    candidate.camera_from_model = settled.camera_from_model;
 }
 
 void Detector::suppress_neighbours() {
@@ -242,6 +261,16 @@ std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
   std::vector<TemplateMatch> kept;
   for (int k = 0; k < params_.refined_candidates; ++k) kept.push_back(screened[static_cast<size_t>(k)].match);
   return kept;
+}
+
+Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3& start) {
+  if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
+    return *refused;
+  match(frame);
+  points_searched_ = 0;
+  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+                                      PixelLayout::kGrey8);
+  return refine(grey, TemplateMatch{}, start);
 }
 
 Result<Detection> Detector::detect(const FrameView& frame) {

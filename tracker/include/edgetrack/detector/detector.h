@@ -30,8 +30,13 @@ struct DetectorParams {
   /// `refine_iterations` with the tracking settings' range; when that does not end in an
   /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
   /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
-  /// template's), then `refine_iterations` with the tracking range. The better of the two wins
-  /// and, when acceptable, settles with `fine_iterations` at `fine_range` (its pose taken, its
+  /// template's), then `refine_iterations` with the tracking range. The better of the two is
+  /// run again for `given_iterations` from its pose as a given one (Tracker::StartPose::kGiven:
+  /// the contrasts taken where it puts the model's edges, the first solve weighted at it), which
+  /// is kept when better: the guessed runs take each point's strongest edge in the range, and
+  /// beside a parallel edge or on textured clutter they settle a few pixels off even from the
+  /// true pose, where a given start stays. The pose kept,
+  /// when acceptable, settles with `fine_iterations` at `fine_range` (its pose taken, its
   /// status not: a search that narrow finds edges near any pose): near the optimum a search as
   /// wide as the tracking range's start (twice the range) reaches neighbouring edges (parallel
   /// inner edges, background lines) that pull a single frame's pose away from it.
@@ -40,6 +45,7 @@ struct DetectorParams {
   unsigned wide_range = 6;
   int fine_iterations = 8;
   unsigned fine_range = 2;
+  int given_iterations = 6;
   /// A run stops before its last frame once a tracked frame moved no control point farther
   /// along its normal than this (pixels): the pose has settled, and the next frame on the same
   /// image would start where this one ended.
@@ -55,8 +61,9 @@ struct DetectorParams {
   /// A run's next frame starts its first solve weighted at this one's pose, so the frames carry
   /// the re-weighting on; the screening only ranks, so one round does. A refining frame takes more
   /// than a tracked one: its start is a template's pose, degrees off, and each round is one LM
-  /// step whose weights follow the pose.
-  int refine_robust_rounds = 4;
+  /// step whose weights follow the pose; with more rounds a frame comes nearer its optimum, so
+  /// a run settles (settled_px) in fewer frames.
+  int refine_robust_rounds = 8;
   int screen_robust_rounds = 1;
   /// The screening and refining runs' pose solver (PoseParams::solver): the normal equations take
   /// fewer instructions per solve than MINPACK's QR, and a detection solves a few hundred times.
@@ -134,6 +141,10 @@ class Detector {
   /// Error when check_frame refuses it.
   Result<Detection> detect(const FrameView& frame);
 
+  /// The refinement alone (the runs a match's pose gets in detect) from `start` on one frame:
+  /// how far the refinement's own basin reaches (tests, benchmarks).
+  Result<RefinedCandidate> refine_from(const FrameView& frame, const Se3& start);
+
   /// The template matches of the last frame, best first.
   const std::vector<TemplateMatch>& matches() const { return matches_; }
   const TemplateSet& templates() const { return templates_; }
@@ -146,6 +157,9 @@ class Detector {
   void match(const FrameView& frame);
   /// The trackers run from one match's pose.
   RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
+  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const Se3& start);
+  /// `candidate` settled by the narrow range when acceptable.
+  void settle(const FrameView& frame, RefinedCandidate& candidate);
   /// matches_ without the ones near a better one's pose (DetectorParams::suppress_deg).
   void suppress_neighbours();
   /// The matches worth refining in full, best first (all of them when few).
@@ -154,7 +168,8 @@ class Detector {
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
   /// Up to `iterations` frames of `tracker` from candidate.camera_from_model (a guess), each from
   /// the last; false when lost twice in a row.
-  bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate);
+  bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate,
+                  Tracker::StartPose start = Tracker::StartPose::kGuess);
 
   TemplateSet templates_;
   DetectorParams params_;
