@@ -31,17 +31,24 @@ class StepClock {
 };
 
 /// The largest move of a control point along its normal from where the frame sampled it to
-/// where `pose` projects it, pixels: what the moving-edge search had to reach.
+/// where `pose` projects it, pixels: what the moving-edge search had to reach. The shift
+/// n . (project(P) - pixel) is |a X + b Y + c Z| / Z; the largest is found by comparing cross
+/// products, so that one division is left for the frame (an ARMv5TE has no divider).
 real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose) {
   using std::fabs;
-  real worst(0);
+  real worst_numerator(0), worst_depth(1);
   for (const ControlPoint& p : points) {
     const Vec3 in_camera = pose * p.point_in_model;
     if (in_camera.z <= real(0)) continue;
-    const real shift = fabs(dot(p.normal, camera.project(in_camera) - p.pixel));
-    if (shift > worst) worst = shift;
+    const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
+    const real numerator =
+        fabs(p.normal.x * camera.px * in_camera.x + p.normal.y * camera.py * in_camera.y + offset * in_camera.z);
+    if (numerator * worst_depth > worst_numerator * in_camera.z) {
+      worst_numerator = numerator;
+      worst_depth = in_camera.z;
+    }
   }
-  return worst;
+  return worst_numerator / worst_depth;
 }
 
 /// The step times and the converted pixels of `from` carried into `to`, measured after it.

@@ -315,9 +315,20 @@ template <int F>
 constexpr fixed64<F> euclidean_norm(int n, const fixed64<F>* x) {
   constexpr std::uint64_t kCap = std::uint64_t{1} << 62;  // a sum at or past 2^126 saturates the norm
   std::uint64_t low = 0, high = 0;                        // the sum of squares, high * 2^64 + low
+  // The int32 elements' squares (below 2^62) summed by their low and high 32-bit words apart:
+  // two 32-bit additions with carry each on ARMv5TE, no carry test; folded in at the end.
+  std::uint64_t low_words = 0, high_words = 0;
   for (int i = 0; i < n; ++i) {
-    const std::uint64_t m = detail::magnitude(x[i].raw());
-    if (__builtin_expect((m >> 32) == 0, 1)) {
+    const std::int64_t v = x[i].raw();
+    const auto v32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(v));
+    if (__builtin_expect(v == v32, 1)) {
+      const auto square = static_cast<std::uint64_t>(std::int64_t{v32} * v32);
+      low_words += static_cast<std::uint32_t>(square);
+      high_words += square >> 32;
+      continue;
+    }
+    const std::uint64_t m = detail::magnitude(v);
+    if ((m >> 32) == 0) {
       const std::uint64_t square = std::uint64_t{static_cast<std::uint32_t>(m)} * static_cast<std::uint32_t>(m);
       low += square;
       high += low < square ? 1u : 0u;
@@ -325,9 +336,13 @@ constexpr fixed64<F> euclidean_norm(int n, const fixed64<F>* x) {
       const detail::Uint128 square = detail::multiply(m, m);
       low += square.lo;
       high += square.hi + (low < square.lo ? 1u : 0u);
-      if (high > kCap) high = kCap;  // the common branch adds at most n more: no wrap-around
+      if (high > kCap) high = kCap;  // the other branches add at most n more: no wrap-around
     }
   }
+  const detail::Uint128 words = detail::Uint128{high_words >> 32, high_words << 32} + detail::Uint128{0, low_words};
+  const detail::Uint128 sum = detail::Uint128{high, low} + words;
+  high = sum.hi;
+  low = sum.lo;
   if (high >= kCap) {
     detail::count_saturation();
     return std::numeric_limits<fixed64<F>>::max();
@@ -404,8 +419,19 @@ template <int F>
 constexpr void add_multiple(int n, fixed64<F> s, const fixed64<F>* x, fixed64<F>* y) {
   const std::int64_t sr = s.raw();
   const auto s32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(sr));
-  if (sr == s32) {  // operator*'s own fast paths
-    for (int i = 0; i < n; ++i) y[i] += s * x[i];
+  if (sr == s32) {
+    // operator*'s int32 path, written out so that the product stays one SMULL with s32 held
+    // in a register (inlined, GCC otherwise multiplies the sign-extended 64-bit values).
+    for (int i = 0; i < n; ++i) {
+      const std::int64_t xr = x[i].raw();
+      const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(xr));
+      if (__builtin_expect(xr != x32, 0)) {
+        y[i] += s * x[i];
+        continue;
+      }
+      const std::int64_t product = std::int64_t{x32} * s32;
+      y[i] += fixed64<F>::from_raw((product + (std::int64_t{1} << (F - 1)) - (product < 0 ? 1 : 0)) >> F);
+    }
     return;
   }
   const std::uint64_t ms = detail::magnitude(sr);
