@@ -33,11 +33,9 @@ Mat33 so3_left_jacobian(const Vec3& w) {
 class PointToLineProblem {
  public:
   /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
-  /// roots of the least-squares weights. With `start_from_last`, `start` is the pose at which the
-  /// last problem over the same matches evaluated them last (its solution): its turned points
-  /// R(w) R0 p are this start's R0 p, which saves the rotation of every point per robust round.
+  /// roots of the least-squares weights.
   PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
-                     const PinholeCamera& camera, const Se3& start, bool start_from_last, PoseWorkspace& w)
+                     const PinholeCamera& camera, const Se3& start, PoseWorkspace& w)
       : start_(start),
         start_translation_mm_(to_millimetres(start.translation())),
         count_(matches.size()),
@@ -45,7 +43,6 @@ class PointToLineProblem {
         weights_(weights.data()),
         w_(w) {
     for (int k = 0; k < 3; ++k) {
-      if (start_from_last) w.rotated[k].swap(w.turned[k]);
       w.rotated[k].resize(count_);
       w.unweighted[k].resize(count_);
       w.turned[k].resize(count_);
@@ -56,12 +53,13 @@ class PointToLineProblem {
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     for (size_t i = 0; i < count_; ++i) {
       const EdgeMatch& m = matches[i];
-      if (!start_from_last) set(w.rotated, i, start.rotation() * to_millimetres(m.point.point_in_model));
+      const Vec3 rotated = start.rotation() * to_millimetres(m.point.point_in_model);
       // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z; the residual is delta times the
       // match's weight.
       const Vec2& n = m.point.normal;
       const Vec3 unweighted{n.x * camera.px, n.y * camera.py,
                             n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
+      set(w.rotated, i, rotated);
       set(w.unweighted, i, unweighted);
       w.gradient[0][i] = weighted_ ? weights[i] * unweighted.x : unweighted.x;
       w.gradient[1][i] = weighted_ ? weights[i] * unweighted.y : unweighted.y;
@@ -227,14 +225,12 @@ struct SolveResult {
 /// PoseSolver::kNormalEquations normal_equations_lm) over `matches` weighted by
 /// workspace.weights (empty: all 1) from `start`, stopped after `max_evaluations` residual
 /// evaluations. When solved, workspace.distances become the unweighted signed point-to-line
-/// distances at the new pose; otherwise they are left as they were. `start_from_last`: `start`
-/// is the last solve's pose over the same matches, and that solve was solved.
+/// distances at the new pose; otherwise they are left as they were.
 SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
-                       bool start_from_last, const PoseParams& params, int max_evaluations,
-                       PoseWorkspace& workspace) {
+                       const PoseParams& params, int max_evaluations, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
-  PointToLineProblem problem(matches, workspace.weights, camera, start, start_from_last, workspace);
+  PointToLineProblem problem(matches, workspace.weights, camera, start, workspace);
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -356,7 +352,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  const SolveResult first = solve_once(matches, camera, start, false, params, params.max_evaluations, workspace);
+  const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, workspace);
   add_counts(first, solution);
   if (!first.solved) return solution;
   solution.camera_from_model = first.pose;
@@ -372,7 +368,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     const SolveResult robust_solve =
-        solve_once(matches, camera, solution.camera_from_model, true, params, params.robust_evaluations, workspace);
+        solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     solution.camera_from_model = robust_solve.pose;
