@@ -178,6 +178,16 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
   // each pixel read (`after`) settles whether the current one is a maximum.
   int before = -1, current = -1, current_conv = 0, i = 0, j = 0;
   const int length = 2 * range + 1;
+  // The path's k-th pixel (next_i, next_j) read, with its response conv.
+  auto read = [&](int k, int conv, int next_i, int next_j) {
+    const int after = conv < 0 ? -2 * conv : 2 * conv;
+    if (k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
+    before = k > 0 ? current : -1;
+    current = after;
+    current_conv = conv;
+    i = next_i;
+    j = next_j;
+  };
   if constexpr (vpMe::kPaddedRow != 0) {
     // Vector masks: the responses a chunk of the path at a time (vpMeResponse::at_each loads the
     // mask once per chunk). Without them, one at a time: the arrays would cost more than they save.
@@ -187,27 +197,13 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
       const int n = length - start < kChunk ? length - start : kChunk;
       for (int k = 0; k < n; ++k) walk.next(path_i[k], path_j[k]);
       response.at_each(path_i, path_j, n, conv);
-      for (int k = 0; k < n; ++k) {
-        const int after = conv[k] < 0 ? -2 * conv[k] : 2 * conv[k];
-        if (start + k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
-        before = start + k > 0 ? current : -1;
-        current = after;
-        current_conv = conv[k];
-        i = path_i[k];
-        j = path_j[k];
-      }
+      for (int k = 0; k < n; ++k) read(start + k, conv[k], path_i[k], path_j[k]);
     }
   } else {
     for (int k = 0; k < length; ++k) {
       int next_i = 0, next_j = 0;
       walk.next(next_i, next_j);
-      const int conv = response.at(next_i, next_j), after = conv < 0 ? -2 * conv : 2 * conv;
-      if (k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
-      before = k > 0 ? current : -1;
-      current = after;
-      current_conv = conv;
-      i = next_i;
-      j = next_j;
+      read(k, response.at(next_i, next_j), next_i, next_j);
     }
   }
   if (current > before && current > threshold) visit(current_conv, i, j);  // the far end: no pixel after
