@@ -105,7 +105,7 @@ void test_spreading() {
   TEST_EQUAL("a bit spreads over the 4 x 4 pixels up and left of it", with_3, 16);
   TEST_EQUAL("exactly those", inside, 16);
   TEST_EQUAL("two bits OR together where both reach", out.bits[4 * 12 + 5], (1u << 3) | (1u << 5));
-  TEST_EQUAL("a pixel right of the bit does not get it", out.bits[5 * 12 + 7] & (1u << 3), 0);
+  TEST_EQUAL("a pixel right of the bit does not get it", out.bits[5 * 12 + 7] & (1u << 3), 0u);
 }
 
 void test_response_maps() {
