@@ -12,37 +12,17 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "edgetrack/grey_conversion.h"
-#include "edgetrack/model_io.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/scene_extras.h"
-#include "edgetrack/tracker.h"
-#include "edgetrack/visp_config.h"
-#include "image_io.h"
+#include "generated_sequence.h"
 
 using namespace edgetrack;
 
 namespace {
-
-std::vector<Se3> read_truth(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // the header
-  std::vector<Se3> poses;
-  while (std::getline(in, line)) {
-    for (char& c : line) c = c == ',' ? ' ' : c;
-    std::istringstream fields(line);
-    double frame, t[3], w[3];
-    if (!(fields >> frame >> t[0] >> t[1] >> t[2] >> w[0] >> w[1] >> w[2])) break;
-    poses.emplace_back(rotation_exp(Vec3{real(w[0]), real(w[1]), real(w[2])}), Vec3{real(t[0]), real(t[1]), real(t[2])});
-  }
-  return poses;
-}
 
 /// Offsets of one way of matching, pixels.
 struct Tally {
@@ -95,19 +75,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s MODEL.cao SEQUENCE_DIR [CLUTTER_MM]\n", argv[0]);
     return 2;
   }
-  const std::string sequence = argv[2];
-  const Result<EdgeModel> model = load_model(argv[1]);
-  TrackerConfig config;
-  const auto notes = apply_visp_config(sequence + "/camera.xml", config);
-  const std::vector<Se3> truth = read_truth(sequence + "/truth.csv");
-  if (!model.ok() || !notes.ok() || truth.empty()) {
-    std::fprintf(stderr, "%s: cannot read the model, camera.xml or truth.csv\n", argv[0]);
-    return 1;
-  }
+  GeneratedSequence sequence;
+  if (!sequence.load(argv[0], argv[1], argv[2])) return 1;
+  const TrackerConfig& config = sequence.config;
+  const std::vector<Se3>& truth = sequence.truth;
+  const EdgeModel& model = sequence.model;
   Vec3 centre;
-  for (const Vec3& v : model.value().vertices) centre = centre + v;
-  centre = (real(1) / real(static_cast<int>(model.value().vertices.size()))) * centre;
-  Result<Tracker> tracker = Tracker::create(model.value(), config.camera, truth[0], config.params);
+  for (const Vec3& v : model.vertices) centre = centre + v;
+  centre = (real(1) / real(static_cast<int>(model.vertices.size()))) * centre;
+  Result<Tracker> tracker = Tracker::create(model, config.camera, truth[0], config.params);
   const vpMe& me = config.params.me;
   vpImage<unsigned char> grey(static_cast<unsigned>(config.camera.height), static_cast<unsigned>(config.camera.width));
   std::vector<real> references;
@@ -115,13 +91,11 @@ int main(int argc, char** argv) {
   Tally strongest[2], nearest[2];  // [0]: without the contrast test, [1]: with it
   const double clutter_mm = argc == 4 ? std::atof(argv[3]) : 0;
   const std::vector<Segment3> clutter =
-      clutter_mm > 0 ? parallel_clutter(model.value(), real(clutter_mm / 1000)) : std::vector<Segment3>{};
+      clutter_mm > 0 ? parallel_clutter(model, real(clutter_mm / 1000)) : std::vector<Segment3>{};
   const double mask_reach = static_cast<int>(me.getMaskSize()) / 2 + 1;
   LineTally lines;
   for (size_t k = 0; k < truth.size(); ++k) {
-    char name[64];
-    std::snprintf(name, sizeof name, "/frames/frame%04zu.ppm", k);
-    const auto pixels = edgetrack_app::read_netpbm_pixels(sequence + name);
+    const auto pixels = sequence.frame(k);
     if (!pixels.ok()) break;
     const FrameView frame = pixels.value().view();
     // The tracker samples its visible control points at the pose it is reset to.
@@ -152,7 +126,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("%s, %zu frames at the true pose, range %d, mask %d px\n", sequence.c_str(), truth.size(),
+  std::printf("%s, %zu frames at the true pose, range %d, mask %d px\n", sequence.directory.c_str(), truth.size(),
               static_cast<int>(me.getRange()), static_cast<int>(me.getMaskSize()));
   strongest[0].print("strongest edge, no contrast test");
   strongest[1].print("strongest passing the contrast test (the single hypothesis)");
