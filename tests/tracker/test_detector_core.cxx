@@ -396,6 +396,10 @@ void test_detector_params() {
        refused([](DetectorParams& p) { p.suppress_radii = real(-1); }), true);
   TEST("a negative settled move is refused",
        refused([](DetectorParams& p) { p.settled_px = real(-1); }), true);
+  TEST("a restart tilt over 90 degrees is refused",
+       refused([](DetectorParams& p) { p.restart_tilt_deg = real(100); }), true);
+  TEST("no restarts (a tilt of 0) are accepted",
+       refused([](DetectorParams& p) { p.restart_tilt_deg = real(0); }), false);
 }
 
 }  // namespace

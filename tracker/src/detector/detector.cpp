@@ -9,6 +9,7 @@
 
 #include "edgetrack/detector/template_io.h"
 #include "edgetrack/grey_conversion.h"
+#include "edgetrack/motion_model.h"
 
 namespace edgetrack {
 
@@ -50,6 +51,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
     return bad("the suppressed angle must be 0 to 180 degrees");
   if (!(p.suppress_radii >= real(0)) || p.suppress_radii > real(10))
     return bad("the suppressed distance must be 0 to 10 radii");
+  if (!(p.restart_tilt_deg >= real(0)) || p.restart_tilt_deg > real(90))
+    return bad("the restart tilt must be 0 to 90 degrees");
   if (!(p.settled_px >= real(0)) || p.settled_px > real(10)) return bad("the settled move must be 0 to 10 px");
   if (!(p.refine_sample_step >= real(2)) || p.refine_sample_step > real(50) || !(p.screen_sample_step >= real(2)) ||
       p.screen_sample_step > real(50))
@@ -98,8 +101,11 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   if (!wide.ok()) return wide.error();
   Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
   if (!fine.ok()) return fine.error();
-  return Detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
-                  std::move(tracker).value(), std::move(fine).value());
+  Detector detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
+                    std::move(tracker).value(), std::move(fine).value());
+  detector.model_ = model;
+  detector.tracking_range_ = tracking.me.getRange();
+  return detector;
 }
 
 Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
@@ -179,11 +185,22 @@ void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candida
   candidate.support = counted > 0 ? real(supported) / real(counted) : real(0);
 }
 
-RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match) {
-  return refine(frame, match, pose_of_match(templates_, match, params_.spread));
+RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match,
+                                  const std::vector<RefinedCandidate>& earlier) {
+  return refine(frame, match, pose_of_match(templates_, match, params_.spread), &earlier);
 }
 
-RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
+bool Detector::same_as_earlier(const RefinedCandidate& candidate, const std::vector<RefinedCandidate>& earlier) const {
+  for (const RefinedCandidate& c : earlier)
+    if (c.status != TrackingStatus::kLost &&
+        largest_image_shift(model_, templates_.camera, c.camera_from_model, candidate.camera_from_model) <=
+            real(static_cast<int>(tracking_range_)))
+      return true;
+  return false;
+}
+
+RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match, const Se3& start,
+                                  const std::vector<RefinedCandidate>* earlier) {
   RefinedCandidate near;
   near.match = match;
   near.camera_from_model = start;
@@ -191,6 +208,8 @@ RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& m
   // The tracking range first: a wider search from a pose that is nearly right lets the moving
   // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
   const bool near_ran = run_frames(tracker_, frame, params_.refine_iterations, near);
+  // Settled where an earlier candidate did: the rest of the schedule would end as that one's.
+  if (near_ran && earlier && !acceptable(near, params_) && same_as_earlier(near, *earlier)) return near;
   if (!acceptable(near, params_) && params_.wide_iterations > 0 &&
       run_frames(wide_, frame, params_.wide_iterations, wide) &&
       run_frames(tracker_, frame, params_.refine_iterations, wide) && better(wide, near, params_))
@@ -208,6 +227,16 @@ RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& m
     near = given;
   settle(frame, near);
   return near;
+}
+
+RefinedCandidate Detector::refine_tilted(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
+  // A tilted start is a refined pose turned by a few degrees, no template's: the tracking range
+  // reaches its edges, and neither the wider search nor a start as a given pose is run.
+  RefinedCandidate candidate;
+  candidate.match = match;
+  candidate.camera_from_model = start;
+  if (run_frames(tracker_, frame, params_.refine_iterations, candidate)) settle(frame, candidate);
+  return candidate;
 }
 
 void Detector::settle(const FrameView& frame, RefinedCandidate& candidate) {
@@ -263,6 +292,28 @@ std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
   return kept;
 }
 
+void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
+  if (!(params_.restart_tilt_deg > real(0))) return;
+  const RefinedCandidate* from = nullptr;
+  for (const RefinedCandidate& c : detection.refined) {
+    if (acceptable(c, params_)) return;
+    if (c.status != TrackingStatus::kLost && c.support >= params_.min_support && (!from || c.kept > from->kept)) from = &c;
+  }
+  if (!from) return;
+  const RefinedCandidate base = *from;  // detection.refined grows below
+  const Vec3& centre_in_model = templates_.extent.centre;
+  const Vec3 centre = base.camera_from_model * centre_in_model;
+  const real t = params_.restart_tilt_deg * real(0.017453292519943295), o(0);
+  const Vec3 tilts[4] = {Vec3{t, o, o}, Vec3{-t, o, o}, Vec3{o, t, o}, Vec3{o, -t, o}};
+  for (const Vec3& tilt : tilts) {
+    // Turned about the camera's axis through the model's centre: the centre stays where it was.
+    const Mat33 rotation = rotation_exp(tilt) * base.camera_from_model.rotation();
+    detection.refined.push_back(refine_tilted(frame, base.match, Se3(rotation, centre - rotation * centre_in_model)));
+    const RefinedCandidate& last = detection.refined.back();
+    if (acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) return;
+  }
+}
+
 Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3& start) {
   if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
     return *refused;
@@ -283,10 +334,11 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   for (const TemplateMatch& m : screen(grey)) {
-    detection.refined.push_back(refine(grey, m));
+    detection.refined.push_back(refine(grey, m, detection.refined));
     const RefinedCandidate& last = detection.refined.back();
     if (acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) break;
   }
+  restart_tilted(grey, detection);
   detection.points_searched = points_searched_;
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)

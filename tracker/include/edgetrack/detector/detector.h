@@ -84,6 +84,15 @@ struct DetectorParams {
   /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
   real suppress_deg = real(16);
   real suppress_radii = real(0.25);
+  /// When no refined candidate is acceptable, the one keeping the most control points (not lost,
+  /// its support at least min_support) is refined again from its pose tilted by this many degrees
+  /// about the camera's x and y axes through the model's centre (4 starts; each only the
+  /// tracking-range run and the settling), until one is confidently right. A still image's
+  /// refinement can settle in a neighbouring minimum a few degrees off (a parallel edge a face's
+  /// thickness away taken for the model's, a tilt the outline hardly shows). A match is up to half a step of the sphere's directions off its
+  /// view (the step: 16 degrees at 2 subdivisions), and the refinement reaches that far, so
+  /// half a step to one side is within its reach of the truth's side. 0: no restarts.
+  real restart_tilt_deg = real(8);
   /// Found: the last refining frame is tracked and the robust solve kept at least this share of
   /// the visible control points. A wrong pose over clutter keeps under half (tracking_status.h's
   /// few-matched rule); a right one most.
@@ -155,11 +164,22 @@ class Detector {
            Tracker fine);
   /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
   void match(const FrameView& frame);
-  /// The trackers run from one match's pose.
-  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match);
-  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const Se3& start);
+  /// The trackers run from one match's pose; a run whose first frames settle where one of
+  /// `earlier` did (same_as_earlier) and is not acceptable stops there.
+  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const std::vector<RefinedCandidate>& earlier);
+  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const Se3& start,
+                          const std::vector<RefinedCandidate>* earlier = nullptr);
+  /// The tracking-range run alone, then settle: a restart's (restart_tilted).
+  RefinedCandidate refine_tilted(const FrameView& frame, const TemplateMatch& match, const Se3& start);
+  /// True when `candidate`'s pose puts no vertex of the model farther than the tracking range
+  /// from where a not-lost one of `earlier` puts it: the same edges are in reach of both, so the
+  /// rest of the refinement would take this one where it took that one.
+  bool same_as_earlier(const RefinedCandidate& candidate, const std::vector<RefinedCandidate>& earlier) const;
   /// `candidate` settled by the narrow range when acceptable.
   void settle(const FrameView& frame, RefinedCandidate& candidate);
+  /// More refinements of detection's best unacceptable candidate, from tilted starts, when none
+  /// refined was acceptable (DetectorParams::restart_tilt_deg).
+  void restart_tilted(const FrameView& frame, Detection& detection);
   /// matches_ without the ones near a better one's pose (DetectorParams::suppress_deg).
   void suppress_neighbours();
   /// The matches worth refining in full, best first (all of them when few).
@@ -177,6 +197,8 @@ class Detector {
   Tracker wide_;     ///< refining: the range widened
   Tracker tracker_;  ///< refining: the tracking range
   Tracker fine_;     ///< refining: the range narrowed
+  EdgeModel model_;             ///< for same_as_earlier's image shift
+  unsigned tracking_range_ = 0;  ///< the tracking settings' moving-edges range, px
   vpImage<unsigned char> grey_;
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;
