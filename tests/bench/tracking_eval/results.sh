@@ -13,9 +13,10 @@ source "$here/../lib.sh"
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracking_eval.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-bench=$(bench_tree host double edgetrack tracking_eval_me_offsets bench_status_cases)
+bench=$(bench_tree host double edgetrack tracking_eval_me_offsets tracking_eval_clutter_dynamics bench_status_cases)
 edgetrack=$bench/app/edgetrack
 offsets=$bench/tests/bench/tracking_eval/tracking_eval_me_offsets
+dynamics=$bench/tests/bench/tracking_eval/tracking_eval_clutter_dynamics
 status_cases=$bench/tests/bench/tracking_eval/bench_status_cases
 edgetrack_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
 if ! "$edgetrack" compare --help >/dev/null 2>&1; then
@@ -243,6 +244,28 @@ for model in cube60 wood_toy; do
     for seed in $clutter_seeds; do
       clutter_seed_row "$(model_name "$model")" "$mm" "$seed" "$(clutter_seed_sequence "$model" "$mm" "$seed")" "$models/$model.cao"
     done
+  done
+done
+echo
+echo "Where the clutter error comes from (\`tracking_eval_clutter_dynamics\`, docs/ME.md): the mean over the"
+echo "frames of the camera position error (mm) of the tracker run through the sequence (\"tracked\"), of each"
+echo "frame solved alone from its own true pose with the contrasts taken there (\"alone\": what the moving"
+echo "edges leave at that frame), and of each frame solved after the previous one was solved from its true"
+echo "pose (\"one step\"); double, the defaults. Seeds 1 / 2 / 3."
+echo
+echo "| sequence | clutter mm | tracked mm | alone mm | one step mm |"
+echo "|---|---:|---|---|---|"
+for model in cube60 wood_toy; do
+  for mm in 0 $clutter_offsets; do
+    seeds=$clutter_seeds; [ "$mm" = 0 ] && seeds=1
+    tracked=() alone=() step=()
+    for seed in $seeds; do
+      if [ "$mm" = 0 ]; then name=$(clutter_sequence "$model" 0); else name=$(clutter_seed_sequence "$model" "$mm" "$seed"); fi
+      read -r _ t a o < <("$dynamics" "$models/$model.cao" "$work/$name" | grep '^mean ')
+      tracked+=("$t") alone+=("$a") step+=("$o")
+    done
+    join() { local IFS=/; echo "$*" | sed 's|/| / |g'; }
+    printf '| %s | %s | %s | %s | %s |\n' "$(model_name "$model")" "$mm" "$(join "${tracked[@]}")" "$(join "${alone[@]}")" "$(join "${step[@]}")"
   done
 done
 echo
