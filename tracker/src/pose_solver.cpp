@@ -323,6 +323,18 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
   return outliers;
 }
 
+/// The largest |after - before| over the matches: how far a round moved a match along its normal
+/// (the distances before are to the hypotheses the round chose, as those after are).
+real largest_move(const std::vector<real>& before, const std::vector<real>& after) {
+  using std::fabs;
+  real largest(0);
+  for (size_t i = 0; i < after.size(); ++i) {
+    const real move = fabs(after[i] - before[i]);
+    if (move > largest) largest = move;
+  }
+  return largest;
+}
+
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
@@ -367,11 +379,14 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     choose_nearest_hypotheses(matches, distances);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
+    const bool watch = params.rounds_settled_px > real(0);
+    if (watch) workspace.before_round = distances;
     const SolveResult robust_solve =
         solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     solution.camera_from_model = robust_solve.pose;
+    if (watch && largest_move(workspace.before_round, distances) <= params.rounds_settled_px) break;
   }
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
