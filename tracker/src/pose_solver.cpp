@@ -34,8 +34,9 @@ class PointToLineProblem {
  public:
   /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
   /// roots of the least-squares weights.
-  PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
-                     const PinholeCamera& camera, const Se3& start, PoseWorkspace& w)
+  /// The workspace's model_mm and unweighted hold `matches`' terms (prepare_matches).
+  PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const Se3& start,
+                     PoseWorkspace& w)
       : start_(start),
         start_translation_mm_(to_millimetres(start.translation())),
         count_(matches.size()),
@@ -44,25 +45,41 @@ class PointToLineProblem {
         w_(w) {
     for (int k = 0; k < 3; ++k) {
       w.rotated[k].resize(count_);
-      w.unweighted[k].resize(count_);
       w.turned[k].resize(count_);
       w.moved[k].resize(count_);
     }
     for (int k = 0; k < 2; ++k) w.gradient[k].resize(count_);
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
+    // The points in millimetres and the distances' coefficients are the solve_pose call's
+    // (prepare_matches): only the rotation and the weights differ between its solves.
+    const Mat33& r = start.rotation();
     for (size_t i = 0; i < count_; ++i) {
+      set(w.rotated, i, r * Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]});
+      w.gradient[0][i] = weighted_ ? weights[i] * w.unweighted[0][i] : w.unweighted[0][i];
+      w.gradient[1][i] = weighted_ ? weights[i] * w.unweighted[1][i] : w.unweighted[1][i];
+    }
+  }
+
+  /// Fills the workspace's per-match terms that stay the same over one solve_pose call's solves:
+  /// each point in millimetres and, for the hypothesis each match uses, the coefficients of
+  /// delta = n . (project(p) - q) = (a X + b Y + c Z) / Z. `all` false refreshes only the
+  /// coefficients of matches with alternatives (their choice may have changed).
+  static void prepare_matches(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, bool all,
+                              PoseWorkspace& w) {
+    const size_t count = matches.size();
+    if (all)
+      for (int k = 0; k < 3; ++k) {
+        w.model_mm[k].resize(count);
+        w.unweighted[k].resize(count);
+      }
+    for (size_t i = 0; i < count; ++i) {
       const EdgeMatch& m = matches[i];
-      const Vec3 rotated = start.rotation() * to_millimetres(m.point.point_in_model);
-      // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z; the residual is delta times the
-      // match's weight.
+      if (!all && m.alternative_count == 0) continue;
+      if (all) set(w.model_mm, i, to_millimetres(m.point.point_in_model));
       const Vec2& n = m.point.normal;
-      const Vec3 unweighted{n.x * camera.px, n.y * camera.py,
-                            n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
-      set(w.rotated, i, rotated);
-      set(w.unweighted, i, unweighted);
-      w.gradient[0][i] = weighted_ ? weights[i] * unweighted.x : unweighted.x;
-      w.gradient[1][i] = weighted_ ? weights[i] * unweighted.y : unweighted.y;
+      set(w.unweighted, i,
+          Vec3{n.x * camera.px, n.y * camera.py, n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)});
     }
   }
 
@@ -225,12 +242,13 @@ struct SolveResult {
 /// PoseSolver::kNormalEquations normal_equations_lm) over `matches` weighted by
 /// workspace.weights (empty: all 1) from `start`, stopped after `max_evaluations` residual
 /// evaluations. When solved, workspace.distances become the unweighted signed point-to-line
-/// distances at the new pose; otherwise they are left as they were.
-SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+/// distances at the new pose; otherwise they are left as they were. The workspace holds the
+/// matches' terms (PointToLineProblem::prepare_matches).
+SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start,
                        const PoseParams& params, int max_evaluations, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
-  PointToLineProblem problem(matches, workspace.weights, camera, start, workspace);
+  PointToLineProblem problem(matches, workspace.weights, start, workspace);
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -351,6 +369,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   if (matches.size() < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
+  PointToLineProblem::prepare_matches(matches, camera, true, workspace);
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real>& distances = workspace.distances;
   std::vector<real>& weights = workspace.weights;
@@ -364,7 +383,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, workspace);
+  const SolveResult first = solve_once(matches, start, params, params.max_evaluations, workspace);
   add_counts(first, solution);
   if (!first.solved) return solution;
   solution.camera_from_model = first.pose;
@@ -377,12 +396,13 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
+    PointToLineProblem::prepare_matches(matches, camera, false, workspace);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     const bool watch = params.rounds_settled_px > real(0);
     if (watch) workspace.before_round = distances;
     const SolveResult robust_solve =
-        solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, workspace);
+        solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     solution.camera_from_model = robust_solve.pose;

@@ -86,6 +86,7 @@ struct PoseSolution {
 /// it holds between calls means nothing. Per match, the arrays are structures of arrays (one
 /// array per coordinate), the layout of MINPACK's column-major Jacobian.
 struct PoseWorkspace {
+  std::vector<real> model_mm[3];      ///< point_in_model, millimetres
   std::vector<real> rotated[3];       ///< R0 * point_in_model, millimetres
   std::vector<real> unweighted[3];    ///< (a, b, c) of each distance (a X + b Y + c Z) / Z
   std::vector<real> gradient[2];      ///< a and b times the match's weight, for the Jacobian
