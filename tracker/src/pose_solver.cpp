@@ -89,7 +89,7 @@ class PointToLineProblem {
     if (iflag == 1) {
       ++problem->evaluations_;
       if (!problem->f(x, fx)) return -1;
-      if (problem->evaluations_ == 1) problem->start_rms_ = rms(fx, problem->count_);
+      if (problem->evaluations_ == 1 && problem->measure_start_) problem->start_rms_ = rms(fx, problem->count_);
     } else if (iflag == 2) {
       if (!problem->gradf(x, fjac, static_cast<size_t>(ldfjac))) return -1;
     }
@@ -109,6 +109,9 @@ class PointToLineProblem {
   }
 
   int evaluations() const { return evaluations_; }
+  /// The RMS at the start is measured only when asked (measure_start): the solution reports
+  /// its first solve's alone.
+  void measure_start() { measure_start_ = true; }
   real start_rms() const { return start_rms_; }
 
   /// What vnl_vector::rms computes: sqrt(sum of squares / n).
@@ -213,6 +216,7 @@ class PointToLineProblem {
   bool evaluated_ = false;
   int evaluations_ = 0;
   real start_rms_{0};
+  bool measure_start_ = false;
 };
 
 /// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
@@ -233,8 +237,7 @@ struct SolveResult {
   Se3 pose;             ///< when solved
   int evaluations = 0;
   int iterations = 0;  ///< Jacobian evaluations
-  real start_rms{0};
-  real end_rms{0};
+  real start_rms{0};  ///< when the solve was the first
 };
 
 /// One Levenberg-Marquardt solve (MINPACK's lmder with the arguments vnl_levenberg_marquardt
@@ -243,12 +246,14 @@ struct SolveResult {
 /// workspace.weights (empty: all 1) from `start`, stopped after `max_evaluations` residual
 /// evaluations. When solved, workspace.distances become the unweighted signed point-to-line
 /// distances at the new pose; otherwise they are left as they were. The workspace holds the
-/// matches' terms (PointToLineProblem::prepare_matches).
-SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start,
-                       const PoseParams& params, int max_evaluations, PoseWorkspace& workspace) {
+/// matches' terms (PointToLineProblem::prepare_matches). workspace.residuals are left at LM's
+/// last estimate, for the solution's end RMS.
+SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start, const PoseParams& params,
+                       int max_evaluations, bool first, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
   PointToLineProblem problem(matches, workspace.weights, start, workspace);
+  if (first) problem.measure_start();
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -268,7 +273,6 @@ SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start,
   result.evaluations = problem.evaluations();
   result.iterations = njev;
   result.start_rms = problem.start_rms();
-  result.end_rms = PointToLineProblem::rms(workspace.residuals.data(), matches.size());
   const bool ok = info >= vnl_levenberg_marquardt::CONVERGED_FTOL && info <= vnl_levenberg_marquardt::CONVERGED_GTOL;
   if (!(ok || keeps_best_estimate(info))) return result;
   result.pose = problem.pose(x);
@@ -281,7 +285,11 @@ void add_counts(const SolveResult& solve, PoseSolution& solution) {
   if (solution.evaluations == 0) solution.start_rms = solve.start_rms;
   solution.evaluations += solve.evaluations;
   solution.iterations += solve.iterations;
-  solution.end_rms = solve.end_rms;
+}
+
+/// The solution's end RMS: the last solve's, whose residuals are still in `workspace`.
+void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
+  solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), workspace.residuals.size());
 }
 
 /// The median of |values| (the distances may be signed); `magnitudes` is work.
@@ -383,8 +391,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  const SolveResult first = solve_once(matches, start, params, params.max_evaluations, workspace);
+  const SolveResult first = solve_once(matches, start, params, params.max_evaluations, true, workspace);
   add_counts(first, solution);
+  if (!first.solved || !robust) measure_end_rms(workspace, solution);
   if (!first.solved) return solution;
   solution.camera_from_model = first.pose;
   solution.solved = true;
@@ -402,12 +411,13 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     const bool watch = params.rounds_settled_px > real(0);
     if (watch) workspace.before_round = distances;
     const SolveResult robust_solve =
-        solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, workspace);
+        solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     solution.camera_from_model = robust_solve.pose;
     if (watch && largest_move(workspace.before_round, distances) <= params.rounds_settled_px) break;
   }
+  measure_end_rms(workspace, solution);
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
