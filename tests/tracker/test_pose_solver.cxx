@@ -3,7 +3,8 @@
 /// analytic Jacobian recovers the true pose from a start 1 degree and 3 mm off; with 10 % of the
 /// matches moved 3 pixels off, the Tukey-weighted robust solves flag them and still recovers the
 /// pose, which the paper's plain solve does not; robust rounds of one LM step each land where
-/// rounds run to convergence do; given the true edge as a second hypothesis, the robust rounds
+/// rounds run to convergence do, and ending them once settled (rounds_settled_px) where all
+/// of them do; given the true edge as a second hypothesis, the robust rounds
 /// choose it.
 #include <cmath>
 #include <cstdio>
@@ -103,6 +104,20 @@ static void test_pose_solver() {
        true);
   TEST_NEAR("and give the same pose (mm)", position_error_mm(robust.camera_from_model, full.camera_from_model), 0,
             tol_mm);
+  // Many robust rounds reach the weighted optimum before the last: ending them once a round
+  // moved no match more than a hundredth of a pixel takes fewer steps to the same pose.
+  PoseParams many = params;
+  many.robust_rounds = 8;
+  PoseParams settling = many;
+  settling.rounds_settled_px = real(0.01);
+  std::vector<EdgeMatch> spoiled_many = spoiled, spoiled_settling = spoiled;
+  const PoseSolution all_rounds = solve_pose(spoiled_many, camera, start, many);
+  const PoseSolution settled = solve_pose(spoiled_settling, camera, start, settling);
+  std::printf("8 robust rounds: %d iterations; ending once settled to 0.01 px: %d\n", all_rounds.iterations,
+              settled.iterations);
+  TEST("robust rounds ending once settled take fewer LM iterations", settled.iterations < all_rounds.iterations, true);
+  TEST_NEAR("and give the same pose (mm)", position_error_mm(settled.camera_from_model, all_rounds.camera_from_model),
+            0, tol_mm);
   // The same moved matches keeping the true edge as a second hypothesis: the robust rounds
   // choose it, so no match is left out and the pose comes back.
   std::vector<EdgeMatch> two_hypotheses = spoiled;

@@ -34,8 +34,9 @@ class PointToLineProblem {
  public:
   /// `weights` (one per match, or empty for all 1) multiply each residual: they are the square
   /// roots of the least-squares weights.
-  PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights,
-                     const PinholeCamera& camera, const Se3& start, PoseWorkspace& w)
+  /// The workspace's model_mm and unweighted hold `matches`' terms (prepare_matches).
+  PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const Se3& start,
+                     PoseWorkspace& w)
       : start_(start),
         start_translation_mm_(to_millimetres(start.translation())),
         count_(matches.size()),
@@ -44,25 +45,41 @@ class PointToLineProblem {
         w_(w) {
     for (int k = 0; k < 3; ++k) {
       w.rotated[k].resize(count_);
-      w.unweighted[k].resize(count_);
       w.turned[k].resize(count_);
       w.moved[k].resize(count_);
     }
     for (int k = 0; k < 2; ++k) w.gradient[k].resize(count_);
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
+    // The points in millimetres and the distances' coefficients are the solve_pose call's
+    // (prepare_matches): only the rotation and the weights differ between its solves.
+    const Mat33& r = start.rotation();
     for (size_t i = 0; i < count_; ++i) {
+      set(w.rotated, i, r * Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]});
+      w.gradient[0][i] = weighted_ ? weights[i] * w.unweighted[0][i] : w.unweighted[0][i];
+      w.gradient[1][i] = weighted_ ? weights[i] * w.unweighted[1][i] : w.unweighted[1][i];
+    }
+  }
+
+  /// Fills the workspace's per-match terms that stay the same over one solve_pose call's solves:
+  /// each point in millimetres and, for the hypothesis each match uses, the coefficients of
+  /// delta = n . (project(p) - q) = (a X + b Y + c Z) / Z. `all` false refreshes only the
+  /// coefficients of matches with alternatives (their choice may have changed).
+  static void prepare_matches(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, bool all,
+                              PoseWorkspace& w) {
+    const size_t count = matches.size();
+    if (all)
+      for (int k = 0; k < 3; ++k) {
+        w.model_mm[k].resize(count);
+        w.unweighted[k].resize(count);
+      }
+    for (size_t i = 0; i < count; ++i) {
       const EdgeMatch& m = matches[i];
-      const Vec3 rotated = start.rotation() * to_millimetres(m.point.point_in_model);
-      // delta = n . (project(p) - q) = (a X + b Y + c Z) / Z; the residual is delta times the
-      // match's weight.
+      if (!all && m.alternative_count == 0) continue;
+      if (all) set(w.model_mm, i, to_millimetres(m.point.point_in_model));
       const Vec2& n = m.point.normal;
-      const Vec3 unweighted{n.x * camera.px, n.y * camera.py,
-                            n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)};
-      set(w.rotated, i, rotated);
-      set(w.unweighted, i, unweighted);
-      w.gradient[0][i] = weighted_ ? weights[i] * unweighted.x : unweighted.x;
-      w.gradient[1][i] = weighted_ ? weights[i] * unweighted.y : unweighted.y;
+      set(w.unweighted, i,
+          Vec3{n.x * camera.px, n.y * camera.py, n.x * (camera.u0 - m.used().x) + n.y * (camera.v0 - m.used().y)});
     }
   }
 
@@ -72,7 +89,7 @@ class PointToLineProblem {
     if (iflag == 1) {
       ++problem->evaluations_;
       if (!problem->f(x, fx)) return -1;
-      if (problem->evaluations_ == 1) problem->start_rms_ = rms(fx, problem->count_);
+      if (problem->evaluations_ == 1 && problem->measure_start_) problem->start_rms_ = rms(fx, problem->count_);
     } else if (iflag == 2) {
       if (!problem->gradf(x, fjac, static_cast<size_t>(ldfjac))) return -1;
     }
@@ -92,6 +109,9 @@ class PointToLineProblem {
   }
 
   int evaluations() const { return evaluations_; }
+  /// The RMS at the start is measured only when asked (measure_start): the solution reports
+  /// its first solve's alone.
+  void measure_start() { measure_start_ = true; }
   real start_rms() const { return start_rms_; }
 
   /// What vnl_vector::rms computes: sqrt(sum of squares / n).
@@ -196,6 +216,7 @@ class PointToLineProblem {
   bool evaluated_ = false;
   int evaluations_ = 0;
   real start_rms_{0};
+  bool measure_start_ = false;
 };
 
 /// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
@@ -216,8 +237,7 @@ struct SolveResult {
   Se3 pose;             ///< when solved
   int evaluations = 0;
   int iterations = 0;  ///< Jacobian evaluations
-  real start_rms{0};
-  real end_rms{0};
+  real start_rms{0};  ///< when the solve was the first
 };
 
 /// One Levenberg-Marquardt solve (MINPACK's lmder with the arguments vnl_levenberg_marquardt
@@ -225,12 +245,15 @@ struct SolveResult {
 /// PoseSolver::kNormalEquations normal_equations_lm) over `matches` weighted by
 /// workspace.weights (empty: all 1) from `start`, stopped after `max_evaluations` residual
 /// evaluations. When solved, workspace.distances become the unweighted signed point-to-line
-/// distances at the new pose; otherwise they are left as they were.
-SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
-                       const PoseParams& params, int max_evaluations, PoseWorkspace& workspace) {
+/// distances at the new pose; otherwise they are left as they were. The workspace holds the
+/// matches' terms (PointToLineProblem::prepare_matches). workspace.residuals are left at LM's
+/// last estimate, for the solution's end RMS.
+SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start, const PoseParams& params,
+                       int max_evaluations, bool first, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
-  PointToLineProblem problem(matches, workspace.weights, camera, start, workspace);
+  PointToLineProblem problem(matches, workspace.weights, start, workspace);
+  if (first) problem.measure_start();
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -250,7 +273,6 @@ SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamer
   result.evaluations = problem.evaluations();
   result.iterations = njev;
   result.start_rms = problem.start_rms();
-  result.end_rms = PointToLineProblem::rms(workspace.residuals.data(), matches.size());
   const bool ok = info >= vnl_levenberg_marquardt::CONVERGED_FTOL && info <= vnl_levenberg_marquardt::CONVERGED_GTOL;
   if (!(ok || keeps_best_estimate(info))) return result;
   result.pose = problem.pose(x);
@@ -263,7 +285,11 @@ void add_counts(const SolveResult& solve, PoseSolution& solution) {
   if (solution.evaluations == 0) solution.start_rms = solve.start_rms;
   solution.evaluations += solve.evaluations;
   solution.iterations += solve.iterations;
-  solution.end_rms = solve.end_rms;
+}
+
+/// The solution's end RMS: the last solve's, whose residuals are still in `workspace`.
+void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
+  solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), workspace.residuals.size());
 }
 
 /// The median of |values| (the distances may be signed); `magnitudes` is work.
@@ -323,6 +349,18 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
   return outliers;
 }
 
+/// The largest |after - before| over the matches: how far a round moved a match along its normal
+/// (the distances before are to the hypotheses the round chose, as those after are).
+real largest_move(const std::vector<real>& before, const std::vector<real>& after) {
+  using std::fabs;
+  real largest(0);
+  for (size_t i = 0; i < after.size(); ++i) {
+    const real move = fabs(after[i] - before[i]);
+    if (move > largest) largest = move;
+  }
+  return largest;
+}
+
 }  // namespace
 
 PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
@@ -339,6 +377,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   if (matches.size() < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
+  PointToLineProblem::prepare_matches(matches, camera, true, workspace);
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real>& distances = workspace.distances;
   std::vector<real>& weights = workspace.weights;
@@ -352,8 +391,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, workspace);
+  const SolveResult first = solve_once(matches, start, params, params.max_evaluations, true, workspace);
   add_counts(first, solution);
+  if (!first.solved || !robust) measure_end_rms(workspace, solution);
   if (!first.solved) return solution;
   solution.camera_from_model = first.pose;
   solution.solved = true;
@@ -365,14 +405,19 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   weights.resize(matches.size());
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
+    PointToLineProblem::prepare_matches(matches, camera, false, workspace);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
+    const bool watch = params.rounds_settled_px > real(0);
+    if (watch) workspace.before_round = distances;
     const SolveResult robust_solve =
-        solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, workspace);
+        solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     solution.camera_from_model = robust_solve.pose;
+    if (watch && largest_move(workspace.before_round, distances) <= params.rounds_settled_px) break;
   }
+  measure_end_rms(workspace, solution);
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.

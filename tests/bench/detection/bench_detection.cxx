@@ -8,13 +8,14 @@
 /// under toolchains/qemu/count-insns.sh the windows hold the guest instructions of detection only.
 ///
 /// usage: bench_detection cube|wood_toy TRIALS [--no-object] [--from-truth] [--diagnose]
-///        [--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--quiet]
+///        [--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--max-points N] [--quiet]
 /// --from-truth also runs the refinement's tracking from the true pose (how often the tracker
 /// itself keeps a single frame within 2 mm and 2 degrees: the ceiling of the detection rate),
 /// and the detector's own refinement (Detector::refine_from) from the true pose started as a
 /// match's is: how often its schedule, from the best start a match could give, stays within.
 /// --diagnose says, for each trial that is not right, where it failed (Failure), prints the
-/// refined candidates, and counts each failure in the summary.
+/// refined candidates, and counts each failure in the summary. --max-points sets
+/// DetectorParams::max_points_searched (the default's otherwise).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -46,6 +47,7 @@ struct Options {
   uint32_t seed = 1;
   bool quiet = false;
   bool diagnose = false;
+  int max_points = -1;  ///< -1: the default DetectorParams' budget
 };
 
 bool parse(int argc, char** argv, Options& o) {
@@ -67,6 +69,7 @@ bool parse(int argc, char** argv, Options& o) {
     else if (a == "--in-plane" && value) o.templates.views.in_plane_steps = std::atoi(argv[++i]);
     else if (a == "--distance-ratio" && value) o.templates.views.distance_ratio = real(std::atof(argv[++i]));
     else if (a == "--seed" && value) o.seed = static_cast<uint32_t>(std::atoi(argv[++i]));
+    else if (a == "--max-points" && value) o.max_points = std::atoi(argv[++i]);
     else return false;
   }
   return o.trials > 0;
@@ -190,7 +193,8 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     std::fprintf(stderr, "usage: bench_detection cube|wood_toy TRIALS [--no-object] [--from-truth] [--diagnose] "
-                         "[--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--quiet]\n");
+                         "[--subdivisions N] [--in-plane N] [--distance-ratio R] [--seed S] [--max-points N] "
+                         "[--quiet]\n");
     return 2;
   }
   const Result<EdgeModel> model = load_model(model_path(o.scene));
@@ -208,7 +212,8 @@ int main(int argc, char** argv) {
   const double make_ms = ms_since(start);
   const size_t template_count = templates.value().templates.size(), bytes = templates.value().memory_bytes();
   const ModelExtent extent = templates.value().extent;
-  const DetectorParams dp;
+  DetectorParams dp;
+  if (o.max_points >= 0) dp.max_points_searched = o.max_points;
   Result<Detector> detector =
       Detector::create(model.value(), camera, std::move(templates).value(), dp, TrackerParams{});
   Result<Tracker> tracker = Tracker::create(model.value(), camera, random_view(model.value(), camera, o.templates.views, 1),

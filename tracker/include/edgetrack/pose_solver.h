@@ -52,6 +52,10 @@ struct PoseParams {
   /// from pulling their poses apart (docs/ARCHITECTURE.md). tukey_c = 0 or robust_rounds = 0 is
   /// the paper's tracker.
   int robust_rounds = 3;
+  /// The robust rounds end early once one moved no match farther than this along its normal
+  /// (pixels): the weights at the next round's start would be those of this one's, and so its
+  /// step as small. 0 runs every round (the tracker's default: its frames need few rounds).
+  real rounds_settled_px{0};
   /// With robust rounds, the first solve too is weighted by Tukey's biweight (as below) of the
   /// distances at `start`, which the matches' control points were sampled at: where the start is
   /// a good prediction, a whole edge matched to a line a few pixels beside it stands out there,
@@ -82,6 +86,7 @@ struct PoseSolution {
 /// it holds between calls means nothing. Per match, the arrays are structures of arrays (one
 /// array per coordinate), the layout of MINPACK's column-major Jacobian.
 struct PoseWorkspace {
+  std::vector<real> model_mm[3];      ///< point_in_model, millimetres
   std::vector<real> rotated[3];       ///< R0 * point_in_model, millimetres
   std::vector<real> unweighted[3];    ///< (a, b, c) of each distance (a X + b Y + c Z) / Z
   std::vector<real> gradient[2];      ///< a and b times the match's weight, for the Jacobian
@@ -90,6 +95,7 @@ struct PoseWorkspace {
   std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> scratch, distances, weights, magnitudes;
+  std::vector<real> before_round;  ///< the distances before the last robust round (rounds_settled_px)
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM

@@ -47,6 +47,7 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.fine_range < 1 || p.fine_range > 64) return bad("the fine range must be 1 to 64 px");
   if (p.screen_iterations < 1 || p.screen_iterations > 50) return bad("screening frames must be 1 to 50");
   if (p.refined_candidates < 1 || p.refined_candidates > 100) return bad("refined candidates must be 1 to 100");
+  if (p.max_points_searched < 0) return bad("the points budget must be 0 (none) or more");
   if (!(p.suppress_deg >= real(0)) || p.suppress_deg > real(180))
     return bad("the suppressed angle must be 0 to 180 degrees");
   if (!(p.suppress_radii >= real(0)) || p.suppress_radii > real(10))
@@ -60,6 +61,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.screen_robust_rounds < 0 || p.screen_robust_rounds > 10 || p.refine_robust_rounds < 0 ||
       p.refine_robust_rounds > 10)
     return bad("the screening and refining robust rounds must be 0 to 10");
+  if (!(p.refine_rounds_settled_px >= real(0)) || p.refine_rounds_settled_px > real(1))
+    return bad("the refining rounds' settled move must be 0 to 1 px");
   if (p.given_iterations < 0 || p.given_iterations > 50) return bad("given refining frames must be 0 to 50");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   if (!(p.min_support >= real(0)) || p.min_support > real(1)) return bad("the support must be 0 to 1");
@@ -89,6 +92,7 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   screening.pose.robust_rounds = params.screen_robust_rounds;
   refining.me.setSampleStep(params.refine_sample_step);
   refining.pose.robust_rounds = params.refine_robust_rounds;
+  refining.pose.rounds_settled_px = params.refine_rounds_settled_px;
   screening.pose.solver = refining.pose.solver = params.solver;
   TrackerParams wide_tracking = refining, fine_tracking = refining;
   wide_tracking.me.setRange(params.wide_range);
@@ -141,8 +145,8 @@ void Detector::match(const FrameView& frame) {
 bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate,
                           Tracker::StartPose start) {
   int lost_in_a_row = 0;
-  if (!tracker.reset(candidate.camera_from_model, start)) return false;
-  for (int k = 0; k < iterations; ++k) {
+  if (budget_spent() || !tracker.reset(candidate.camera_from_model, start)) return false;
+  for (int k = 0; k < iterations && !budget_spent(); ++k) {
     const Result<FrameResult> tracked = tracker.track(frame);
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();
@@ -336,7 +340,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   for (const TemplateMatch& m : screen(grey)) {
     detection.refined.push_back(refine(grey, m, detection.refined));
     const RefinedCandidate& last = detection.refined.back();
-    if (acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) break;
+    if ((acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) || budget_spent()) break;
   }
   restart_tilted(grey, detection);
   detection.points_searched = points_searched_;

@@ -65,6 +65,11 @@ struct DetectorParams {
   /// a run settles (settled_px) in fewer frames.
   int refine_robust_rounds = 8;
   int screen_robust_rounds = 1;
+  /// A refining frame's robust rounds end once one moved no control point farther than this
+  /// (pixels; PoseParams::rounds_settled_px): on a still image the rounds reach the frame's
+  /// weighted optimum well before the last one once the run nears its pose, and the rest only
+  /// repeat it. A hundredth of a pixel is far below what the moving edges resolve.
+  real refine_rounds_settled_px = real(0.01);
   /// The screening and refining runs' pose solver (PoseParams::solver): the normal equations take
   /// fewer instructions per solve than MINPACK's QR, and a detection solves a few hundred times.
   PoseSolver solver = PoseSolver::kNormalEquations;
@@ -111,6 +116,13 @@ struct DetectorParams {
   /// (px): the moving edges' sites within their pixel of the model's lines, a fit that no other
   /// candidate's could better.
   real confident_scale_px = real(0.25);
+  /// The most control points the screening and refining frames of one detection may search
+  /// (Detection::points_searched; 0: no limit): a detection's cost past the matching is about
+  /// proportional to them, and without a limit a frame whose matches all fail costs every
+  /// candidate's full schedule. Once spent, no further frame runs: the best candidate refined
+  /// so far is judged as usual (found or not), so the limit bounds the worst case at the price
+  /// of the frames where the right candidate would have come later.
+  int max_points_searched = 0;
 };
 
 /// One candidate after refinement.
@@ -187,7 +199,7 @@ class Detector {
   /// candidate.support from `tracker`'s last control points.
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
   /// Up to `iterations` frames of `tracker` from candidate.camera_from_model (a guess), each from
-  /// the last; false when lost twice in a row.
+  /// the last, while the points budget lasts; false when lost twice in a row or when no frame ran.
   bool run_frames(Tracker& tracker, const FrameView& frame, int iterations, RefinedCandidate& candidate,
                   Tracker::StartPose start = Tracker::StartPose::kGuess);
 
@@ -210,6 +222,8 @@ class Detector {
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
   int points_searched_ = 0;  ///< this detection's, so far
+  /// DetectorParams::max_points_searched is spent.
+  bool budget_spent() const { return params_.max_points_searched > 0 && points_searched_ >= params_.max_points_searched; }
 };
 
 /// Checks the detector's parameters; an Error names the first one out of its range.
