@@ -89,7 +89,7 @@ struct PoseWorkspace {
   std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
   std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
-  std::vector<real> scratch, distances, weights, magnitudes;
+  std::vector<real> scratch, distances, weights, magnitudes, selection;
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM

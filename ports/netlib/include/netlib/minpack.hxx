@@ -83,7 +83,10 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   const T agiant = machine.rgiant / T(n);
   for (int i = 0; i < n; ++i) {
     const T xabs = abs_of(x[i]);
-    if (xabs > machine.rdwarf && xabs < agiant) {
+    // A zero (a residual or Jacobian row of weight 0) joins the plain sum, where it adds +0 and
+    // changes nothing, as in MINPACK's small-component branch: so the test stays true on
+    // weighted data and a host CPU predicts it. Bitwise operators: one branch, not three.
+    if (((xabs > machine.rdwarf) | (xabs == T(0))) & (xabs < agiant)) {
       s2 += xabs * xabs;
     } else if (xabs > machine.rdwarf) {
       if (xabs > x1max) {
@@ -147,8 +150,9 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
         ipvt[kmax] = swap;
       }
     }
-    // Householder reflection that zeroes column j below the diagonal.
-    T ajnorm = enorm(m - j, aj + j, machine);
+    // Householder reflection that zeroes column j below the diagonal. The first column's norm is
+    // the acnorm of the column brought there, from the same numbers.
+    T ajnorm = j == 0 ? acnorm[pivot ? ipvt[0] : 0] : enorm(m - j, aj + j, machine);
     if (ajnorm != T(0)) {
       if (aj[j] < T(0)) ajnorm = -ajnorm;
       if (std::numeric_limits<T>::is_iec559) {
