@@ -174,12 +174,58 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
   const int range = static_cast<int>(me.getRange());
   const int threshold = likelihood_floor(me.getThreshold());
   PathWalk walk(point, range);
-  // before, current: the likelihoods of the pixels before the current one (i, j) and of it;
-  // each pixel read (`after`) settles whether the current one is a maximum.
-  int before = -1, current = -1, current_conv = 0, i = 0, j = 0;
   const int length = 2 * range + 1;
-  // The path's k-th pixel (next_i, next_j) read, with its response conv.
-  auto read = [&](int k, int conv, int next_i, int next_j) {
+#if defined(__SSE2__)
+  // Vector masks: the responses a chunk of the path at a time (vpMeResponse loads the mask once
+  // per chunk), and the maxima of each chunk tested four pixels at a time, branch-free.
+  // Slot kLead + k holds the chunk's k-th pixel, slots 0 and 1 the previous chunk's last two
+  // (likelihood -1 before the path); the tests reach a vector past the chunk.
+  constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
+  static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
+  int likelihood[kSlots], conv[kSlots], path_i[kSlots], path_j[kSlots];
+  for (int t = 0; t < kSlots; ++t) likelihood[t] = -1;
+  const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
+  for (int start = 0; start < length; start += kChunk) {
+    const int n = length - start < kChunk ? length - start : kChunk;
+    for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
+    response.at_each_along(path_i + kLead, path_j + kLead, n, conv + kLead);
+    for (int k = 0; k < n; ++k) likelihood[kLead + k] = conv[kLead + k] < 0 ? -2 * conv[kLead + k] : 2 * conv[kLead + k];
+    // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
+    // before the path), and at the path's far end its last pixel, with no pixel after it.
+    const bool far_end = start + n == length;
+    if (far_end) likelihood[kLead + n] = -1;
+    const int first = start == 0 ? kLead : 1, last = far_end ? n + 1 : n;
+    unsigned candidates = 0;
+    for (int t = 1; t <= last; t += 4) {
+      const __m128i at = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t));
+      const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t - 1));
+      const __m128i after = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t + 1));
+      // at > before, at >= after (not after > at), and at above the threshold.
+      const __m128i peak = _mm_andnot_si128(_mm_cmpgt_epi32(after, at),
+                                            _mm_and_si128(_mm_cmpgt_epi32(at, before), _mm_cmpgt_epi32(at, floor_of_peaks)));
+      candidates |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(peak))) << t;
+    }
+    candidates &= ((2u << last) - 1) & ~((1u << first) - 1);
+    for (; candidates != 0; candidates &= candidates - 1) {
+      const int t = __builtin_ctz(candidates);
+      visit(conv[t], path_i[t], path_j[t]);
+    }
+    for (int t = 0; t < kLead; ++t) {
+      likelihood[t] = likelihood[n + t];
+      conv[t] = conv[n + t];
+      path_i[t] = path_i[n + t];
+      path_j[t] = path_j[n + t];
+    }
+  }
+#else
+  // One response at a time: arrays would cost more than they save. before, current: the
+  // likelihoods of the pixels before the current one (i, j) and of it; each pixel read (`after`)
+  // settles whether the current one is a maximum.
+  int before = -1, current = -1, current_conv = 0, i = 0, j = 0;
+  for (int k = 0; k < length; ++k) {
+    int next_i = 0, next_j = 0;
+    walk.next(next_i, next_j);
+    const int conv = response.at(next_i, next_j);
     const int after = conv < 0 ? -2 * conv : 2 * conv;
     if (k > 0 && current > before && current >= after && current > threshold) visit(current_conv, i, j);
     before = k > 0 ? current : -1;
@@ -187,26 +233,9 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
     current_conv = conv;
     i = next_i;
     j = next_j;
-  };
-  if constexpr (vpMe::kPaddedRow != 0) {
-    // Vector masks: the responses a chunk of the path at a time (vpMeResponse::at_each loads the
-    // mask once per chunk). Without them, one at a time: the arrays would cost more than they save.
-    constexpr int kChunk = 16;
-    int path_i[kChunk], path_j[kChunk], conv[kChunk];
-    for (int start = 0; start < length; start += kChunk) {
-      const int n = length - start < kChunk ? length - start : kChunk;
-      for (int k = 0; k < n; ++k) walk.next(path_i[k], path_j[k]);
-      response.at_each(path_i, path_j, n, conv);
-      for (int k = 0; k < n; ++k) read(start + k, conv[k], path_i[k], path_j[k]);
-    }
-  } else {
-    for (int k = 0; k < length; ++k) {
-      int next_i = 0, next_j = 0;
-      walk.next(next_i, next_j);
-      read(k, response.at(next_i, next_j), next_i, next_j);
-    }
   }
   if (current > before && current > threshold) visit(current_conv, i, j);  // the far end: no pixel after
+#endif
 }
 
 /// What one pass over a site's path (for_each_path_peak) finds for the site's search and its
@@ -329,9 +358,15 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
                          const std::vector<unsigned char>* strict) {
   matches.clear();
   matches.reserve(points.size());
+  // The points of one straight edge share its normal, so its mask is looked up once per run.
+  NormalMask mask;
+  Vec2 mask_normal{real(0), real(0)};
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
-    const NormalMask mask = normal_mask(me, point.normal);
+    if (p == 0 || !(point.normal.x == mask_normal.x && point.normal.y == mask_normal.y)) {
+      mask = normal_mask(me, point.normal);
+      mask_normal = point.normal;
+    }
     const vpMeResponse response(grey, me, mask.index, mask.sign);
     const real reference = references ? (*references)[p] : real(0);
     const PathSearch found = search_path(response, me, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/normal_equations_lm.h"
+#include "order_statistic.h"
 #include "netlib/minpack.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_rotation_matrix.h"
@@ -292,12 +294,19 @@ void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
   solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), workspace.residuals.size());
 }
 
-/// The median of |values| (the distances may be signed); `magnitudes` is work.
-real median_of(const std::vector<real>& signed_values, std::vector<real>& values) {
+/// The median of |values| (the distances may be signed); `values` and `other` are work.
+real median_of(const std::vector<real>& signed_values, std::vector<real>& values, std::vector<real>& other) {
   using std::fabs;
   values.resize(signed_values.size());
   for (size_t i = 0; i < values.size(); ++i) values[i] = fabs(signed_values[i]);
   const size_t mid = values.size() / 2;
+  // The same number either way: floating point without a branch per comparison (a host CPU
+  // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
+  if constexpr (std::is_floating_point<real>::value) {
+    if (values.empty()) return real(0);
+    other.resize(values.size());
+    return kth_smallest(values.data(), other.data(), values.size(), mid);
+  }
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
   return values[mid];
 }
@@ -334,9 +343,9 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 /// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
 /// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
 int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
-                  std::vector<real>& scratch, std::vector<real>& weights) {
+                  std::vector<real>& scratch, std::vector<real>& other, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(1.4826) * median_of(distances, scratch);
+  real c = params.tukey_c * real(1.4826) * median_of(distances, scratch, other);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
@@ -388,7 +397,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     for (size_t i = 0; i < matches.size(); ++i)
       distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
     weights.resize(matches.size());
-    tukey_weights(matches, distances, params, workspace.magnitudes, weights);
+    tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
   const SolveResult first = solve_once(matches, start, params, params.max_evaluations, true, workspace);
@@ -398,7 +407,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes);
+    solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes, workspace.selection);
     return solution;
   }
 
@@ -406,7 +415,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   for (int round = 0; round < params.robust_rounds; ++round) {
     choose_nearest_hypotheses(matches, distances);
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
-    solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, weights);
+    solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     const bool watch = params.rounds_settled_px > real(0);
     if (watch) workspace.before_round = distances;
@@ -422,7 +431,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes);
+  solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes, workspace.selection);
   return solution;
 }
 

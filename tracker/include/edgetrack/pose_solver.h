@@ -94,7 +94,7 @@ struct PoseWorkspace {
   std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
   std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
-  std::vector<real> scratch, distances, weights, magnitudes;
+  std::vector<real> scratch, distances, weights, magnitudes, selection;
   std::vector<real> before_round;  ///< the distances before the last robust round (rounds_settled_px)
 };
 

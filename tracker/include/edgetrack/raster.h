@@ -352,6 +352,17 @@ inline int32_t depth_at(const PixelTriangle& t, int x, int y) {
 template <class Plot>
 void draw_line(const LineWalk& line, int width, int height, Plot&& plot) {
   int64_t minor = line.minor, w = line.w;
+  const PixelRect box = line_box(line);
+  if (box.x0 >= 0 && box.x1 < width && box.y0 >= 0 && box.y1 < height) {
+    // On the image (a clipped segment is, but for rounding): no pixel needs the test.
+    for (int k = 0, m = line.first; k < line.count; ++k, m += line.dir) {
+      const int n = LineWalk::minor_pixel(minor);
+      plot(line.x_major ? m : n, line.x_major ? n : m, static_cast<int32_t>(w >> 16));
+      minor += line.minor_step;
+      w += line.w_step;
+    }
+    return;
+  }
   for (int k = 0, m = line.first; k < line.count; ++k, m += line.dir) {
     const int n = LineWalk::minor_pixel(minor);
     const int x = line.x_major ? m : n, y = line.x_major ? n : m;

@@ -52,6 +52,37 @@ void add_multiple_of(int n, const T& s, const T* x, T* y) {
   }
 }
 
+/// Floating point: C sums of products of `a` with columns b, b + ldb, ..., each summed in
+/// sum_of_products' order in an accumulator of its own, side by side, so that each addition
+/// waits for another column's instead of its own previous one. The same sums bit for bit.
+template <int C, class T>
+void side_by_side_sums(int n, const T* a, const T* b, int ldb, T* sums) {
+  T s[C] = {};
+  for (int i = 0; i < n; ++i) {
+    const T ai = a[i];
+    for (int c = 0; c < C; ++c) s[c] += ai * b[c * ldb + i];
+  }
+  for (int c = 0; c < C; ++c) sums[c] = s[c];
+}
+
+/// sums[c] = sum_of_products(n, a, b + c * ldb) for c < count, at most 4 side by side.
+template <class T>
+void sums_of_products(int n, const T* a, const T* b, int ldb, int count, T* sums) {
+  if constexpr (std::numeric_limits<T>::is_iec559) {
+    for (int first = 0; first < count; first += 4) {
+      const T* const bc = b + first * ldb;
+      switch (count - first) {
+        case 1: side_by_side_sums<1>(n, a, bc, ldb, sums + first); break;
+        case 2: side_by_side_sums<2>(n, a, bc, ldb, sums + first); break;
+        case 3: side_by_side_sums<3>(n, a, bc, ldb, sums + first); break;
+        default: side_by_side_sums<4>(n, a, bc, ldb, sums + first); break;
+      }
+    }
+  } else {
+    for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b + c * ldb);
+  }
+}
+
 }  // namespace minpack_detail
 
 template <class T>
@@ -83,7 +114,10 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   const T agiant = machine.rgiant / T(n);
   for (int i = 0; i < n; ++i) {
     const T xabs = abs_of(x[i]);
-    if (xabs > machine.rdwarf && xabs < agiant) {
+    // A zero (a residual or Jacobian row of weight 0) joins the plain sum, where it adds +0 and
+    // changes nothing, as in MINPACK's small-component branch: so the test stays true on
+    // weighted data and a host CPU predicts it. Bitwise operators: one branch, not three.
+    if (((xabs > machine.rdwarf) | (xabs == T(0))) & (xabs < agiant)) {
       s2 += xabs * xabs;
     } else if (xabs > machine.rdwarf) {
       if (xabs > x1max) {
@@ -111,6 +145,47 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   return x3max * sqrt(s3);
 }
 
+namespace minpack_detail {
+
+/// norms[c] = enorm(m, a + c * lda) for c < C. Floating point: the plain sums of the C columns
+/// side by side (each in enorm's order, each waiting for another's additions instead of its own),
+/// and enorm itself for a column with a component outside the plain range.
+template <int C, class T>
+void side_by_side_norms(int m, const T* a, int lda, T* norms, const minpack_machine<T>& machine) {
+  using std::sqrt;
+  const T agiant = machine.rgiant / T(m);
+  T s[C] = {};
+  bool plain[C];
+  for (int c = 0; c < C; ++c) plain[c] = true;
+  for (int i = 0; i < m; ++i)
+    for (int c = 0; c < C; ++c) {
+      const T xabs = abs_of(a[c * lda + i]);
+      plain[c] &= ((xabs > machine.rdwarf) | (xabs == T(0))) & (xabs < agiant);
+      s[c] += xabs * xabs;
+    }
+  for (int c = 0; c < C; ++c) norms[c] = plain[c] ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
+}
+
+/// The norms of the n columns of a (m rows, leading dimension lda), as enorm gives each.
+template <class T>
+void column_norms(int m, int n, const T* a, int lda, T* norms, const minpack_machine<T>& machine) {
+  if constexpr (std::numeric_limits<T>::is_iec559) {
+    for (int first = 0; first < n; first += 4) {
+      const T* const column = a + first * lda;
+      switch (n - first) {
+        case 1: side_by_side_norms<1>(m, column, lda, norms + first, machine); break;
+        case 2: side_by_side_norms<2>(m, column, lda, norms + first, machine); break;
+        case 3: side_by_side_norms<3>(m, column, lda, norms + first, machine); break;
+        default: side_by_side_norms<4>(m, column, lda, norms + first, machine); break;
+      }
+    }
+  } else {
+    for (int j = 0; j < n; ++j) norms[j] = enorm(m, a + j * lda, machine);
+  }
+}
+
+}  // namespace minpack_detail
+
 template <class T>
 void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
            const minpack_machine<T>& machine) {
@@ -118,8 +193,8 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
   using K = minpack_detail::k<T>;
   using minpack_detail::add_multiple_of;
   using minpack_detail::max_of;
+  minpack_detail::column_norms(m, n, a, lda, acnorm, machine);
   for (int j = 0; j < n; ++j) {
-    acnorm[j] = enorm(m, a + j * lda, machine);
     rdiag[j] = acnorm[j];
     wa[j] = rdiag[j];
     if (pivot) ipvt[j] = j;
@@ -147,8 +222,9 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
         ipvt[kmax] = swap;
       }
     }
-    // Householder reflection that zeroes column j below the diagonal.
-    T ajnorm = enorm(m - j, aj + j, machine);
+    // Householder reflection that zeroes column j below the diagonal. The first column's norm is
+    // the acnorm of the column brought there, from the same numbers.
+    T ajnorm = j == 0 ? acnorm[pivot ? ipvt[0] : 0] : enorm(m - j, aj + j, machine);
     if (ajnorm != T(0)) {
       if (aj[j] < T(0)) ajnorm = -ajnorm;
       if (std::numeric_limits<T>::is_iec559) {
@@ -160,10 +236,18 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
         for (int i = j; i < m; ++i) aj[i] *= inverse;
       }
       aj[j] += T(1);
-      // Apply it to the remaining columns and update their norms.
+      // Apply it to the remaining columns and update their norms. A column's products with aj
+      // do not depend on the other columns' updates: up to four are summed side by side first.
+      constexpr int kSideBySide = 4;
+      T products[kSideBySide];
       for (int k = j + 1; k < n; ++k) {
         T* const ak = a + k * lda;
-        const T temp = sum_of_products(m - j, aj + j, ak + j) / aj[j];
+        const int group = (k - j - 1) % kSideBySide;
+        if (group == 0) {
+          const int count = n - k < kSideBySide ? n - k : kSideBySide;
+          minpack_detail::sums_of_products(m - j, aj + j, ak + j, lda, count, products);
+        }
+        const T temp = products[group] / aj[j];
         // ak -= temp aj: negating temp first changes no rounding (both types round symmetrically).
         add_multiple_of(m - j, -temp, aj + j, ak + j);
         if (pivot && rdiag[k] != T(0)) {

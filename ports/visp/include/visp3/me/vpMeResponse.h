@@ -72,6 +72,25 @@ class vpMeResponse {
     }
   }
 
+  /// at_each for the pixels of a straight path in order (a site's search path): each coordinate
+  /// is monotonic along it, so its ends bound the rest, and when both lie inside no pixel needs
+  /// the border test.
+  void at_each_along(const int* i, const int* j, int n, int* out) const {
+#if defined(__SSE2__)
+    if (padded_ && size_ == 5 && n > 0 && !outside(i[0], j[0]) && !outside(i[n - 1], j[n - 1])) {
+      const int sign = sign_, half = half_;
+      const unsigned char* bitmap = image_.bitmap;
+      const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+      __m128i weights[5];
+      for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
+      for (int k = 0; k < n; ++k)
+        out[k] = sign * padded_sum_5(weights, bitmap + (i[k] - half) * stride + (j[k] - half), stride);
+      return;
+    }
+#endif
+    at_each(i, j, n, out);
+  }
+
   /// sign * sum of weight * pixel over the window centred at (i, j); 0 when outside(i, j).
   int at(int i, int j) const {
     if (outside(i, j)) return 0;
