@@ -12,6 +12,8 @@
 #include "edgetrack/normal_equations_lm.h"
 #include "order_statistic.h"
 #include "netlib/minpack.h"
+#include "real/divisor.h"
+#include "real/sum_of_products.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_rotation_matrix.h"
 
@@ -28,6 +30,14 @@ Mat33 so3_left_jacobian(const Vec3& w) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) j.m[r][c] = j.m[r][c] + k.b * h.m[r][c] + k.c * h2.m[r][c];
   return j;
+}
+
+/// r y with each row's sum of products rounded once (sum_of_products.h): each solve's start
+/// rotation for every match.
+__attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y) {
+  return {sum_of_products(r.m[0][0], y.x, r.m[0][1], y.y, r.m[0][2], y.z),
+          sum_of_products(r.m[1][0], y.x, r.m[1][1], y.y, r.m[1][2], y.z),
+          sum_of_products(r.m[2][0], y.x, r.m[2][1], y.y, r.m[2][2], y.z)};
 }
 
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
@@ -48,16 +58,19 @@ class PointToLineProblem {
     for (int k = 0; k < 3; ++k) {
       w.rotated[k].resize(count_);
       w.turned[k].resize(count_);
+    }
+    for (int k = 0; k < 2; ++k) {
+      w.gradient[k].resize(count_);
       w.moved[k].resize(count_);
     }
-    for (int k = 0; k < 2; ++k) w.gradient[k].resize(count_);
+    w.inverse_depth.resize(count_);
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     // The points in millimetres and the distances' coefficients are the solve_pose call's
     // (prepare_matches): only the rotation and the weights differ between its solves.
     const Mat33& r = start.rotation();
     for (size_t i = 0; i < count_; ++i) {
-      set(w.rotated, i, r * Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]});
+      set(w.rotated, i, rotate(r, Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]}));
       w.gradient[0][i] = weighted_ ? weights[i] * w.unweighted[0][i] : w.unweighted[0][i];
       w.gradient[1][i] = weighted_ ? weights[i] * w.unweighted[1][i] : w.unweighted[1][i];
     }
@@ -116,12 +129,12 @@ class PointToLineProblem {
   void measure_start() { measure_start_ = true; }
   real start_rms() const { return start_rms_; }
 
-  /// What vnl_vector::rms computes: sqrt(sum of squares / n).
+  /// What vnl_vector::rms computes: sqrt(sum of squares / n) (in fixed point the sum rounded once).
   static real rms(const real* v, size_t n) {
     using std::sqrt;
-    real total(0);
-    for (size_t i = 0; i < n; ++i) total += v[i] * v[i];
-    return n == 0 ? real(0) : sqrt(total / real(static_cast<int>(n)));
+    if (n == 0) return real(0);
+    const int count = static_cast<int>(n);
+    return sqrt(sum_of_products(count, v, v) / real(count));
   }
 
  private:
@@ -148,19 +161,28 @@ class PointToLineProblem {
     const Vec3 t = start_translation_mm_ + v;
     const std::vector<real>* q = w_.rotated;
     const std::vector<real>* u = w_.unweighted;
-    std::vector<real>* z = w_.turned;
     std::vector<real>* p = w_.moved;
+    real* const inv_z = w_.inverse_depth.data();
     real* const delta = w_.evaluated.data();
     evaluated_ = false;
+    // The turned points first, in their own loop: fewer values live at once in the next.
+    turned_ = turn ? w_.turned : w_.rotated;
+    if (turn) {
+      std::vector<real>* z = w_.turned;
+      for (size_t i = 0; i < count_; ++i) set(z, i, r * Vec3{q[0][i], q[1][i], q[2][i]});
+    }
+    const std::vector<real>* z = turned_;
     for (size_t i = 0; i < count_; ++i) {
-      const Vec3 rotated{q[0][i], q[1][i], q[2][i]};
-      const Vec3 zi = turn ? r * rotated : rotated;
-      const Vec3 pi = zi + t;
+      const Vec3 pi = Vec3{z[0][i], z[1][i], z[2][i]} + t;
       if (pi.z <= real(0)) return false;
-      set(z, i, zi);
-      set(p, i, pi);
-      delta[i] = (u[0][i] * pi.x + u[1][i] * pi.y + u[2][i] * pi.z) / pi.z;
-      fx[i] = weighted_ ? weights_[i] * delta[i] : delta[i];
+      p[0][i] = pi.x;
+      p[1][i] = pi.y;
+      // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
+      const Divisor<real> by_z(pi.z);
+      inv_z[i] = by_z.divide(real(1));
+      const real d = by_z.divide(sum_of_products(u[0][i], pi.x, u[1][i], pi.y, u[2][i], pi.z));
+      delta[i] = d;
+      fx[i] = weighted_ ? weights_[i] * d : d;
     }
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
     evaluated_ = true;
@@ -175,20 +197,23 @@ class PointToLineProblem {
     const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
     const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
     const std::vector<real>* k = w_.gradient;
-    const std::vector<real>* z = w_.turned;
+    const std::vector<real>* z = turned_;
     const std::vector<real>* p = w_.moved;
+    const real* const inverse_depth = w_.inverse_depth.data();
     real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
     for (size_t i = 0; i < count_; ++i) {
-      const real inv_z = real(1) / p[2][i];
+      const real inv_z = inverse_depth[i];
       // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
       const real gx = k[0][i] * inv_z;
       const real gy = k[1][i] * inv_z;
-      const real gz = -(gx * p[0][i] + gy * p[1][i]) * inv_z;
+      const real gz = -sum_of_products(gx, p[0][i], gy, p[1][i]) * inv_z;
       column[0][i] = gx;
       column[1][i] = gy;
       column[2][i] = gz;
       // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
-      const Vec3 zg = cross(Vec3{z[0][i], z[1][i], z[2][i]}, Vec3{gx, gy, gz});
+      const real zx = z[0][i], zy = z[1][i], zz = z[2][i];
+      const Vec3 zg{difference_of_products(zy, gz, zz, gy), difference_of_products(zz, gx, zx, gz),
+                    difference_of_products(zx, gy, zy, gx)};
       if (!left) {
         column[3][i] = zg.x;
         column[4][i] = zg.y;
@@ -196,7 +221,7 @@ class PointToLineProblem {
         continue;
       }
       for (int c = 0; c < 3; ++c)
-        column[3 + c][i] = zg.x * jl.m[0][c] + zg.y * jl.m[1][c] + zg.z * jl.m[2][c];
+        column[3 + c][i] = sum_of_products(zg.x, jl.m[0][c], zg.y, jl.m[1][c], zg.z, jl.m[2][c]);
     }
     return true;
   }
@@ -214,6 +239,7 @@ class PointToLineProblem {
   bool weighted_;
   const real* weights_;
   PoseWorkspace& w_;
+  const std::vector<real>* turned_ = nullptr;  ///< R(w) y at the last evaluation: w_.turned, or w_.rotated at w = 0
   real evaluated_at_[6] = {};
   bool evaluated_ = false;
   int evaluations_ = 0;

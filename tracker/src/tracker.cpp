@@ -12,6 +12,7 @@
 #include "edgetrack/millimetres.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/tracker_params.h"
+#include "real/sum_of_products.h"
 
 namespace edgetrack {
 namespace {
@@ -41,8 +42,8 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
     const Vec3 in_camera = pose * p.point_in_model;
     if (in_camera.z <= real(0)) continue;
     const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
-    const real numerator =
-        fabs(p.normal.x * camera.px * in_camera.x + p.normal.y * camera.py * in_camera.y + offset * in_camera.z);
+    const real numerator = fabs(sum_of_products(p.normal.x * camera.px, in_camera.x, p.normal.y * camera.py,
+                                                in_camera.y, offset, in_camera.z));
     if (numerator * worst_depth > worst_numerator * in_camera.z) {
       worst_numerator = numerator;
       worst_depth = in_camera.z;

@@ -236,6 +236,25 @@ void check_divide_fast_path(std::uint64_t seed) {
   sweep<F>("division near the 64 / 32-bit fast path", "/", random, draw,
            [](fixed64<F> a, fixed64<F> b) { return a / b; },
            exact_quotient<F>);
+  // fixed64_divisor gives a / b bit for bit, on and off the fast path, saturations counted alike.
+  int failures = 0, printed = 0;
+  for (int i = 0; i < kSamples / 4; ++i) {
+    std::int64_t a = 0, b = 0;
+    draw(random, a, b);
+    if (i % 7 == 0) b = random.raw(63);  // past the fast path
+    if (i % 11 == 0) b = 0;
+    const fixed64<F> x = fixed64<F>::from_raw(a), y = fixed64<F>::from_raw(b);
+    std::uint64_t before = fixedpoint::saturation_count();
+    const fixed64<F> expected = x / y;
+    const std::uint64_t expected_count = fixedpoint::saturation_count() - before;
+    before = fixedpoint::saturation_count();
+    const fixed64<F> got = fixedpoint::fixed64_divisor<F>(y).divide(x);
+    if (got.raw() != expected.raw() || fixedpoint::saturation_count() - before != expected_count) {
+      ++failures;
+      fixed64_test::report_failure(printed, describe(x) + " over the divisor " + describe(y) + " gave " + describe(got));
+    }
+  }
+  TEST((std::string("fixed64_divisor of ") + type_name<F>() + " divides as / does, bit for bit").c_str(), failures, 0);
 }
 
 /// sqrt(x) is correctly rounded iff (2r - 1)^2 <= 4 raw 2^F <= (2r + 1)^2 (no ties: the middle
@@ -362,6 +381,39 @@ void check_dot_product(std::uint64_t seed) {
   TEST("two products of half an ulp each sum to one ulp", dot_product(2, half_ulp, half).raw(), 1);
 }
 
+/// The few-pairs dot_product (two or three pairs in variables) gives dot_product(n, a, b) bit
+/// for bit, saturations counted alike, with operands within, near and past int32 and sums near
+/// 2^63 (where its 64-bit sum would overflow).
+template <int F>
+void check_few_pairs_dot_product(std::uint64_t seed) {
+  using T = fixed64<F>;
+  Random random(seed);
+  int failures = 0, printed = 0;
+  const int widths[4] = {31, 32, 40, 62};
+  for (int i = 0; i < kSamples / 4; ++i) {
+    T a[3], b[3];
+    for (int k = 0; k < 3; ++k) {
+      a[k] = T::from_raw(random.raw(widths[random.below(4)]));
+      b[k] = T::from_raw(random.raw(widths[random.below(4)]));
+    }
+    if (i % 5 == 0)  // int32 extremes: products near 2^62 whose sum passes 2^63
+      for (int k = 0; k < 3; ++k) a[k] = b[k] = T::from_raw(random.below(2) ? -2147483647 - 1 : 2147483647);
+    std::uint64_t before = fixedpoint::saturation_count();
+    const T two = dot_product(2, a, b), three = dot_product(3, a, b);
+    const std::uint64_t expected_count = fixedpoint::saturation_count() - before;
+    before = fixedpoint::saturation_count();
+    const T few_two = dot_product(a[0], b[0], a[1], b[1]), few_three = dot_product(a[0], b[0], a[1], b[1], a[2], b[2]);
+    if (few_two.raw() != two.raw() || few_three.raw() != three.raw() ||
+        fixedpoint::saturation_count() - before != expected_count) {
+      ++failures;
+      fixed64_test::report_failure(printed, "few-pairs dot product of " + describe(a[0]) + " ... gave " +
+                                                describe(few_three) + " for " + describe(three));
+    }
+  }
+  TEST((std::string("the few-pairs dot_product of ") + type_name<F>() + " is dot_product's, bit for bit").c_str(),
+       failures, 0);
+}
+
 /// add_multiple(n, s, x, y) gives y[i] + s * x[i] bit for bit, saturations counted alike, for
 /// scales and elements within, near and past the fast paths.
 template <int F>
@@ -400,6 +452,8 @@ void test_fixed64_norm_and_dot_product() {
   check_dot_product<23>(0x5eed0014);
   check_add_multiple<16>(0x5eed0015);
   check_add_multiple<23>(0x5eed0016);
+  check_few_pairs_dot_product<16>(0x5eed0017);
+  check_few_pairs_dot_product<23>(0x5eed0018);
 }
 
 void test_fixed64_add_subtract() {

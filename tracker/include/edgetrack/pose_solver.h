@@ -91,8 +91,9 @@ struct PoseWorkspace {
   std::vector<real> unweighted[3];    ///< (a, b, c) of each distance (a X + b Y + c Z) / Z
   std::vector<real> gradient[2];      ///< a and b times the match's weight, for the Jacobian
   std::vector<real> evaluated;        ///< the distances at the last evaluation, unweighted
-  std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation
-  std::vector<real> moved[3];         ///< the camera-frame point at the last evaluation
+  std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation with w != 0
+  std::vector<real> moved[2];         ///< X and Y of the camera-frame point at the last evaluation
+  std::vector<real> inverse_depth;    ///< 1 / Z of that point, for the Jacobian
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> scratch, distances, weights, magnitudes, selection;
   std::vector<real> before_round;  ///< the distances before the last robust round (rounds_settled_px)

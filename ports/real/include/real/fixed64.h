@@ -64,11 +64,16 @@ constexpr std::int64_t divide_rounded(bool negative, Uint128 n, std::uint64_t d)
 }
 
 /// round(n / d) (halves away from zero) as a raw value of the given sign, for n whose low bit
-/// is 0 and 0 < d < 2^32 (fixed64's common division); saturates (and counts) when out of range.
-constexpr std::int64_t divide_rounded(bool negative, std::uint64_t n, std::uint32_t d) {
-  const Division qr = divide(n, d);
+/// is 0 and 0 < d < 2^32 (fixed64's common division, d given normalised); saturates (and
+/// counts) when out of range.
+constexpr std::int64_t divide_rounded(bool negative, std::uint64_t n, const NormalisedDivisor& nd) {
+  const Division qr = divide(n, nd);
+  const std::uint32_t d = nd.divisor >> nd.shift;
   // 2r >= d rounds up; q + 1 cannot wrap, as q <= n / 2 for d >= 2 and r = 0 for d = 1.
   return signed_from_magnitude(negative, qr.quotient + (qr.remainder >= d - qr.remainder ? 1u : 0u));
+}
+constexpr std::int64_t divide_rounded(bool negative, std::uint64_t n, std::uint32_t d) {
+  return divide_rounded(negative, n, normalise(d));
 }
 
 /// Rounds m / 2^s to nearest (halves away from zero), 0 <= s < 128.
@@ -271,6 +276,29 @@ class fixed64 {
   std::int64_t raw_ = 0;
 };
 
+/// x / d for several x over one d, each quotient bit for bit as operator/ gives it: a divisor
+/// on operator/'s fast path (0 < |d| < 2^32 raw) is normalised and its reciprocal computed once,
+/// which is most of a division's work; the others divide with operator/.
+template <int F>
+class fixed64_divisor {
+ public:
+  explicit constexpr fixed64_divisor(fixed64<F> d)
+      : d_(d), fast_(d.raw() != 0 && (detail::magnitude(d.raw()) >> 32) == 0) {
+    if (fast_) normalised_ = detail::normalise(static_cast<std::uint32_t>(detail::magnitude(d.raw())));
+  }
+  constexpr fixed64<F> divide(fixed64<F> a) const {
+    const std::uint64_t m = detail::magnitude(a.raw());
+    if (__builtin_expect(fast_ && (m >> (64 - F)) == 0, 1))
+      return fixed64<F>::from_raw(detail::divide_rounded((a.raw() ^ d_.raw()) < 0, m << F, normalised_));
+    return a / d_;
+  }
+
+ private:
+  fixed64<F> d_;
+  bool fast_;
+  detail::NormalisedDivisor normalised_;
+};
+
 using s47_16 = fixed64<16>;
 using s40_23 = fixed64<23>;
 
@@ -409,6 +437,81 @@ constexpr fixed64<F> dot_product(int n, const fixed64<F>* a, const fixed64<F>* b
   detail::Uint128 m{static_cast<std::uint64_t>(high), low};
   if (negative) m = detail::Uint128{0, 0} - m;
   return fixed64<F>::from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(m, F)));
+}
+
+namespace detail {
+/// The few-pairs dot products' fast path: adds the raw x y to `sum` with one signed 32 x 32-bit
+/// product, and marks `slow` when x or y does not fit int32 or the sum leaves 64 bits.
+template <bool kSubtract = false>
+__attribute__((always_inline)) constexpr void add_raw_product(std::int64_t x, std::int64_t y, std::int64_t& sum,
+                                                              bool& slow) {
+  const auto x32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(x));
+  const auto y32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(y));
+  slow |= ((x ^ x32) | (y ^ y32)) != 0;
+  if (kSubtract)
+    slow |= __builtin_sub_overflow(sum, std::int64_t{x32} * y32, &sum);
+  else
+    slow |= __builtin_add_overflow(sum, std::int64_t{x32} * y32, &sum);
+}
+
+/// round(sum / 2^F), halves away from zero, as a raw value; marks `slow` when that leaves 64 bits.
+template <int F>
+__attribute__((always_inline)) constexpr std::int64_t rounded_raw_sum(std::int64_t sum, bool& slow) {
+  // floor((s + 2^(F-1) - 1) / 2^F) for s < 0 is -round(|s| / 2^F) with halves away from 0.
+  std::int64_t rounded = 0;
+  slow |= __builtin_add_overflow(sum, (std::int64_t{1} << (F - 1)) - (sum < 0 ? 1 : 0), &rounded);
+  return rounded >> F;
+}
+
+/// dot_product over two or three pairs passed by value: the few-pairs forms' slow path, out of
+/// line so that their fast path keeps the operands in registers.
+template <int F>
+__attribute__((noinline)) constexpr fixed64<F> dot_product_of_pairs(fixed64<F> a0, fixed64<F> b0, fixed64<F> a1,
+                                                                    fixed64<F> b1, fixed64<F> a2, fixed64<F> b2) {
+  const fixed64<F> a[3] = {a0, a1, a2}, b[3] = {b0, b1, b2};
+  return dot_product(3, a, b);
+}
+}  // namespace detail
+
+/// a0 b0 + a1 b1 (+ a2 b2) as dot_product gives it (the exact sum, rounded once), inline for
+/// the per-point loops (a 3-vector's rotation, cross product or projection): when every operand
+/// fits int32 (|x| < 256 for S40.23), one signed 32 x 32-bit product each and a 64-bit sum; any
+/// other operand, or a sum past 64 bits, takes dot_product.
+template <int F>
+__attribute__((always_inline)) constexpr fixed64<F> dot_product(fixed64<F> a0, fixed64<F> b0, fixed64<F> a1,
+                                                                fixed64<F> b1) {
+  std::int64_t sum = 0;
+  bool slow = false;
+  detail::add_raw_product(a0.raw(), b0.raw(), sum, slow);
+  detail::add_raw_product(a1.raw(), b1.raw(), sum, slow);
+  const std::int64_t rounded = detail::rounded_raw_sum<F>(sum, slow);
+  if (__builtin_expect(slow, 0)) return detail::dot_product_of_pairs(a0, b0, a1, b1, fixed64<F>(), fixed64<F>());
+  return fixed64<F>::from_raw(rounded);
+}
+/// a0 b0 - a1 b1 as dot_product gives a0 b0 + (-a1) b1 (a1 = lowest() counts as -max()),
+/// inline as the few-pairs dot_product: a cross product's components.
+template <int F>
+__attribute__((always_inline)) constexpr fixed64<F> difference_of_products(fixed64<F> a0, fixed64<F> b0,
+                                                                           fixed64<F> a1, fixed64<F> b1) {
+  std::int64_t sum = 0;
+  bool slow = false;
+  detail::add_raw_product(a0.raw(), b0.raw(), sum, slow);
+  detail::add_raw_product<true>(a1.raw(), b1.raw(), sum, slow);
+  const std::int64_t rounded = detail::rounded_raw_sum<F>(sum, slow);
+  if (__builtin_expect(slow, 0)) return detail::dot_product_of_pairs(a0, b0, -a1, b1, fixed64<F>(), fixed64<F>());
+  return fixed64<F>::from_raw(rounded);
+}
+template <int F>
+__attribute__((always_inline)) constexpr fixed64<F> dot_product(fixed64<F> a0, fixed64<F> b0, fixed64<F> a1,
+                                                                fixed64<F> b1, fixed64<F> a2, fixed64<F> b2) {
+  std::int64_t sum = 0;
+  bool slow = false;
+  detail::add_raw_product(a0.raw(), b0.raw(), sum, slow);
+  detail::add_raw_product(a1.raw(), b1.raw(), sum, slow);
+  detail::add_raw_product(a2.raw(), b2.raw(), sum, slow);
+  const std::int64_t rounded = detail::rounded_raw_sum<F>(sum, slow);
+  if (__builtin_expect(slow, 0)) return detail::dot_product_of_pairs(a0, b0, a1, b1, a2, b2);
+  return fixed64<F>::from_raw(rounded);
 }
 
 /// y[i] += s * x[i] for i < n, bit for bit as those operators give it (each product rounded, each

@@ -123,19 +123,34 @@ constexpr Digit divide_digit(std::uint64_t u, std::uint32_t d, std::uint32_t v) 
   return {q, static_cast<std::uint32_t>(r)};
 }
 
-/// Divides n by a nonzero d below 2^32: two digits of divide_digit by the normalised divisor.
-constexpr Division divide(std::uint64_t n, std::uint32_t d) {
+/// A nonzero divisor below 2^32 made ready for divide: shifted left by `shift` so that its top
+/// bit is set, with that value's reciprocal. Most of a division's work, done once for several
+/// dividends.
+struct NormalisedDivisor {
+  std::uint32_t divisor = 0;     ///< d 2^shift
+  std::uint32_t reciprocal = 0;  ///< reciprocal(divisor)
+  int shift = 0;
+};
+constexpr NormalisedDivisor normalise(std::uint32_t d) {
   const int s = leading_zeros(d);
-  d <<= s;
-  const std::uint32_t v = reciprocal(d);
-  const std::uint64_t top = s == 0 ? 0 : n >> (64 - s);  // below 2^s <= d
-  const std::uint64_t ns = n << s;
-  const std::uint64_t upper = (top << 32) | (ns >> 32);
+  return {d << s, reciprocal(d << s), s};
+}
+
+/// Divides n by the normalised divisor: two digits of divide_digit.
+constexpr Division divide(std::uint64_t n, const NormalisedDivisor& nd) {
+  const int s = nd.shift;
+  const std::uint32_t d = nd.divisor, v = nd.reciprocal;
+  // n 2^s in two parts: its digits above the lowest (below 2^s d) and the lowest; s < 32.
+  const std::uint64_t upper = n >> (32 - s);
+  const auto lowest = static_cast<std::uint32_t>(n) << s;
   Digit high{0, static_cast<std::uint32_t>(upper)};  // a quotient below 2^32 skips the first digit
   if (upper >= d) high = divide_digit(upper, d, v);
-  const Digit low = divide_digit((std::uint64_t{high.remainder} << 32) | static_cast<std::uint32_t>(ns), d, v);
+  const Digit low = divide_digit((std::uint64_t{high.remainder} << 32) | lowest, d, v);
   return {(std::uint64_t{high.quotient} << 32) | low.quotient, low.remainder >> s};
 }
+
+/// Divides n by a nonzero d below 2^32.
+constexpr Division divide(std::uint64_t n, std::uint32_t d) { return divide(n, normalise(d)); }
 
 /// Divides `n` by `d` (d != 0, n.hi < d so that the quotient fits in 64 bits).
 /// Knuth's algorithm D with base 2^32: the divisor is normalised so that its top bit is set,
