@@ -21,6 +21,7 @@ DECLARE(test_cylinder_windows);
 DECLARE(test_line_in_triangle);
 DECLARE(test_detector_core);
 DECLARE(test_template_files);
+DECLARE(test_order_statistic);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -42,6 +43,7 @@ void register_tests() {
   REGISTER(test_line_in_triangle);
   REGISTER(test_detector_core);
   REGISTER(test_template_files);
+  REGISTER(test_order_statistic);
 }
 
 DEFINE_MAIN

@@ -10,7 +10,7 @@
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/normal_equations_lm.h"
-#include "order_statistic.h"
+#include "edgetrack/order_statistic.h"
 #include "netlib/minpack.h"
 #include "real/divisor.h"
 #include "real/sum_of_products.h"
