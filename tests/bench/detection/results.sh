@@ -10,7 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
 trials=300
-arm_trials=10
+arm_trials=30
 cpi=1.5  # assumed XScale cycles per instruction for the 624 MHz estimate
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/detection_bench.XXXXXX")
