@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <type_traits>
 #include <utility>
 
 #include "edgetrack/pinhole_camera.h"
@@ -351,25 +352,23 @@ inline int32_t depth_at(const PixelTriangle& t, int x, int y) {
 /// the segment is steeper than 45 degrees), the nearest to the exact line; w is interpolated.
 template <class Plot>
 void draw_line(const LineWalk& line, int width, int height, Plot&& plot) {
-  int64_t minor = line.minor, w = line.w;
+  // On the image (a clipped segment is, but for rounding), no pixel needs the test.
   const PixelRect box = line_box(line);
-  if (box.x0 >= 0 && box.x1 < width && box.y0 >= 0 && box.y1 < height) {
-    // On the image (a clipped segment is, but for rounding): no pixel needs the test.
+  const bool inside = box.x0 >= 0 && box.x1 < width && box.y0 >= 0 && box.y1 < height;
+  auto walk = [&](auto border_test) {
+    int64_t minor = line.minor, w = line.w;
     for (int k = 0, m = line.first; k < line.count; ++k, m += line.dir) {
       const int n = LineWalk::minor_pixel(minor);
-      plot(line.x_major ? m : n, line.x_major ? n : m, static_cast<int32_t>(w >> 16));
+      const int x = line.x_major ? m : n, y = line.x_major ? n : m;
+      if (!border_test || (x >= 0 && x < width && y >= 0 && y < height)) plot(x, y, static_cast<int32_t>(w >> 16));
       minor += line.minor_step;
       w += line.w_step;
     }
-    return;
-  }
-  for (int k = 0, m = line.first; k < line.count; ++k, m += line.dir) {
-    const int n = LineWalk::minor_pixel(minor);
-    const int x = line.x_major ? m : n, y = line.x_major ? n : m;
-    if (x >= 0 && x < width && y >= 0 && y < height) plot(x, y, static_cast<int32_t>(w >> 16));
-    minor += line.minor_step;
-    w += line.w_step;
-  }
+  };
+  if (inside)
+    walk(std::false_type{});
+  else
+    walk(std::true_type{});
 }
 
 template <class Plot>

@@ -47,16 +47,7 @@ class vpMeResponse {
     // The limits in locals: stores to `out` could otherwise alias them and reload them per pixel.
 #if defined(__SSE2__)
     if (padded_ && size_ == 5) {
-      const int first = first_, last_i = last_i_, last_j = last_j_, sign = sign_, half = half_;
-      const unsigned char* bitmap = image_.bitmap;
-      const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
-      __m128i weights[5];
-      for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
-      for (int k = 0; k < n; ++k) {
-        const int row = i[k], column = j[k];
-        const bool out_of_image = row < first || row > last_i || column < first || column > last_j;
-        out[k] = out_of_image ? 0 : sign * padded_sum_5(weights, bitmap + (row - half) * stride + (column - half), stride);
-      }
+      padded_each_5<true>(i, j, n, out);
       return;
     }
 #endif
@@ -78,13 +69,7 @@ class vpMeResponse {
   void at_each_along(const int* i, const int* j, int n, int* out) const {
 #if defined(__SSE2__)
     if (padded_ && size_ == 5 && n > 0 && !outside(i[0], j[0]) && !outside(i[n - 1], j[n - 1])) {
-      const int sign = sign_, half = half_;
-      const unsigned char* bitmap = image_.bitmap;
-      const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
-      __m128i weights[5];
-      for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
-      for (int k = 0; k < n; ++k)
-        out[k] = sign * padded_sum_5(weights, bitmap + (i[k] - half) * stride + (j[k] - half), stride);
+      padded_each_5<false>(i, j, n, out);
       return;
     }
 #endif
@@ -170,6 +155,22 @@ class vpMeResponse {
 
   /// padded_sum<5> of the window whose top-left pixel is at `window`, the mask's rows already in
   /// registers.
+  /// at_each's vector path for the 5 x 5 mask: the mask's rows loaded once for the batch; with
+  /// kBorderTest false the caller knows every pixel lies inside.
+  template <bool kBorderTest>
+  void padded_each_5(const int* i, const int* j, int n, int* out) const {
+    const int first = first_, last_i = last_i_, last_j = last_j_, sign = sign_, half = half_;
+    const unsigned char* bitmap = image_.bitmap;
+    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+    __m128i weights[5];
+    for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
+    for (int k = 0; k < n; ++k) {
+      const int row = i[k], column = j[k];
+      const bool out_of_image = kBorderTest && (row < first || row > last_i || column < first || column > last_j);
+      out[k] = out_of_image ? 0 : sign * padded_sum_5(weights, bitmap + (row - half) * stride + (column - half), stride);
+    }
+  }
+
   static int padded_sum_5(const __m128i (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
     static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
     const __m128i zero = _mm_setzero_si128();
