@@ -413,6 +413,11 @@ void vpMeEllipse::computeMoments() {
 
 void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, const vpImagePoint& center_p, real a_p, real b_p,
                                real e_p, real low_alpha, real high_alpha) {
+  initArcTracking(I, center_p, a_p, b_p, e_p, low_alpha, high_alpha);
+}
+
+void vpMeEllipse::initArcTracking(const vpImage<unsigned char>& I, const vpImagePoint& center_p, real a_p, real b_p,
+                                  real e_p, real low_alpha, real high_alpha) {
   using std::cos;
   using std::sin;
   m_trackArc = true;

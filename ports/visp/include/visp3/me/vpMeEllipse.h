@@ -100,7 +100,7 @@ class vpMeEllipse : public vpMeTracker {
                                                                            const vpImagePoint& center_p, double a_p,
                                                                            double b_p, double e_p, double low_alpha,
                                                                            double high_alpha) {
-    initTracking(I, center_p, real(a_p), real(b_p), real(e_p), real(low_alpha), real(high_alpha));
+    initArcTracking(I, center_p, real(a_p), real(b_p), real(e_p), real(low_alpha), real(high_alpha));
   }
 #endif
   [[deprecated("use initTracking(I, points)")]] void initTracking(const vpImage<unsigned char>& I, unsigned int n,
@@ -145,6 +145,10 @@ class vpMeEllipse : public vpMeTracker {
   void updateTheta();
 
  private:
+  /// The body of the deprecated arc overloads: the double one calls it rather than the deprecated
+  /// real one, which would warn wherever this header is included.
+  void initArcTracking(const vpImage<unsigned char>& I, const vpImagePoint& center_p, real a_p, real b_p, real e_p,
+                       real low_alpha, real high_alpha);
   /// K from a unit null vector of the system in coordinates normalised by (um, vm).
   void denormalise(const vpColVector& kernel, real um, real vm);
   /// A site on the ellipse at angle ang, snapped within +-2 pixels; false when lost or outside.
