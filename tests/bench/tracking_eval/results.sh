@@ -250,22 +250,25 @@ echo
 echo "Where the clutter error comes from (\`tracking_eval_clutter_dynamics\`, docs/ME.md): the mean over the"
 echo "frames of the camera position error (mm) of the tracker run through the sequence (\"tracked\"), of each"
 echo "frame solved alone from its own true pose with the contrasts taken there (\"alone\": what the moving"
-echo "edges leave at that frame), and of each frame solved after the previous one was solved from its true"
-echo "pose (\"one step\"); double, the defaults. Seeds 1 / 2 / 3."
+echo "edges leave at that frame), of each frame solved after the previous one was solved from its true"
+echo "pose (\"one step\"), and of alone's matches within a pixel of their edge solved again from the true pose"
+echo "(\"near\": what is left were every match farther off known to be wrong, so what the edges' own"
+echo "localisation beside the lines allows); double, the defaults. Seeds 1 / 2 / 3."
 echo
-echo "| sequence | clutter mm | tracked mm | alone mm | one step mm |"
-echo "|---|---:|---|---|---|"
+echo "| sequence | clutter mm | tracked mm | alone mm | one step mm | near mm |"
+echo "|---|---:|---|---|---|---|"
 for model in cube60 wood_toy; do
   for mm in 0 $clutter_offsets; do
     seeds=$clutter_seeds; [ "$mm" = 0 ] && seeds=1
-    tracked=() alone=() step=()
+    tracked=() alone=() step=() near=()
     for seed in $seeds; do
       if [ "$mm" = 0 ]; then name=$(clutter_sequence "$model" 0); else name=$(clutter_seed_sequence "$model" "$mm" "$seed"); fi
-      read -r _ t a o < <("$dynamics" "$models/$model.cao" "$work/$name" | grep '^mean ')
-      tracked+=("$t") alone+=("$a") step+=("$o")
+      read -r _ t a o n < <("$dynamics" "$models/$model.cao" "$work/$name" | grep '^mean ')
+      tracked+=("$t") alone+=("$a") step+=("$o") near+=("$n")
     done
     join() { local IFS=/; echo "$*" | sed 's|/| / |g'; }
-    printf '| %s | %s | %s | %s | %s |\n' "$(model_name "$model")" "$mm" "$(join "${tracked[@]}")" "$(join "${alone[@]}")" "$(join "${step[@]}")"
+    printf '| %s | %s | %s | %s | %s | %s |\n' "$(model_name "$model")" "$mm" "$(join "${tracked[@]}")" "$(join "${alone[@]}")" \
+      "$(join "${step[@]}")" "$(join "${near[@]}")"
   done
 done
 echo
