@@ -89,12 +89,15 @@ struct DetectorParams {
   /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
   real suppress_deg = real(16);
   real suppress_radii = real(0.25);
-  /// When no refined candidate is acceptable, the one keeping the most control points (not lost,
-  /// its support at least min_support) is refined again from its pose tilted by this many degrees
+  /// When no refined candidate is confidently right (confident_scale_px), the best one (the
+  /// detection's order: acceptable first, then the most control points kept; not lost, its
+  /// support at least min_support) is refined again from its pose tilted by this many degrees
   /// about the camera's x and y axes through the model's centre (4 starts; each only the
   /// tracking-range run and the settling), until one is confidently right. A still image's
   /// refinement can settle in a neighbouring minimum a few degrees off (a parallel edge a face's
-  /// thickness away taken for the model's, a tilt the outline hardly shows). A match is up to half a step of the sphere's directions off its
+  /// thickness away taken for the model's, a tilt the outline hardly shows), where it may even
+  /// be acceptable: right poses fit within a quarter pixel, and most acceptable ones that do
+  /// not are a few degrees off. A match is up to half a step of the sphere's directions off its
   /// view (the step: 16 degrees at 2 subdivisions), and the refinement reaches that far, so
   /// half a step to one side is within its reach of the truth's side. 0: no restarts.
   real restart_tilt_deg = real(8);
@@ -114,7 +117,7 @@ struct DetectorParams {
   real max_residual_scale_px = real(0.5);
   /// Candidates are refined best first until one is found with a residual scale at most this
   /// (px): the moving edges' sites within their pixel of the model's lines, a fit that no other
-  /// candidate's could better.
+  /// candidate's could better. A confident candidate wins over an acceptable one that is not.
   real confident_scale_px = real(0.25);
   /// The most control points the screening and refining frames of one detection may search
   /// (Detection::points_searched; 0: no limit): a detection's cost past the matching is about
