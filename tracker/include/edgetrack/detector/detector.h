@@ -29,8 +29,11 @@ struct DetectorParams {
   /// from the last, with the contrasts and weights a tracked frame gives it):
   /// `refine_iterations` with the tracking settings' range; when that does not end in an
   /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
-  /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
-  /// template's), then `refine_iterations` with the tracking range. The better of the two is
+  /// to `wide_range`, then `refine_iterations` with the tracking range. A match's pose is the
+  /// nearest template's, up to the grid's reach off (14 degrees, docs/results/detection.md); a
+  /// turn that large moves the outline of a model some 75 px in radius in the image (60 mm
+  /// across at 150 mm) by up to 18 px, which a first frame's search (twice the range) reaches
+  /// from range 10 and not from 6 (12 px, about 9 degrees). The better of the two is
   /// run again for `given_iterations` from its pose as a given one (Tracker::StartPose::kGiven:
   /// the contrasts taken where it puts the model's edges, the first solve weighted at it), which
   /// is kept when better: the guessed runs take each point's strongest edge in the range, and
@@ -42,7 +45,7 @@ struct DetectorParams {
   /// inner edges, background lines) that pull a single frame's pose away from it.
   int refine_iterations = 6;
   int wide_iterations = 4;
-  unsigned wide_range = 6;
+  unsigned wide_range = 10;
   int fine_iterations = 8;
   unsigned fine_range = 2;
   int given_iterations = 6;
