@@ -20,9 +20,11 @@ bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
          c.support >= params.min_support && c.residual_scale <= params.max_residual_scale_px;
 }
 
-/// Acceptable and fitting within DetectorParams::confident_scale_px.
+/// Acceptable, fitting within DetectorParams::confident_scale_px and keeping at least
+/// confident_kept_share of the visible points.
 bool confident(const RefinedCandidate& c, const DetectorParams& params) {
-  return acceptable(c, params) && c.residual_scale <= params.confident_scale_px;
+  return acceptable(c, params) && c.residual_scale <= params.confident_scale_px &&
+         c.kept_share >= params.confident_kept_share;
 }
 
 /// Better: acceptable over not, confident over not (right poses fit within the edges'
@@ -74,6 +76,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.given_iterations < 0 || p.given_iterations > 50) return bad("given refining frames must be 0 to 50");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   if (!(p.min_support >= real(0)) || p.min_support > real(1)) return bad("the support must be 0 to 1");
+  if (!(p.confident_kept_share >= p.min_kept_share) || p.confident_kept_share > real(1))
+    return bad("the confident kept share must be from the least kept share to 1");
   if (!(p.confident_scale_px >= real(0)) || p.confident_scale_px > p.max_residual_scale_px ||
       p.max_residual_scale_px > real(10))
     return bad("the residual scales must be 0 <= confident <= most <= 10 px");

@@ -92,7 +92,7 @@ struct DetectorParams {
   /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
   real suppress_deg = real(16);
   real suppress_radii = real(0.25);
-  /// When no refined candidate is confidently right (confident_scale_px), the best one (the
+  /// When no refined candidate is confident (confident_scale_px, confident_kept_share), the best one (the
   /// detection's order: acceptable first, then the most control points kept; not lost, its
   /// support at least min_support) is refined again from its pose tilted by this many degrees
   /// about the camera's x and y axes through the model's centre (4 starts; each only the
@@ -122,6 +122,12 @@ struct DetectorParams {
   /// (px): the moving edges' sites within their pixel of the model's lines, a fit that no other
   /// candidate's could better. A confident candidate wins over an acceptable one that is not.
   real confident_scale_px = real(0.25);
+  /// A confident fit also keeps at least this share of the visible control points: a pose
+  /// nearer or farther, or turned, whose image lines up with a part of the object's edges fits
+  /// that part as closely and leaves the rest unexplained (wrong ones of the generated cube kept
+  /// 0.7 to 0.8), while a right one keeps all but the points of an edge the light leaves faint
+  /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
+  real confident_kept_share = real(0.8);
   /// The most control points the screening and refining frames of one detection may search
   /// (Detection::points_searched; 0: no limit): a detection's cost past the matching is about
   /// proportional to them, and without a limit a frame whose matches all fail costs every
