@@ -169,13 +169,15 @@ void check_restart_from_acceptable() {
   TEST("templates are made", templates.ok(), true);
   if (!templates.ok()) return;
   const DetectorParams params;
-  Result<Detector> detector = Detector::create(model.value(), camera, std::move(templates).value(), params, TrackerParams{});
+  Result<Detector> detector =
+      Detector::create(model.value(), camera, std::move(templates).value(), params, TrackerParams{});
   TEST("the detector is made", detector.ok(), true);
   if (!detector.ok()) return;
   Rgb565Frame frame;
   render_trial(model.value(), camera, truth, true, kLines, seed, frame);
-  const Detection d =
-      detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
+  const Detection d = detector.value()
+                          .detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565))
+                          .value();
   const PoseError e = pose_error(d.camera_from_model, truth, extent.centre, cube_symmetries());
   std::printf("found %d, %.3f mm %.3f deg, %zu candidates refined:\n", d.found, e.centre_mm, e.rotation_deg,
               d.refined.size());
@@ -184,12 +186,14 @@ void check_restart_from_acceptable() {
            c.support >= params.min_support && c.residual_scale <= params.max_residual_scale_px;
   };
   const auto confident = [&](const RefinedCandidate& c) {
-    return acceptable(c) && c.residual_scale <= params.confident_scale_px && c.kept_share >= params.confident_kept_share;
+    return acceptable(c) && c.residual_scale <= params.confident_scale_px &&
+           c.kept_share >= params.confident_kept_share;
   };
   // The restarts come last, all from one candidate's match (up to 4, ending at the first
   // confident one); the candidates before them are the matches' own.
   size_t first_restart = d.refined.size();
-  while (first_restart > 0 && d.refined[first_restart - 1].match.template_index == d.refined.back().match.template_index)
+  while (first_restart > 0 &&
+         d.refined[first_restart - 1].match.template_index == d.refined.back().match.template_index)
     --first_restart;
   int acceptable_before = 0, confident_before = 0, restarted_from = 0;
   for (size_t k = 0; k < d.refined.size(); ++k) {
@@ -206,7 +210,8 @@ void check_restart_from_acceptable() {
   TEST("the last candidates were refined again from one of them, from tilted starts",
        restarted_from == 1 && d.refined.size() - first_restart <= 4, true);
   TEST("a tilted start is confident", confident(d.refined.back()), true);
-  TEST("and wins: the pose is found within 2 mm and 2 degrees", d.found && e.centre_mm <= 2 && e.rotation_deg <= 2, true);
+  TEST("and wins: the pose is found within 2 mm and 2 degrees", d.found && e.centre_mm <= 2 && e.rotation_deg <= 2,
+       true);
 }
 
 }  // namespace
