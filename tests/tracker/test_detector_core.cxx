@@ -400,6 +400,10 @@ void test_detector_params() {
        refused([](DetectorParams& p) { p.restart_tilt_deg = real(100); }), true);
   TEST("no restarts (a tilt of 0) are accepted",
        refused([](DetectorParams& p) { p.restart_tilt_deg = real(0); }), false);
+  TEST("a confident kept share under the least kept share is refused",
+       refused([](DetectorParams& p) { p.confident_kept_share = p.min_kept_share - real(0.1); }), true);
+  TEST("a confident kept share equal to the least kept share is accepted",
+       refused([](DetectorParams& p) { p.confident_kept_share = p.min_kept_share; }), false);
 }
 
 }  // namespace

@@ -20,6 +20,7 @@ DECLARE(test_frame_layouts);
 DECLARE(test_detection_cube);
 DECLARE(test_detection_wood_toy);
 DECLARE(test_detection_refine_from_truth);
+DECLARE(test_detection_restarts);
 DECLARE(test_auto_init_recovery);
 DECLARE(test_pose_uncertainty_measure);
 DECLARE(test_pose_unconstrained_leaving_view);
@@ -47,6 +48,7 @@ void register_tests() {
   REGISTER(test_detection_cube);
   REGISTER(test_detection_wood_toy);
   REGISTER(test_detection_refine_from_truth);
+  REGISTER(test_detection_restarts);
   REGISTER(test_auto_init_recovery);
   REGISTER(test_pose_uncertainty_measure);
   REGISTER(test_pose_unconstrained_leaving_view);

@@ -20,12 +20,22 @@ bool acceptable(const RefinedCandidate& c, const DetectorParams& params) {
          c.support >= params.min_support && c.residual_scale <= params.max_residual_scale_px;
 }
 
-/// Better: acceptable over not, then more control points kept (a pose too far away, whose
-/// smaller image lines up with a part of the object's edges, keeps as large a share of fewer
-/// points), then the smaller residual scale.
+/// Acceptable, fitting within DetectorParams::confident_scale_px and keeping at least
+/// confident_kept_share of the visible points.
+bool confident(const RefinedCandidate& c, const DetectorParams& params) {
+  return acceptable(c, params) && c.residual_scale <= params.confident_scale_px &&
+         c.kept_share >= params.confident_kept_share;
+}
+
+/// Better: acceptable over not, confident over not (right poses fit within the edges'
+/// localisation, a few degrees off keeps whole edges that far away), then more control points
+/// kept (a pose too far away, whose smaller image lines up with a part of the object's edges,
+/// keeps as large a share of fewer points), then the smaller residual scale.
 bool better(const RefinedCandidate& a, const RefinedCandidate& b, const DetectorParams& params) {
   const bool aa = acceptable(a, params), ba = acceptable(b, params);
   if (aa != ba) return aa;
+  const bool ac = confident(a, params), bc = confident(b, params);
+  if (ac != bc) return ac;
   if (a.kept != b.kept) return a.kept > b.kept;
   return a.residual_scale < b.residual_scale;
 }
@@ -66,6 +76,8 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   if (p.given_iterations < 0 || p.given_iterations > 50) return bad("given refining frames must be 0 to 50");
   if (!(p.min_kept_share >= real(0)) || p.min_kept_share > real(1)) return bad("the kept share must be 0 to 1");
   if (!(p.min_support >= real(0)) || p.min_support > real(1)) return bad("the support must be 0 to 1");
+  if (!(p.confident_kept_share >= p.min_kept_share) || p.confident_kept_share > real(1))
+    return bad("the confident kept share must be from the least kept share to 1");
   if (!(p.confident_scale_px >= real(0)) || p.confident_scale_px > p.max_residual_scale_px ||
       p.max_residual_scale_px > real(10))
     return bad("the residual scales must be 0 <= confident <= most <= 10 px");
@@ -300,8 +312,9 @@ void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
   if (!(params_.restart_tilt_deg > real(0))) return;
   const RefinedCandidate* from = nullptr;
   for (const RefinedCandidate& c : detection.refined) {
-    if (acceptable(c, params_)) return;
-    if (c.status != TrackingStatus::kLost && c.support >= params_.min_support && (!from || c.kept > from->kept)) from = &c;
+    if (confident(c, params_)) return;
+    if (c.status != TrackingStatus::kLost && c.support >= params_.min_support && (!from || better(c, *from, params_)))
+      from = &c;
   }
   if (!from) return;
   const RefinedCandidate base = *from;  // detection.refined grows below
@@ -313,8 +326,7 @@ void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
     // Turned about the camera's axis through the model's centre: the centre stays where it was.
     const Mat33 rotation = rotation_exp(tilt) * base.camera_from_model.rotation();
     detection.refined.push_back(refine_tilted(frame, base.match, Se3(rotation, centre - rotation * centre_in_model)));
-    const RefinedCandidate& last = detection.refined.back();
-    if (acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) return;
+    if (confident(detection.refined.back(), params_)) return;
   }
 }
 
@@ -339,8 +351,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
                                       PixelLayout::kGrey8);
   for (const TemplateMatch& m : screen(grey)) {
     detection.refined.push_back(refine(grey, m, detection.refined));
-    const RefinedCandidate& last = detection.refined.back();
-    if ((acceptable(last, params_) && last.residual_scale <= params_.confident_scale_px) || budget_spent()) break;
+    if (confident(detection.refined.back(), params_) || budget_spent()) break;
   }
   restart_tilted(grey, detection);
   detection.points_searched = points_searched_;

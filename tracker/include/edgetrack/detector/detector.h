@@ -29,8 +29,11 @@ struct DetectorParams {
   /// from the last, with the contrasts and weights a tracked frame gives it):
   /// `refine_iterations` with the tracking settings' range; when that does not end in an
   /// acceptable pose, again from the match: `wide_iterations` with the moving edges' range set
-  /// to `wide_range` (a match's pose can be 20 degrees and several pixels off, the nearest
-  /// template's), then `refine_iterations` with the tracking range. The better of the two is
+  /// to `wide_range`, then `refine_iterations` with the tracking range. A match's pose is the
+  /// nearest template's, up to the grid's reach off (14 degrees, docs/results/detection.md); a
+  /// turn that large moves the outline of a model some 75 px in radius in the image (60 mm
+  /// across at 150 mm) by up to 18 px, which a first frame's search (twice the range) reaches
+  /// from range 10 and not from 6 (12 px, about 9 degrees). The better of the two is
   /// run again for `given_iterations` from its pose as a given one (Tracker::StartPose::kGiven:
   /// the contrasts taken where it puts the model's edges, the first solve weighted at it), which
   /// is kept when better: the guessed runs take each point's strongest edge in the range, and
@@ -42,7 +45,7 @@ struct DetectorParams {
   /// inner edges, background lines) that pull a single frame's pose away from it.
   int refine_iterations = 6;
   int wide_iterations = 4;
-  unsigned wide_range = 6;
+  unsigned wide_range = 10;
   int fine_iterations = 8;
   unsigned fine_range = 2;
   int given_iterations = 6;
@@ -89,12 +92,15 @@ struct DetectorParams {
   /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
   real suppress_deg = real(16);
   real suppress_radii = real(0.25);
-  /// When no refined candidate is acceptable, the one keeping the most control points (not lost,
-  /// its support at least min_support) is refined again from its pose tilted by this many degrees
+  /// When no refined candidate is confident (confident_scale_px, confident_kept_share), the best one (the
+  /// detection's order: acceptable first, then the most control points kept; not lost, its
+  /// support at least min_support) is refined again from its pose tilted by this many degrees
   /// about the camera's x and y axes through the model's centre (4 starts; each only the
   /// tracking-range run and the settling), until one is confidently right. A still image's
   /// refinement can settle in a neighbouring minimum a few degrees off (a parallel edge a face's
-  /// thickness away taken for the model's, a tilt the outline hardly shows). A match is up to half a step of the sphere's directions off its
+  /// thickness away taken for the model's, a tilt the outline hardly shows), where it may even
+  /// be acceptable: right poses fit within a quarter pixel, and most acceptable ones that do
+  /// not are a few degrees off. A match is up to half a step of the sphere's directions off its
   /// view (the step: 16 degrees at 2 subdivisions), and the refinement reaches that far, so
   /// half a step to one side is within its reach of the truth's side. 0: no restarts.
   real restart_tilt_deg = real(8);
@@ -114,8 +120,14 @@ struct DetectorParams {
   real max_residual_scale_px = real(0.5);
   /// Candidates are refined best first until one is found with a residual scale at most this
   /// (px): the moving edges' sites within their pixel of the model's lines, a fit that no other
-  /// candidate's could better.
+  /// candidate's could better. A confident candidate wins over an acceptable one that is not.
   real confident_scale_px = real(0.25);
+  /// A confident fit also keeps at least this share of the visible control points: a pose
+  /// nearer or farther, or turned, whose image lines up with a part of the object's edges fits
+  /// that part as closely and leaves the rest unexplained (wrong ones of the generated cube kept
+  /// 0.7 to 0.8), while a right one keeps all but the points of an edge the light leaves faint
+  /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
+  real confident_kept_share = real(0.8);
   /// The most control points the screening and refining frames of one detection may search
   /// (Detection::points_searched; 0: no limit): a detection's cost past the matching is about
   /// proportional to them, and without a limit a frame whose matches all fail costs every
