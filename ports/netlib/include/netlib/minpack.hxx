@@ -52,34 +52,33 @@ void add_multiple_of(int n, const T& s, const T* x, T* y) {
   }
 }
 
-/// Floating point: C sums of products of `a` with columns b, b + ldb, ..., each summed in
-/// sum_of_products' order in an accumulator of its own, side by side, so that each addition
-/// waits for another column's instead of its own previous one. The same sums bit for bit.
+/// Floating point: C sums of products of `a` with the columns b[0], ..., b[C - 1], each summed in
+/// sum_of_products' order in an accumulator of its own, side by side, so that each addition waits
+/// for another column's instead of its own previous one. The same sums bit for bit.
 template <int C, class T>
-void side_by_side_sums(int n, const T* a, const T* b, int ldb, T* sums) {
+void side_by_side_sums(int n, const T* a, T* const* b, T* sums) {
   T s[C] = {};
   for (int i = 0; i < n; ++i) {
     const T ai = a[i];
-    for (int c = 0; c < C; ++c) s[c] += ai * b[c * ldb + i];
+    for (int c = 0; c < C; ++c) s[c] += ai * b[c][i];
   }
   for (int c = 0; c < C; ++c) sums[c] = s[c];
 }
 
-/// sums[c] = sum_of_products(n, a, b + c * ldb) for c < count, at most 4 side by side.
+/// sums[c] = sum_of_products(n, a, b[c]) for c < count, at most 4 side by side.
 template <class T>
-void sums_of_products(int n, const T* a, const T* b, int ldb, int count, T* sums) {
+void sums_of_products(int n, const T* a, T* const* b, int count, T* sums) {
   if constexpr (std::numeric_limits<T>::is_iec559) {
     for (int first = 0; first < count; first += 4) {
-      const T* const bc = b + first * ldb;
       switch (count - first) {
-        case 1: side_by_side_sums<1>(n, a, bc, ldb, sums + first); break;
-        case 2: side_by_side_sums<2>(n, a, bc, ldb, sums + first); break;
-        case 3: side_by_side_sums<3>(n, a, bc, ldb, sums + first); break;
-        default: side_by_side_sums<4>(n, a, bc, ldb, sums + first); break;
+        case 1: side_by_side_sums<1>(n, a, b + first, sums + first); break;
+        case 2: side_by_side_sums<2>(n, a, b + first, sums + first); break;
+        case 3: side_by_side_sums<3>(n, a, b + first, sums + first); break;
+        default: side_by_side_sums<4>(n, a, b + first, sums + first); break;
       }
     }
   } else {
-    for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b + c * ldb);
+    for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b[c]);
   }
 }
 
@@ -184,11 +183,13 @@ void column_norms(int m, int n, const T* a, int lda, T* norms, const minpack_mac
   }
 }
 
-}  // namespace minpack_detail
-
+/// qrfac, and with `b` (m values, or null) also b replaced by Q^T b: each Householder reflection
+/// is applied to b in the step that makes it, as to the columns still to reduce, with the same
+/// operations lmder applies to its residuals after qrfac (the same products and updates, in
+/// the same order), so that b's sums run beside the columns' instead of after them.
 template <class T>
-void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
-           const minpack_machine<T>& machine) {
+void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa, T* b,
+                    const minpack_machine<T>& machine) {
   using std::sqrt;
   using K = minpack_detail::k<T>;
   using minpack_detail::add_multiple_of;
@@ -236,33 +237,48 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
         for (int i = j; i < m; ++i) aj[i] *= inverse;
       }
       aj[j] += T(1);
-      // Apply it to the remaining columns and update their norms. A column's products with aj
-      // do not depend on the other columns' updates: up to four are summed side by side first.
+      // Apply it to the remaining columns (and b) and update their norms. A column's products
+      // with aj do not depend on the other columns' updates: up to four are summed side by side.
       constexpr int kSideBySide = 4;
-      T products[kSideBySide];
-      for (int k = j + 1; k < n; ++k) {
-        T* const ak = a + k * lda;
-        const int group = (k - j - 1) % kSideBySide;
-        if (group == 0) {
-          const int count = n - k < kSideBySide ? n - k : kSideBySide;
-          minpack_detail::sums_of_products(m - j, aj + j, ak + j, lda, count, products);
+      const int count = n - j - 1 + (b ? 1 : 0);
+      for (int first = 0; first < count; first += kSideBySide) {
+        const int group = count - first < kSideBySide ? count - first : kSideBySide;
+        T* targets[kSideBySide];
+        for (int g = 0; g < group; ++g) {
+          const int k = j + 1 + first + g;
+          targets[g] = (k < n ? a + k * lda : b) + j;
         }
-        const T temp = products[group] / aj[j];
-        // ak -= temp aj: negating temp first changes no rounding (both types round symmetrically).
-        add_multiple_of(m - j, -temp, aj + j, ak + j);
-        if (pivot && rdiag[k] != T(0)) {
-          const T ratio = ak[j] / rdiag[k];
-          rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
-          const T drop = rdiag[k] / wa[k];
-          if (K::p05 * (drop * drop) <= machine.epsmch) {
-            rdiag[k] = enorm(m - j - 1, ak + j + 1, machine);
-            wa[k] = rdiag[k];
+        T products[kSideBySide];
+        minpack_detail::sums_of_products(m - j, aj + j, targets, group, products);
+        for (int g = 0; g < group; ++g) {
+          const T temp = products[g] / aj[j];
+          // target -= temp aj: negating temp first changes no rounding (both types round
+          // symmetrically), so b gets lmder's -(sum) / aj[j] update.
+          add_multiple_of(m - j, -temp, aj + j, targets[g]);
+          const int k = j + 1 + first + g;
+          if (pivot && k < n && rdiag[k] != T(0)) {
+            const T* const ak = a + k * lda;
+            const T ratio = ak[j] / rdiag[k];
+            rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
+            const T drop = rdiag[k] / wa[k];
+            if (K::p05 * (drop * drop) <= machine.epsmch) {
+              rdiag[k] = enorm(m - j - 1, ak + j + 1, machine);
+              wa[k] = rdiag[k];
+            }
           }
         }
       }
     }
     rdiag[j] = -ajnorm;
   }
+}
+
+}  // namespace minpack_detail
+
+template <class T>
+void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
+           const minpack_machine<T>& machine) {
+  minpack_detail::householder_qr(m, n, a, lda, pivot, ipvt, rdiag, acnorm, wa, static_cast<T*>(nullptr), machine);
 }
 
 template <class T>
@@ -474,7 +490,9 @@ int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, 
       if ((iter - 1) % nprint == 0) iflag = problem.progress(x, fvec);
       if (iflag < 0) goto done;
     }
-    qrfac(m, n, fjac, ldfjac, true, ipvt, wa1, wa2, wa3, machine);
+    // qtf = the first n components of Q^T fvec: wa4 goes through the factorisation's reflections.
+    for (int i = 0; i < m; ++i) wa4[i] = fvec[i];
+    householder_qr(m, n, fjac, ldfjac, true, ipvt, wa1, wa2, wa3, wa4, machine);
     if (iter == 1) {
       // Scale by the column norms of the first Jacobian; set the first step bound.
       if (mode != 2) {
@@ -485,15 +503,8 @@ int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, 
       delta = factor * xnorm;
       if (delta == T(0)) delta = factor;
     }
-    // qtf = the first n components of Q^T fvec.
-    for (int i = 0; i < m; ++i) wa4[i] = fvec[i];
     for (int j = 0; j < n; ++j) {
-      T* const fj = fjac + j * ldfjac;
-      if (fj[j] != T(0)) {
-        const T temp = -sum_of_products(m - j, fj + j, wa4 + j) / fj[j];
-        add_multiple_of(m - j, temp, fj + j, wa4 + j);
-      }
-      fj[j] = wa1[j];
+      fjac[j + j * ldfjac] = wa1[j];
       qtf[j] = wa4[j];
     }
     // Norm of the scaled gradient, and the gtol test.
