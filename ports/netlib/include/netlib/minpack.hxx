@@ -97,16 +97,23 @@ void side_by_side_sums(int n, const T* a, T* const* b, T* sums) {
   for (int c = 0; c < C; ++c) sums[c] = s[c];
 }
 
-/// sums[c] = sum_of_products(n, a, b[c]) for c < count, at most 4 side by side.
+/// How many sums run side by side: a pose's six Jacobian columns (and with a right-hand side,
+/// the five columns and it that the first reflection updates) in one pass, within x86-64's
+/// sixteen vector registers.
+constexpr int kSideBySide = 6;
+
+/// sums[c] = sum_of_products(n, a, b[c]) for c < count, at most kSideBySide side by side.
 template <class T>
 void sums_of_products(int n, const T* a, T* const* b, int count, T* sums) {
   if constexpr (std::numeric_limits<T>::is_iec559) {
-    for (int first = 0; first < count; first += 4) {
+    for (int first = 0; first < count; first += kSideBySide) {
       switch (count - first) {
         case 1: side_by_side_sums<1>(n, a, b + first, sums + first); break;
         case 2: side_by_side_sums<2>(n, a, b + first, sums + first); break;
         case 3: side_by_side_sums<3>(n, a, b + first, sums + first); break;
-        default: side_by_side_sums<4>(n, a, b + first, sums + first); break;
+        case 4: side_by_side_sums<4>(n, a, b + first, sums + first); break;
+        case 5: side_by_side_sums<5>(n, a, b + first, sums + first); break;
+        default: side_by_side_sums<kSideBySide>(n, a, b + first, sums + first); break;
       }
     }
   } else {
@@ -203,13 +210,15 @@ void side_by_side_norms(int m, const T* a, int lda, T* norms, const minpack_mach
 template <class T>
 void column_norms(int m, int n, const T* a, int lda, T* norms, const minpack_machine<T>& machine) {
   if constexpr (std::numeric_limits<T>::is_iec559) {
-    for (int first = 0; first < n; first += 4) {
+    for (int first = 0; first < n; first += kSideBySide) {
       const T* const column = a + first * lda;
       switch (n - first) {
         case 1: side_by_side_norms<1>(m, column, lda, norms + first, machine); break;
         case 2: side_by_side_norms<2>(m, column, lda, norms + first, machine); break;
         case 3: side_by_side_norms<3>(m, column, lda, norms + first, machine); break;
-        default: side_by_side_norms<4>(m, column, lda, norms + first, machine); break;
+        case 4: side_by_side_norms<4>(m, column, lda, norms + first, machine); break;
+        case 5: side_by_side_norms<5>(m, column, lda, norms + first, machine); break;
+        default: side_by_side_norms<kSideBySide>(m, column, lda, norms + first, machine); break;
       }
     }
   } else {
@@ -272,17 +281,16 @@ void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag
       }
       aj[j] += T(1);
       // Apply it to the remaining columns (and b) and update their norms. A column's products
-      // with aj do not depend on the other columns' updates: up to four are summed side by side.
-      constexpr int kSideBySide = 4;
+      // with aj do not depend on the other columns' updates: they are summed side by side.
       const int count = n - j - 1 + (b ? 1 : 0);
-      for (int first = 0; first < count; first += kSideBySide) {
-        const int group = count - first < kSideBySide ? count - first : kSideBySide;
-        T* targets[kSideBySide];
+      for (int first = 0; first < count; first += minpack_detail::kSideBySide) {
+        const int group = count - first < minpack_detail::kSideBySide ? count - first : minpack_detail::kSideBySide;
+        T* targets[minpack_detail::kSideBySide];
         for (int g = 0; g < group; ++g) {
           const int k = j + 1 + first + g;
           targets[g] = (k < n ? a + k * lda : b) + j;
         }
-        T products[kSideBySide];
+        T products[minpack_detail::kSideBySide];
         minpack_detail::sums_of_products(m - j, aj + j, targets, group, products);
         for (int g = 0; g < group; ++g) {
           const T temp = products[g] / aj[j];
