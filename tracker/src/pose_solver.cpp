@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
 
 #include "edgetrack/millimetres.h"
@@ -340,9 +341,11 @@ real median_of(const std::vector<real>& signed_values, std::vector<real>& values
 /// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
 /// match's used() point) were measured; `distances` become the signed distances to the chosen
 /// ones. The lines through the hypotheses are parallel (one normal), so
-/// delta_h = delta + n . (used - h): no projection per hypothesis.
-void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+/// delta_h = delta + n . (used - h): no projection per hypothesis. Returns whether a match
+/// changed its choice (if none did, `distances` are as they were).
+bool choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
   using std::fabs;
+  bool changed = false;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
     if (m.alternative_count == 0) continue;
@@ -353,11 +356,13 @@ void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real
       const real d = delta + dot(m.point.normal, used - (h == 0 ? m.found : m.alternatives[h - 1]));
       if (fabs(d) < fabs(nearest)) {
         nearest = d;
+        changed = changed || m.chosen != h;
         m.chosen = h;
       }
     }
     distances[i] = nearest;
   }
+  return changed;
 }
 
 /// The signed distances to each match's strongest edge (`found`), from those to its used() one.
@@ -382,6 +387,12 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
     outliers += matches[i].outlier;
   }
   return outliers;
+}
+
+/// Whether two poses hold the same numbers bit for bit (signed zeros told apart).
+bool same_bits(const Se3& a, const Se3& b) {
+  static_assert(std::is_trivially_copyable<Se3>::value && sizeof(Se3) == 12 * sizeof(real), "Se3 is 12 reals");
+  return std::memcmp(&a, &b, sizeof(Se3)) == 0;
 }
 
 /// The largest |after - before| over the matches: how far a round moved a match along its normal
@@ -438,18 +449,24 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   }
 
   weights.resize(matches.size());
+  bool moved = true;  // whether the last round changed the pose
   for (int round = 0; round < params.robust_rounds; ++round) {
-    choose_nearest_hypotheses(matches, distances);
+    const bool rechosen = choose_nearest_hypotheses(matches, distances);
+    // After a round that left the pose as it was, the same choices and distances would give
+    // this round the same weights, start and solve, ending where that one did: so would every
+    // round after it.
+    if (!moved && !rechosen && distances == workspace.before_round) break;
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    const bool watch = params.rounds_settled_px > real(0);
-    if (watch) workspace.before_round = distances;
+    workspace.before_round = distances;
     const SolveResult robust_solve =
         solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
+    moved = !same_bits(robust_solve.pose, solution.camera_from_model);
     solution.camera_from_model = robust_solve.pose;
+    const bool watch = params.rounds_settled_px > real(0);
     if (watch && largest_move(workspace.before_round, distances) <= params.rounds_settled_px) break;
   }
   measure_end_rms(workspace, solution);
