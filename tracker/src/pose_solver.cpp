@@ -41,6 +41,35 @@ __attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y)
           sum_of_products(r.m[2][0], y.x, r.m[2][1], y.y, r.m[2][2], y.z)};
 }
 
+/// One evaluation's loop over the matches: the camera-frame point (X, Y, Z) = z + t, its X, Y and
+/// 1 / Z, and delta = (a X + b Y + c Z) / Z, times the weight when there are weights (`weight`
+/// not null); false (the arrays then partly written) when a point is not in front of the camera.
+/// The arrays are restrict parameters (none overlaps another) and, in floating point, the depth
+/// test is a pass of its own, so that the host compiler takes two matches per vector
+/// instruction, each lane the operations of one match.
+bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, const real* __restrict zy,
+                        const real* __restrict zz, const real* __restrict a, const real* __restrict b,
+                        const real* __restrict c, const real* __restrict weight, real* __restrict x,
+                        real* __restrict y, real* __restrict inv_z, real* __restrict delta, real* __restrict fx) {
+  constexpr bool kFloating = std::is_floating_point<real>::value;
+  if constexpr (kFloating)
+    for (size_t i = 0; i < n; ++i)
+      if (zz[i] + t.z <= real(0)) return false;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
+    if (!kFloating && p.z <= real(0)) return false;
+    x[i] = p.x;
+    y[i] = p.y;
+    // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
+    const Divisor<real> by_z(p.z);
+    inv_z[i] = by_z.divide(real(1));
+    const real d = by_z.divide(sum_of_products(a[i], p.x, b[i], p.y, c[i], p.z));
+    delta[i] = d;
+    fx[i] = weight ? weight[i] * d : d;
+  }
+  return true;
+}
+
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
 /// in the workspace's memory.
 class PointToLineProblem {
@@ -173,18 +202,9 @@ class PointToLineProblem {
       for (size_t i = 0; i < count_; ++i) set(z, i, r * Vec3{q[0][i], q[1][i], q[2][i]});
     }
     const std::vector<real>* z = turned_;
-    for (size_t i = 0; i < count_; ++i) {
-      const Vec3 pi = Vec3{z[0][i], z[1][i], z[2][i]} + t;
-      if (pi.z <= real(0)) return false;
-      p[0][i] = pi.x;
-      p[1][i] = pi.y;
-      // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
-      const Divisor<real> by_z(pi.z);
-      inv_z[i] = by_z.divide(real(1));
-      const real d = by_z.divide(sum_of_products(u[0][i], pi.x, u[1][i], pi.y, u[2][i], pi.z));
-      delta[i] = d;
-      fx[i] = weighted_ ? weights_[i] * d : d;
-    }
+    if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(), u[2].data(),
+                            weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta, fx))
+      return false;
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
     evaluated_ = true;
     return true;
