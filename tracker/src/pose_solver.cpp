@@ -41,6 +41,24 @@ __attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y)
           sum_of_products(r.m[2][0], y.x, r.m[2][1], y.y, r.m[2][2], y.z)};
 }
 
+/// out_i = turn(in_i) for each point of a structure of arrays (x, y, z arrays), on restrict
+/// parameters, so that the host compiler vectorises it as distances_to_lines.
+template <class Turn>
+void turn_points(size_t n, const Turn& turn, const real* __restrict x, const real* __restrict y,
+                 const real* __restrict z, real* __restrict out_x, real* __restrict out_y, real* __restrict out_z) {
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 v = turn(Vec3{x[i], y[i], z[i]});
+    out_x[i] = v.x;
+    out_y[i] = v.y;
+    out_z[i] = v.z;
+  }
+}
+
+/// out_i = w_i a_i, as restrict parameters (see turn_points).
+void weigh(size_t n, const real* __restrict w, const real* __restrict a, real* __restrict out) {
+  for (size_t i = 0; i < n; ++i) out[i] = w[i] * a[i];
+}
+
 /// One evaluation's loop over the matches: the camera-frame point (X, Y, Z) = z + t, its X, Y and
 /// 1 / Z, and delta = (a X + b Y + c Z) / Z, times the weight when there are weights (`weight`
 /// not null); false (the arrays then partly written) when a point is not in front of the camera.
@@ -99,10 +117,12 @@ class PointToLineProblem {
     // The points in millimetres and the distances' coefficients are the solve_pose call's
     // (prepare_matches): only the rotation and the weights differ between its solves.
     const Mat33& r = start.rotation();
-    for (size_t i = 0; i < count_; ++i) {
-      set(w.rotated, i, rotate(r, Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]}));
-      w.gradient[0][i] = weighted_ ? weights[i] * w.unweighted[0][i] : w.unweighted[0][i];
-      w.gradient[1][i] = weighted_ ? weights[i] * w.unweighted[1][i] : w.unweighted[1][i];
+    turn_points(count_, [&r](const Vec3& y) { return rotate(r, y); }, w.model_mm[0].data(), w.model_mm[1].data(),
+                w.model_mm[2].data(), w.rotated[0].data(), w.rotated[1].data(), w.rotated[2].data());
+    for (int k = 0; k < 2; ++k) {
+      if (weighted_) weigh(count_, weights.data(), w.unweighted[k].data(), w.gradient[k].data());
+      else std::copy(w.unweighted[k].begin(), w.unweighted[k].begin() + static_cast<std::ptrdiff_t>(count_),
+                     w.gradient[k].begin());
     }
   }
 
@@ -199,7 +219,8 @@ class PointToLineProblem {
     turned_ = turn ? w_.turned : w_.rotated;
     if (turn) {
       std::vector<real>* z = w_.turned;
-      for (size_t i = 0; i < count_; ++i) set(z, i, r * Vec3{q[0][i], q[1][i], q[2][i]});
+      turn_points(count_, [&r](const Vec3& y) { return r * y; }, q[0].data(), q[1].data(), q[2].data(), z[0].data(),
+                  z[1].data(), z[2].data());
     }
     const std::vector<real>* z = turned_;
     if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(), u[2].data(),
