@@ -102,6 +102,13 @@ void side_by_side_sums(int n, const T* a, T* const* b, T* sums) {
 /// sixteen vector registers.
 constexpr int kSideBySide = 6;
 
+/// Fixed point: sums[c] = sum_of_products(n, a, b[c]) for c < count, out of line: inlined into
+/// the factorisation, GCC's ARMv5TE code for it takes more guest instructions per frame.
+template <class T>
+__attribute__((noinline)) void each_sum_of_products(int n, const T* a, T* const* b, int count, T* sums) {
+  for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b[c]);
+}
+
 /// sums[c] = sum_of_products(n, a, b[c]) for c < count, at most kSideBySide side by side.
 template <class T>
 void sums_of_products(int n, const T* a, T* const* b, int count, T* sums) {
@@ -117,7 +124,7 @@ void sums_of_products(int n, const T* a, T* const* b, int count, T* sums) {
       }
     }
   } else {
-    for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b[c]);
+    each_sum_of_products(n, a, b, count, sums);
   }
 }
 
@@ -283,30 +290,29 @@ void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag
       // Apply it to the remaining columns (and b) and update their norms. A column's products
       // with aj do not depend on the other columns' updates: they are summed side by side.
       const int count = n - j - 1 + (b ? 1 : 0);
-      for (int first = 0; first < count; first += minpack_detail::kSideBySide) {
-        const int group = count - first < minpack_detail::kSideBySide ? count - first : minpack_detail::kSideBySide;
-        T* targets[minpack_detail::kSideBySide];
-        for (int g = 0; g < group; ++g) {
-          const int k = j + 1 + first + g;
-          targets[g] = (k < n ? a + k * lda : b) + j;
+      // Column k of the remaining ones, k == n for b.
+      const auto target = [&](int k) { return (k < n ? a + k * lda : b) + j; };
+      T products[minpack_detail::kSideBySide];
+      for (int k = j + 1; k <= j + count; ++k) {
+        const int slot = (k - j - 1) % minpack_detail::kSideBySide;
+        if (slot == 0) {
+          const int size = j + count + 1 - k < minpack_detail::kSideBySide ? j + count + 1 - k : minpack_detail::kSideBySide;
+          T* group[minpack_detail::kSideBySide];
+          for (int g = 0; g < size; ++g) group[g] = target(k + g);
+          minpack_detail::sums_of_products(m - j, aj + j, group, size, products);
         }
-        T products[minpack_detail::kSideBySide];
-        minpack_detail::sums_of_products(m - j, aj + j, targets, group, products);
-        for (int g = 0; g < group; ++g) {
-          const T temp = products[g] / aj[j];
-          // target -= temp aj: negating temp first changes no rounding (both types round
-          // symmetrically), so b gets lmder's -(sum) / aj[j] update.
-          add_multiple_of(m - j, -temp, aj + j, targets[g]);
-          const int k = j + 1 + first + g;
-          if (pivot && k < n && rdiag[k] != T(0)) {
-            const T* const ak = a + k * lda;
-            const T ratio = ak[j] / rdiag[k];
-            rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
-            const T drop = rdiag[k] / wa[k];
-            if (K::p05 * (drop * drop) <= machine.epsmch) {
-              rdiag[k] = enorm(m - j - 1, ak + j + 1, machine);
-              wa[k] = rdiag[k];
-            }
+        const T temp = products[slot] / aj[j];
+        // target -= temp aj: negating temp first changes no rounding (both types round
+        // symmetrically), so b gets lmder's -(sum) / aj[j] update.
+        add_multiple_of(m - j, -temp, aj + j, target(k));
+        if (pivot && k < n && rdiag[k] != T(0)) {
+          const T* const ak = a + k * lda;
+          const T ratio = ak[j] / rdiag[k];
+          rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
+          const T drop = rdiag[k] / wa[k];
+          if (K::p05 * (drop * drop) <= machine.epsmch) {
+            rdiag[k] = enorm(m - j - 1, ak + j + 1, machine);
+            wa[k] = rdiag[k];
           }
         }
       }
