@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
 
 #include "edgetrack/millimetres.h"
@@ -40,6 +41,53 @@ __attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y)
           sum_of_products(r.m[2][0], y.x, r.m[2][1], y.y, r.m[2][2], y.z)};
 }
 
+/// out_i = turn(in_i) for each point of a structure of arrays (x, y, z arrays), on restrict
+/// parameters, so that the host compiler vectorises it as distances_to_lines.
+template <class Turn>
+void turn_points(size_t n, const Turn& turn, const real* __restrict x, const real* __restrict y,
+                 const real* __restrict z, real* __restrict out_x, real* __restrict out_y, real* __restrict out_z) {
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 v = turn(Vec3{x[i], y[i], z[i]});
+    out_x[i] = v.x;
+    out_y[i] = v.y;
+    out_z[i] = v.z;
+  }
+}
+
+/// out_i = w_i a_i, as restrict parameters (see turn_points).
+void weigh(size_t n, const real* __restrict w, const real* __restrict a, real* __restrict out) {
+  for (size_t i = 0; i < n; ++i) out[i] = w[i] * a[i];
+}
+
+/// One evaluation's loop over the matches: the camera-frame point (X, Y, Z) = z + t, its X, Y and
+/// 1 / Z, and delta = (a X + b Y + c Z) / Z, times the weight when there are weights (`weight`
+/// not null); false (the arrays then partly written) when a point is not in front of the camera.
+/// The arrays are restrict parameters (none overlaps another) and, in floating point, the depth
+/// test is a pass of its own, so that the host compiler takes two matches per vector
+/// instruction, each lane the operations of one match.
+bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, const real* __restrict zy,
+                        const real* __restrict zz, const real* __restrict a, const real* __restrict b,
+                        const real* __restrict c, const real* __restrict weight, real* __restrict x,
+                        real* __restrict y, real* __restrict inv_z, real* __restrict delta, real* __restrict fx) {
+  constexpr bool kFloating = std::is_floating_point<real>::value;
+  if constexpr (kFloating)
+    for (size_t i = 0; i < n; ++i)
+      if (zz[i] + t.z <= real(0)) return false;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
+    if (!kFloating && p.z <= real(0)) return false;
+    x[i] = p.x;
+    y[i] = p.y;
+    // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
+    const Divisor<real> by_z(p.z);
+    inv_z[i] = by_z.divide(real(1));
+    const real d = by_z.divide(sum_of_products(a[i], p.x, b[i], p.y, c[i], p.z));
+    delta[i] = d;
+    fx[i] = weight ? weight[i] * d : d;
+  }
+  return true;
+}
+
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
 /// in the workspace's memory.
 class PointToLineProblem {
@@ -69,10 +117,12 @@ class PointToLineProblem {
     // The points in millimetres and the distances' coefficients are the solve_pose call's
     // (prepare_matches): only the rotation and the weights differ between its solves.
     const Mat33& r = start.rotation();
-    for (size_t i = 0; i < count_; ++i) {
-      set(w.rotated, i, rotate(r, Vec3{w.model_mm[0][i], w.model_mm[1][i], w.model_mm[2][i]}));
-      w.gradient[0][i] = weighted_ ? weights[i] * w.unweighted[0][i] : w.unweighted[0][i];
-      w.gradient[1][i] = weighted_ ? weights[i] * w.unweighted[1][i] : w.unweighted[1][i];
+    turn_points(count_, [&r](const Vec3& y) { return rotate(r, y); }, w.model_mm[0].data(), w.model_mm[1].data(),
+                w.model_mm[2].data(), w.rotated[0].data(), w.rotated[1].data(), w.rotated[2].data());
+    for (int k = 0; k < 2; ++k) {
+      if (weighted_) weigh(count_, weights.data(), w.unweighted[k].data(), w.gradient[k].data());
+      else std::copy(w.unweighted[k].begin(), w.unweighted[k].begin() + static_cast<std::ptrdiff_t>(count_),
+                     w.gradient[k].begin());
     }
   }
 
@@ -169,21 +219,13 @@ class PointToLineProblem {
     turned_ = turn ? w_.turned : w_.rotated;
     if (turn) {
       std::vector<real>* z = w_.turned;
-      for (size_t i = 0; i < count_; ++i) set(z, i, r * Vec3{q[0][i], q[1][i], q[2][i]});
+      turn_points(count_, [&r](const Vec3& y) { return r * y; }, q[0].data(), q[1].data(), q[2].data(), z[0].data(),
+                  z[1].data(), z[2].data());
     }
     const std::vector<real>* z = turned_;
-    for (size_t i = 0; i < count_; ++i) {
-      const Vec3 pi = Vec3{z[0][i], z[1][i], z[2][i]} + t;
-      if (pi.z <= real(0)) return false;
-      p[0][i] = pi.x;
-      p[1][i] = pi.y;
-      // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
-      const Divisor<real> by_z(pi.z);
-      inv_z[i] = by_z.divide(real(1));
-      const real d = by_z.divide(sum_of_products(u[0][i], pi.x, u[1][i], pi.y, u[2][i], pi.z));
-      delta[i] = d;
-      fx[i] = weighted_ ? weights_[i] * d : d;
-    }
+    if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(), u[2].data(),
+                            weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta, fx))
+      return false;
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
     evaluated_ = true;
     return true;
@@ -340,9 +382,11 @@ real median_of(const std::vector<real>& signed_values, std::vector<real>& values
 /// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
 /// match's used() point) were measured; `distances` become the signed distances to the chosen
 /// ones. The lines through the hypotheses are parallel (one normal), so
-/// delta_h = delta + n . (used - h): no projection per hypothesis.
-void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
+/// delta_h = delta + n . (used - h): no projection per hypothesis. Returns whether a match
+/// changed its choice (if none did, `distances` are as they were).
+bool choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real>& distances) {
   using std::fabs;
+  bool changed = false;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
     if (m.alternative_count == 0) continue;
@@ -353,11 +397,13 @@ void choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real
       const real d = delta + dot(m.point.normal, used - (h == 0 ? m.found : m.alternatives[h - 1]));
       if (fabs(d) < fabs(nearest)) {
         nearest = d;
+        changed = changed || m.chosen != h;
         m.chosen = h;
       }
     }
     distances[i] = nearest;
   }
+  return changed;
 }
 
 /// The signed distances to each match's strongest edge (`found`), from those to its used() one.
@@ -382,6 +428,12 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
     outliers += matches[i].outlier;
   }
   return outliers;
+}
+
+/// Whether two poses hold the same numbers bit for bit (signed zeros told apart).
+bool same_bits(const Se3& a, const Se3& b) {
+  static_assert(std::is_trivially_copyable<Se3>::value && sizeof(Se3) == 12 * sizeof(real), "Se3 is 12 reals");
+  return std::memcmp(&a, &b, sizeof(Se3)) == 0;
 }
 
 /// The largest |after - before| over the matches: how far a round moved a match along its normal
@@ -438,18 +490,24 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   }
 
   weights.resize(matches.size());
+  bool moved = true;  // whether the last round changed the pose
   for (int round = 0; round < params.robust_rounds; ++round) {
-    choose_nearest_hypotheses(matches, distances);
+    const bool rechosen = choose_nearest_hypotheses(matches, distances);
+    // After a round that left the pose as it was, the same choices and distances would give
+    // this round the same weights, start and solve, ending where that one did: so would every
+    // round after it.
+    if (!moved && !rechosen && distances == workspace.before_round) break;
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
     solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
-    const bool watch = params.rounds_settled_px > real(0);
-    if (watch) workspace.before_round = distances;
+    workspace.before_round = distances;
     const SolveResult robust_solve =
         solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
+    moved = !same_bits(robust_solve.pose, solution.camera_from_model);
     solution.camera_from_model = robust_solve.pose;
+    const bool watch = params.rounds_settled_px > real(0);
     if (watch && largest_move(workspace.before_round, distances) <= params.rounds_settled_px) break;
   }
   measure_end_rms(workspace, solution);

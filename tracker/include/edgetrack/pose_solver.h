@@ -49,8 +49,10 @@ struct PoseParams {
   /// median |delta|, tukey_floor) pixels; matches with weight 0 in the last round are marked as
   /// outliers. The weights vary continuously with the distances, so nearby inputs give nearby
   /// poses; three rounds keep a gross mismatch present in one `real` build and not in another
-  /// from pulling their poses apart (docs/ARCHITECTURE.md). tukey_c = 0 or robust_rounds = 0 is
-  /// the paper's tracker.
+  /// from pulling their poses apart (docs/ARCHITECTURE.md). A round that left the pose as it was
+  /// ends the rounds when the next would weigh the same distances with the same hypotheses: it
+  /// would repeat that round exactly, as would every round after it. tukey_c = 0 or
+  /// robust_rounds = 0 is the paper's tracker.
   int robust_rounds = 3;
   /// The robust rounds end early once one moved no match farther than this along its normal
   /// (pixels): the weights at the next round's start would be those of this one's, and so its
@@ -71,8 +73,8 @@ struct PoseSolution {
   Se3 camera_from_model;
   real start_rms{0};  ///< RMS point-to-line distance before and after, pixels
   real end_rms{0};
-  int evaluations = 0;
-  int iterations = 0;  ///< Jacobian evaluations (MINPACK's iterations), both solves
+  int evaluations = 0;  ///< residual evaluations of the solves run
+  int iterations = 0;  ///< Jacobian evaluations (MINPACK's iterations) of the solves run
   int outliers = 0;    ///< matches given weight 0 in the last robust solve
   /// 1.4826 * median |delta| over all matches at the returned pose, to each match's strongest
   /// edge (`found`), pixels: the robust scale of the residuals (the standard deviation for
@@ -96,7 +98,7 @@ struct PoseWorkspace {
   std::vector<real> inverse_depth;    ///< 1 / Z of that point, for the Jacobian
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> scratch, distances, weights, magnitudes, selection;
-  std::vector<real> before_round;  ///< the distances before the last robust round (rounds_settled_px)
+  std::vector<real> before_round;  ///< the distances the last robust round weighed (its weights, rounds_settled_px)
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM

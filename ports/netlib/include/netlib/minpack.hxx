@@ -5,6 +5,11 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "netlib/minpack.h"
 #include "real/sum_of_products.h"
@@ -41,6 +46,33 @@ T abs_of(const T& a) {
 }
 
 
+/// Floating point: whether every |x[i]| is 0 or in (rdwarf, agiant), where enorm adds the
+/// squares plainly, in order (a NaN is not). Separate from the sums, so that on SSE2 the test
+/// takes two components per instruction and the sums only their own additions.
+template <class T>
+bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
+  int i = 0;
+  bool plain = true;
+#if defined(__SSE2__)
+  if constexpr (std::is_same<T, double>::value) {
+    const __m128d sign = _mm_set1_pd(-0.0), small = _mm_set1_pd(rdwarf), large = _mm_set1_pd(agiant);
+    const __m128d zero = _mm_setzero_pd();
+    __m128d outside = zero;
+    for (; i + 2 <= n; i += 2) {
+      const __m128d xabs = _mm_andnot_pd(sign, _mm_loadu_pd(x + i));
+      const __m128d tiny = _mm_and_pd(_mm_cmple_pd(xabs, small), _mm_cmpneq_pd(xabs, zero));
+      outside = _mm_or_pd(outside, _mm_or_pd(_mm_cmpnlt_pd(xabs, large), tiny));
+    }
+    plain = _mm_movemask_pd(outside) == 0;
+  }
+#endif
+  for (; i < n; ++i) {
+    const T xabs = abs_of(x[i]);
+    plain &= ((xabs > rdwarf) | (xabs == T(0))) & (xabs < agiant);
+  }
+  return plain;
+}
+
 /// y[i] += s x[i]: MINPACK's loop for floating point; for fixed point the same operations
 /// without the 128-bit product when s is large (real/fixed64.h).
 template <class T>
@@ -52,34 +84,47 @@ void add_multiple_of(int n, const T& s, const T* x, T* y) {
   }
 }
 
-/// Floating point: C sums of products of `a` with columns b, b + ldb, ..., each summed in
-/// sum_of_products' order in an accumulator of its own, side by side, so that each addition
-/// waits for another column's instead of its own previous one. The same sums bit for bit.
+/// Floating point: C sums of products of `a` with the columns b[0], ..., b[C - 1], each summed in
+/// sum_of_products' order in an accumulator of its own, side by side, so that each addition waits
+/// for another column's instead of its own previous one. The same sums bit for bit.
 template <int C, class T>
-void side_by_side_sums(int n, const T* a, const T* b, int ldb, T* sums) {
+void side_by_side_sums(int n, const T* a, T* const* b, T* sums) {
   T s[C] = {};
   for (int i = 0; i < n; ++i) {
     const T ai = a[i];
-    for (int c = 0; c < C; ++c) s[c] += ai * b[c * ldb + i];
+    for (int c = 0; c < C; ++c) s[c] += ai * b[c][i];
   }
   for (int c = 0; c < C; ++c) sums[c] = s[c];
 }
 
-/// sums[c] = sum_of_products(n, a, b + c * ldb) for c < count, at most 4 side by side.
+/// How many sums run side by side: a pose's six Jacobian columns (and with a right-hand side,
+/// the five columns and it that the first reflection updates) in one pass, within x86-64's
+/// sixteen vector registers.
+constexpr int kSideBySide = 6;
+
+/// Fixed point: sums[c] = sum_of_products(n, a, b[c]) for c < count, out of line: inlined into
+/// the factorisation, GCC's ARMv5TE code for it takes more guest instructions per frame.
 template <class T>
-void sums_of_products(int n, const T* a, const T* b, int ldb, int count, T* sums) {
+__attribute__((noinline)) void each_sum_of_products(int n, const T* a, T* const* b, int count, T* sums) {
+  for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b[c]);
+}
+
+/// sums[c] = sum_of_products(n, a, b[c]) for c < count, at most kSideBySide side by side.
+template <class T>
+void sums_of_products(int n, const T* a, T* const* b, int count, T* sums) {
   if constexpr (std::numeric_limits<T>::is_iec559) {
-    for (int first = 0; first < count; first += 4) {
-      const T* const bc = b + first * ldb;
+    for (int first = 0; first < count; first += kSideBySide) {
       switch (count - first) {
-        case 1: side_by_side_sums<1>(n, a, bc, ldb, sums + first); break;
-        case 2: side_by_side_sums<2>(n, a, bc, ldb, sums + first); break;
-        case 3: side_by_side_sums<3>(n, a, bc, ldb, sums + first); break;
-        default: side_by_side_sums<4>(n, a, bc, ldb, sums + first); break;
+        case 1: side_by_side_sums<1>(n, a, b + first, sums + first); break;
+        case 2: side_by_side_sums<2>(n, a, b + first, sums + first); break;
+        case 3: side_by_side_sums<3>(n, a, b + first, sums + first); break;
+        case 4: side_by_side_sums<4>(n, a, b + first, sums + first); break;
+        case 5: side_by_side_sums<5>(n, a, b + first, sums + first); break;
+        default: side_by_side_sums<kSideBySide>(n, a, b + first, sums + first); break;
       }
     }
   } else {
-    for (int c = 0; c < count; ++c) sums[c] = sum_of_products(n, a, b + c * ldb);
+    each_sum_of_products(n, a, b, count, sums);
   }
 }
 
@@ -108,10 +153,17 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   using std::sqrt;
   // Fixed point: the exact sum of the raw squares (real/fixed64.h), which needs no scaling.
   if constexpr (!std::numeric_limits<T>::is_iec559) return euclidean_norm(n, x);
+  const T agiant = machine.rgiant / T(n);
+  // All plain (residuals and Jacobians in pixels always are): the three sums below reduce to
+  // sqrt(s2), s2 the squares added in order.
+  if (minpack_detail::all_plain(n, x, machine.rdwarf, agiant)) {
+    T sum(0);
+    for (int i = 0; i < n; ++i) sum += x[i] * x[i];
+    return sqrt(sum);
+  }
   // Three sums: small components scaled by the largest small one (x3max), large ones by the
   // largest large one (x1max), the rest plainly.
   T s1(0), s2(0), s3(0), x1max(0), x3max(0);
-  const T agiant = machine.rgiant / T(n);
   for (int i = 0; i < n; ++i) {
     const T xabs = abs_of(x[i]);
     // A zero (a residual or Jacobian row of weight 0) joins the plain sum, where it adds +0 and
@@ -155,28 +207,25 @@ void side_by_side_norms(int m, const T* a, int lda, T* norms, const minpack_mach
   using std::sqrt;
   const T agiant = machine.rgiant / T(m);
   T s[C] = {};
-  bool plain[C];
-  for (int c = 0; c < C; ++c) plain[c] = true;
   for (int i = 0; i < m; ++i)
-    for (int c = 0; c < C; ++c) {
-      const T xabs = abs_of(a[c * lda + i]);
-      plain[c] &= ((xabs > machine.rdwarf) | (xabs == T(0))) & (xabs < agiant);
-      s[c] += xabs * xabs;
-    }
-  for (int c = 0; c < C; ++c) norms[c] = plain[c] ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
+    for (int c = 0; c < C; ++c) s[c] += a[c * lda + i] * a[c * lda + i];
+  for (int c = 0; c < C; ++c)
+    norms[c] = all_plain(m, a + c * lda, machine.rdwarf, agiant) ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
 }
 
 /// The norms of the n columns of a (m rows, leading dimension lda), as enorm gives each.
 template <class T>
 void column_norms(int m, int n, const T* a, int lda, T* norms, const minpack_machine<T>& machine) {
   if constexpr (std::numeric_limits<T>::is_iec559) {
-    for (int first = 0; first < n; first += 4) {
+    for (int first = 0; first < n; first += kSideBySide) {
       const T* const column = a + first * lda;
       switch (n - first) {
         case 1: side_by_side_norms<1>(m, column, lda, norms + first, machine); break;
         case 2: side_by_side_norms<2>(m, column, lda, norms + first, machine); break;
         case 3: side_by_side_norms<3>(m, column, lda, norms + first, machine); break;
-        default: side_by_side_norms<4>(m, column, lda, norms + first, machine); break;
+        case 4: side_by_side_norms<4>(m, column, lda, norms + first, machine); break;
+        case 5: side_by_side_norms<5>(m, column, lda, norms + first, machine); break;
+        default: side_by_side_norms<kSideBySide>(m, column, lda, norms + first, machine); break;
       }
     }
   } else {
@@ -184,11 +233,13 @@ void column_norms(int m, int n, const T* a, int lda, T* norms, const minpack_mac
   }
 }
 
-}  // namespace minpack_detail
-
+/// qrfac, and with `b` (m values, or null) also b replaced by Q^T b: each Householder reflection
+/// is applied to b in the step that makes it, as to the columns still to reduce, with the same
+/// operations lmder applies to its residuals after qrfac (the same products and updates, in
+/// the same order), so that b's sums run beside the columns' instead of after them.
 template <class T>
-void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
-           const minpack_machine<T>& machine) {
+void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa, T* b,
+                    const minpack_machine<T>& machine) {
   using std::sqrt;
   using K = minpack_detail::k<T>;
   using minpack_detail::add_multiple_of;
@@ -236,21 +287,26 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
         for (int i = j; i < m; ++i) aj[i] *= inverse;
       }
       aj[j] += T(1);
-      // Apply it to the remaining columns and update their norms. A column's products with aj
-      // do not depend on the other columns' updates: up to four are summed side by side first.
-      constexpr int kSideBySide = 4;
-      T products[kSideBySide];
-      for (int k = j + 1; k < n; ++k) {
-        T* const ak = a + k * lda;
-        const int group = (k - j - 1) % kSideBySide;
-        if (group == 0) {
-          const int count = n - k < kSideBySide ? n - k : kSideBySide;
-          minpack_detail::sums_of_products(m - j, aj + j, ak + j, lda, count, products);
+      // Apply it to the remaining columns (and b) and update their norms. A column's products
+      // with aj do not depend on the other columns' updates: they are summed side by side.
+      const int count = n - j - 1 + (b ? 1 : 0);
+      // Column k of the remaining ones, k == n for b.
+      const auto target = [&](int k) { return (k < n ? a + k * lda : b) + j; };
+      T products[minpack_detail::kSideBySide];
+      for (int k = j + 1; k <= j + count; ++k) {
+        const int slot = (k - j - 1) % minpack_detail::kSideBySide;
+        if (slot == 0) {
+          const int size = j + count + 1 - k < minpack_detail::kSideBySide ? j + count + 1 - k : minpack_detail::kSideBySide;
+          T* group[minpack_detail::kSideBySide];
+          for (int g = 0; g < size; ++g) group[g] = target(k + g);
+          minpack_detail::sums_of_products(m - j, aj + j, group, size, products);
         }
-        const T temp = products[group] / aj[j];
-        // ak -= temp aj: negating temp first changes no rounding (both types round symmetrically).
-        add_multiple_of(m - j, -temp, aj + j, ak + j);
-        if (pivot && rdiag[k] != T(0)) {
+        const T temp = products[slot] / aj[j];
+        // target -= temp aj: negating temp first changes no rounding (both types round
+        // symmetrically), so b gets lmder's -(sum) / aj[j] update.
+        add_multiple_of(m - j, -temp, aj + j, target(k));
+        if (pivot && k < n && rdiag[k] != T(0)) {
+          const T* const ak = a + k * lda;
           const T ratio = ak[j] / rdiag[k];
           rdiag[k] *= sqrt(max_of(T(0), T(1) - ratio * ratio));
           const T drop = rdiag[k] / wa[k];
@@ -263,6 +319,14 @@ void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acno
     }
     rdiag[j] = -ajnorm;
   }
+}
+
+}  // namespace minpack_detail
+
+template <class T>
+void qrfac(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag, T* acnorm, T* wa,
+           const minpack_machine<T>& machine) {
+  minpack_detail::householder_qr(m, n, a, lda, pivot, ipvt, rdiag, acnorm, wa, static_cast<T*>(nullptr), machine);
 }
 
 template <class T>
@@ -474,7 +538,9 @@ int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, 
       if ((iter - 1) % nprint == 0) iflag = problem.progress(x, fvec);
       if (iflag < 0) goto done;
     }
-    qrfac(m, n, fjac, ldfjac, true, ipvt, wa1, wa2, wa3, machine);
+    // qtf = the first n components of Q^T fvec: wa4 goes through the factorisation's reflections.
+    for (int i = 0; i < m; ++i) wa4[i] = fvec[i];
+    householder_qr(m, n, fjac, ldfjac, true, ipvt, wa1, wa2, wa3, wa4, machine);
     if (iter == 1) {
       // Scale by the column norms of the first Jacobian; set the first step bound.
       if (mode != 2) {
@@ -485,15 +551,8 @@ int levenberg_marquardt(Problem& problem, int m, int n, T* x, T* fvec, T* fjac, 
       delta = factor * xnorm;
       if (delta == T(0)) delta = factor;
     }
-    // qtf = the first n components of Q^T fvec.
-    for (int i = 0; i < m; ++i) wa4[i] = fvec[i];
     for (int j = 0; j < n; ++j) {
-      T* const fj = fjac + j * ldfjac;
-      if (fj[j] != T(0)) {
-        const T temp = -sum_of_products(m - j, fj + j, wa4 + j) / fj[j];
-        add_multiple_of(m - j, temp, fj + j, wa4 + j);
-      }
-      fj[j] = wa1[j];
+      fjac[j + j * ldfjac] = wa1[j];
       qtf[j] = wa4[j];
     }
     // Norm of the scaled gradient, and the gtol test.
