@@ -224,7 +224,7 @@ void EdgeIdBuffer::surface_depth(std::vector<int32_t>& depth) const {
 
 int EdgeIdBuffer::edge_at(int x, int y) const {
   if (x < 0 || y < 0 || x >= camera_.width || y >= camera_.height) return -1;
-  return decode_edge_id(unpack_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]));
+  return decode_edge_id_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]);
 }
 
 bool EdgeIdBuffer::shows(int edge, const Vec2& pixel, const Vec2& along) const {
