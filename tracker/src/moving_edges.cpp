@@ -72,18 +72,17 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, co
   const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
   const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
-  // The 3 x 3 pixels around the site's in one batch (the site's own response is conv), then
-  // whatever the climbs reach one at a time.
-  int block_i[9], block_j[9], block[9];
-  for (int k = 0; k < 9; ++k) {
-    const int u = u_site + k % 3 - 1, v = v_site + k / 3 - 1;
+  // The 3 x 3 pixels around the site's in one batch, from corner to corner without the centre
+  // (the site's own response is conv), then whatever the climbs reach one at a time.
+  int block_i[8], block_j[8], around[8], block[9];
+  for (int k = 0; k < 8; ++k) {
+    const int m = k < 4 ? k : k + 1;
+    const int u = u_site + m % 3 - 1, v = v_site + m / 3 - 1;
     block_i[k] = along_x ? v : u;
     block_j[k] = along_x ? u : v;
   }
-  block_i[4] = block_i[8];
-  block_j[4] = block_j[8];
-  response.at_each(block_i, block_j, 8, block);
-  block[8] = block[4];
+  response.at_each_in_box(block_i, block_j, 8, around);
+  for (int k = 0; k < 8; ++k) block[k < 4 ? k : k + 1] = around[k];
   block[4] = conv;
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
@@ -188,7 +187,7 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
   for (int start = 0; start < length; start += kChunk) {
     const int n = length - start < kChunk ? length - start : kChunk;
     for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
-    response.at_each_along(path_i + kLead, path_j + kLead, n, conv + kLead);
+    response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
     for (int k = 0; k < n; ++k) likelihood[kLead + k] = conv[kLead + k] < 0 ? -2 * conv[kLead + k] : 2 * conv[kLead + k];
     // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
     // before the path), and at the path's far end its last pixel, with no pixel after it.
