@@ -75,15 +75,18 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, co
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
   // The 3 x 3 pixels around the site's in one batch, from corner to corner without the centre
   // (the site's own response is conv), then whatever the climbs reach one at a time.
-  int block_i[8], block_j[8], around[8], block[9];
+  int block_i[8], block_j[8], block[9];
   for (int k = 0; k < 8; ++k) {
     const int m = k < 4 ? k : k + 1;
     const int u = u_site + m % 3 - 1, v = v_site + m / 3 - 1;
     block_i[k] = along_x ? v : u;
     block_j[k] = along_x ? u : v;
   }
-  response.at_each_in_box(block_i, block_j, 8, around);
-  for (int k = 0; k < 8; ++k) block[k < 4 ? k : k + 1] = around[k];
+  response.at_each_in_box(block_i, block_j, 8, block);
+  block[8] = block[7];
+  block[7] = block[6];
+  block[6] = block[5];
+  block[5] = block[4];
   block[4] = conv;
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
