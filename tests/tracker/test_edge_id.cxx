@@ -24,6 +24,12 @@ static void test_edge_id() {
   TEST_EQUAL("equations (10)-(12) invert (4)-(9) for all 32767 edges", direct_errors, 0);
   TEST_EQUAL("all 32767 codes survive an RGB565 buffer", rgb565_errors, 0);
   TEST_EQUAL("every channel is a multiple of 8, the paper's spacing", channel_not_multiple_of_8, 0);
+  int bitwise_errors = 0;
+  for (int value = 0; value < 65536; ++value) {
+    const uint16_t pixel = static_cast<uint16_t>(value);
+    bitwise_errors += decode_edge_id_rgb565(pixel) != decode_edge_id(unpack_rgb565(pixel));
+  }
+  TEST_EQUAL("the bitwise decoding agrees with equations (10)-(12) on every RGB565 pixel", bitwise_errors, 0);
 
   // The naive code (index + 1 in three bytes) loses the low 3 bits of blue in RGB565: edges
   // 0..6 read back as background or as another edge, and pairs of edges become the same colour.

@@ -2,7 +2,6 @@
 /// The contrast memory between frames.
 #include "edgetrack/contrast_memory.h"
 
-#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -107,13 +106,12 @@ void ContrastMemory::group() {
   }
 }
 
-size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, const Group& g) const {
-  if (g.order == 0 || g.end - g.first < kBisectFrom) return g.first;
-  const auto begin = remembered.begin() + static_cast<std::ptrdiff_t>(g.first);
-  const auto end = remembered.begin() + static_cast<std::ptrdiff_t>(g.end);
-  return static_cast<size_t>(
-      std::partition_point(begin, end, [this, &g](const Remembered& r) { return before(g, r.point_in_model); }) -
-      remembered.begin());
+size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, const Group& g,
+                                               size_t from) const {
+  size_t k = from;
+  while (k > g.first && !before(g, remembered[k - 1].point_in_model)) --k;
+  while (k < g.end && before(g, remembered[k].point_in_model)) ++k;
+  return k;
 }
 
 void ContrastMemory::references(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
@@ -127,6 +125,7 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
   const Group none;
   const Group* g = &none;
   int edge = -1;
+  size_t from = 0;  // the previous point's first candidate: the next one's lies near it
   real primitive(0);
   // `reach` pixels at depth 1 m, in metres, doubled: the bound is on the taxicab distance, 1 to
   // sqrt(3) times the straight one, so every point within reach passes it.
@@ -142,12 +141,14 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
           break;
         }
       primitive = mean_of_one_polarity(g->first, g->end);
+      from = g->first;
     }
     const real depth = depth_in_camera(camera_from_model, point.point_in_model);
     if (depth <= real(0)) continue;
     real nearest = bound_per_metre * depth;
     const Window window(*g, point.point_in_model, nearest);
-    for (size_t k = window.first_candidate(remembered_, *g); k < g->end && !window.after(*g, remembered_[k].point_in_model); ++k) {
+    from = window.first_candidate(remembered_, *g, from);
+    for (size_t k = from; k < g->end && !window.after(*g, remembered_[k].point_in_model); ++k) {
       if (taxicab_below(remembered_[k].point_in_model, point.point_in_model, nearest, nearest))
         out[p] = remembered_[k].contrast;
     }

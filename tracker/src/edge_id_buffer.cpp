@@ -19,16 +19,24 @@ EdgeIdBuffer::EdgeIdBuffer(const PinholeCamera& camera)
       nearest_(static_cast<size_t>(camera.width) * camera.height, 0),
       nearest_owner_(static_cast<size_t>(camera.width) * camera.height, 0) {}
 
-void EdgeIdBuffer::clear_colours() {
+void EdgeIdBuffer::clear_lines() {
   if (clear_all_) {
     std::fill(colours_.begin(), colours_.end(), uint16_t(0));
+    std::fill(nearest_.begin(), nearest_.end(), 0);
+    std::fill(nearest_owner_.begin(), nearest_owner_.end(), int16_t(0));
     clear_all_ = false;
   } else {
     uint16_t* colour = colours_.data();
+    int32_t* depth = nearest_.data();
+    int16_t* owner = nearest_owner_.data();
     const int width = camera_.width;
     for (const Segment& s : segments_)
-      draw_line(s.line, width, camera_.height,
-                [colour, width](int x, int y, int32_t) { colour[static_cast<size_t>(y) * width + x] = 0; });
+      draw_line(s.line, width, camera_.height, [colour, depth, owner, width](int x, int y, int32_t) {
+        const size_t i = static_cast<size_t>(y) * width + x;
+        colour[i] = 0;
+        depth[i] = 0;
+        owner[i] = 0;
+      });
   }
   segments_.clear();
   occluders_.clear();
@@ -54,7 +62,7 @@ void EdgeIdBuffer::reserve_for(const EdgeModel& model) {
 }
 
 void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) {
-  clear_colours();
+  clear_lines();
   reserve_for(model);
   points_in_camera_.resize(model.vertices.size());
   for (size_t v = 0; v < model.vertices.size(); ++v) points_in_camera_[v] = camera_from_model * model.vertices[v];
@@ -169,18 +177,13 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
 }
 
 void EdgeIdBuffer::find_nearest_surfaces() {
-  const int width = camera_.width, height = camera_.height;
+  const int width = camera_.width;
   int32_t* depth = nearest_.data();
   int16_t* owner = nearest_owner_.data();
-  for (const Segment& s : segments_)
-    draw_line(s.line, width, height, [depth, owner, width](int x, int y, int32_t) {
-      const size_t i = static_cast<size_t>(y) * width + x;
-      depth[i] = 0;
-      owner[i] = 0;
-    });
-  // In the order a whole-surface fill would take, keeping the first of equal depths: the same
-  // nearest surface at every pixel, however many lines cross it. A triangle whose box misses
-  // the line's box has none of its pixels (most of a tessellated side's facets, for each line).
+  // Every pixel starts with no surface (clear_lines). In the order a whole-surface fill would
+  // take, keeping the first of equal depths: the same nearest surface at every pixel, however
+  // many lines cross it. A triangle whose box misses the line's box has none of its pixels (most
+  // of a tessellated side's facets, for each line).
   for (const Segment& s : segments_)
     for (const Occluder& o : occluders_) {
       const PixelRect& box = o.triangle.box;
@@ -224,7 +227,7 @@ void EdgeIdBuffer::surface_depth(std::vector<int32_t>& depth) const {
 
 int EdgeIdBuffer::edge_at(int x, int y) const {
   if (x < 0 || y < 0 || x >= camera_.width || y >= camera_.height) return -1;
-  return decode_edge_id(unpack_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]));
+  return decode_edge_id_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]);
 }
 
 bool EdgeIdBuffer::shows(int edge, const Vec2& pixel, const Vec2& along) const {

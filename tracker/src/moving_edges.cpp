@@ -4,6 +4,7 @@
 #include "edgetrack/moving_edges.h"
 
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "edgetrack/normal_mask.h"
@@ -72,18 +73,20 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, co
   const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
   const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
-  // The 3 x 3 pixels around the site's in one batch (the site's own response is conv), then
-  // whatever the climbs reach one at a time.
-  int block_i[9], block_j[9], block[9];
-  for (int k = 0; k < 9; ++k) {
-    const int u = u_site + k % 3 - 1, v = v_site + k / 3 - 1;
+  // The 3 x 3 pixels around the site's in one batch, from corner to corner without the centre
+  // (the site's own response is conv), then whatever the climbs reach one at a time.
+  int block_i[8], block_j[8], block[9];
+  for (int k = 0; k < 8; ++k) {
+    const int m = k < 4 ? k : k + 1;
+    const int u = u_site + m % 3 - 1, v = v_site + m / 3 - 1;
     block_i[k] = along_x ? v : u;
     block_j[k] = along_x ? u : v;
   }
-  block_i[4] = block_i[8];
-  block_j[4] = block_j[8];
-  response.at_each(block_i, block_j, 8, block);
-  block[8] = block[4];
+  response.at_each_in_box(block_i, block_j, 8, block);
+  block[8] = block[7];
+  block[7] = block[6];
+  block[6] = block[5];
+  block[5] = block[4];
   block[4] = conv;
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
@@ -113,12 +116,13 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, co
   return along_x ? Vec2{u, v} : Vec2{v, u};
 }
 
-/// A local maximum of the likelihood on a site's search path, at a whole pixel.
+/// A local maximum of the likelihood on a site's search path, at a whole pixel. Not initialised:
+/// a search fills the ones it counts.
 struct PathPeak {
-  int likelihood = 0;
-  int i = 0;
-  int j = 0;
-  int conv = 0;
+  int likelihood;
+  int i;
+  int j;
+  int conv;
 };
 
 /// The pixel a site's search keeps, with its signed mask response (EdgeMatch::contrast).
@@ -163,6 +167,18 @@ int likelihood_floor(const real& threshold) {
   return static_cast<int>(floor(threshold));
 }
 
+/// What every site's search takes from vpMe, converted once per frame.
+struct SiteLimits {
+  explicit SiteLimits(const vpMe& me)
+      : range(static_cast<int>(me.getRange())),
+        threshold(likelihood_floor(me.getThreshold())),
+        least(real(1) - me.getMu1()),
+        most(real(1) + me.getMu2()) {}
+  int range;      ///< candidates pixel + k normal, |k| <= range
+  int threshold;  ///< maxima of likelihood above it
+  real least, most;  ///< the contrast test's bounds, times |reference|
+};
+
 /// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
 /// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
 /// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
@@ -170,9 +186,8 @@ int likelihood_floor(const real& threshold) {
 /// differs by rounding only. conv is the signed response of the site's mask; a path end counts as
 /// a maximum when its one neighbour is lower, as the site's search keeps an end.
 template <class Visit>
-void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, Visit visit) {
-  const int range = static_cast<int>(me.getRange());
-  const int threshold = likelihood_floor(me.getThreshold());
+void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+  const int range = limits.range, threshold = limits.threshold;
   PathWalk walk(point, range);
   const int length = 2 * range + 1;
 #if defined(__SSE2__)
@@ -188,7 +203,7 @@ void for_each_path_peak(const vpMeResponse& response, const vpMe& me, const Cont
   for (int start = 0; start < length; start += kChunk) {
     const int n = length - start < kChunk ? length - start : kChunk;
     for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
-    response.at_each_along(path_i + kLead, path_j + kLead, n, conv + kLead);
+    response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
     for (int k = 0; k < n; ++k) likelihood[kLead + k] = conv[kLead + k] < 0 ? -2 * conv[kLead + k] : 2 * conv[kLead + k];
     // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
     // before the path), and at the path's far end its last pixel, with no pixel after it.
@@ -261,18 +276,18 @@ struct PathSearch {
 /// One pass over the site's path. `reference` is the oriented contrast (EdgeMatch::contrast)
 /// the same model point showed in the last trusted frame, 0 for none; `capacity` (at most
 /// kMaxHypotheses + 1) is how many maxima to keep in `peaks`, 0 for none.
-PathSearch search_path(const vpMeResponse& response, const vpMe& me, const ControlPoint& point, const real& reference,
-                       int capacity) {
+PathSearch search_path(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point,
+                       const real& reference, int capacity) {
   using std::fabs;
   PathSearch found;
   const bool with_reference = reference != real(0);
   real least(0), most(0);
   if (with_reference) {
-    least = (real(1) - me.getMu1()) * fabs(reference);
-    most = (real(1) + me.getMu2()) * fabs(reference);
+    least = limits.least * fabs(reference);
+    most = limits.most * fabs(reference);
   }
   const bool positive = reference > real(0);
-  for_each_path_peak(response, me, point, [&](int conv, int i, int j) {
+  for_each_path_peak(response, limits, point, [&](int conv, int i, int j) {
     const int magnitude = conv < 0 ? -conv : conv;
     if (magnitude > found.strongest_magnitude) {
       found.strongest_magnitude = magnitude;
@@ -358,18 +373,20 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
                          const std::vector<unsigned char>* strict) {
   matches.clear();
   matches.reserve(points.size());
+  const SiteLimits limits(me);
   // The points of one straight edge share its normal, so its mask is looked up once per run.
-  NormalMask mask;
   Vec2 mask_normal{real(0), real(0)};
+  std::optional<vpMeResponse> mask_response;
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     if (p == 0 || !(point.normal.x == mask_normal.x && point.normal.y == mask_normal.y)) {
-      mask = normal_mask(me, point.normal);
+      const NormalMask mask = normal_mask(me, point.normal);
+      mask_response.emplace(grey, me, mask.index, mask.sign);
       mask_normal = point.normal;
     }
-    const vpMeResponse response(grey, me, mask.index, mask.sign);
+    const vpMeResponse& response = *mask_response;
     const real reference = references ? (*references)[p] : real(0);
-    const PathSearch found = search_path(response, me, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);
+    const PathSearch found = search_path(response, limits, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);
     SitePixel site;
     if (!choose_site(found, reference, strict && (*strict)[p] != 0, site)) continue;
     matches.emplace_back();

@@ -50,7 +50,8 @@ class ContrastMemory {
   /// The remembered points of one primitive, remembered_[first, end), and the model axis along
   /// which they spread most with whether their coordinate there only grows (+1), only falls (-1)
   /// or neither (0): along a straight edge the sampling's order is monotonic, so the points
-  /// within reach of a point are a run found by bisection instead of a scan of them all.
+  /// within reach of a point are a run that starts near the previous point's, instead of a scan
+  /// of them all.
   struct Group {
     int edge = 0;
     size_t first = 0, end = 0;
@@ -74,14 +75,14 @@ class ContrastMemory {
     bool after(const Group& g, const Vec3& p) const {
       return g.order > 0 ? !(coordinate(p, g.axis) < above_) : g.order < 0 && !(coordinate(p, g.axis) > below_);
     }
-    /// The first point of `g` not before the window: by bisection in a long monotonic group.
-    size_t first_candidate(const std::vector<Remembered>& remembered, const Group& g) const;
+    /// The first point of `g` not before the window, walked to from `from` (the previous point's
+    /// first candidate, or g.first): before() holds for a prefix of a monotonic group, and never
+    /// in another, whose points are all candidates.
+    size_t first_candidate(const std::vector<Remembered>& remembered, const Group& g, size_t from) const;
 
    private:
     real below_, above_;
   };
-  /// Groups shorter than this are scanned from their start (bisection would cost more).
-  static constexpr size_t kBisectFrom = 32;
   static const real& coordinate(const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
   std::vector<Remembered> remembered_;
   std::vector<Group> groups_;

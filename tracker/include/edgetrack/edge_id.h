@@ -30,5 +30,11 @@ uint16_t pack_rgb565(const Rgb888& colour);
 /// Reading an RGB565 pixel back to 8 bits per channel by bit replication, as display hardware
 /// and glReadPixels do: r8 = r5 << 3 | r5 >> 2, g8 = g6 << 2 | g6 >> 4.
 Rgb888 unpack_rgb565(uint16_t pixel);
+/// decode_edge_id(unpack_rgb565(pixel)) in bit operations, for reading an Edge-ID buffer per
+/// control point: after the replication r8 / 8 is r5, g8 / 8 is g6 >> 1 and b8 / 8 is b5, so
+/// the index is r5 * 1024 + (g6 >> 1) * 32 + b5 - 1.
+inline int decode_edge_id_rgb565(uint16_t pixel) {
+  return ((pixel >> 11) << 10 | ((pixel >> 6) & 31) << 5 | (pixel & 31)) - 1;
+}
 
 }  // namespace edgetrack

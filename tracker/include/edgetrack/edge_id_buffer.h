@@ -65,7 +65,9 @@ class EdgeIdBuffer {
     PixelTriangle triangle;
     int16_t owner = 0;
   };
-  void clear_colours();
+  /// Clears the colours and the nearest surfaces the last render drew, at its lines' pixels (or
+  /// everywhere after assign), so that both are 0 everywhere.
+  void clear_lines();
   void reserve_for(const EdgeModel& model);
   void add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
   void collect_segments(const EdgeModel& model, const Se3& camera_from_model);
@@ -80,9 +82,9 @@ class EdgeIdBuffer {
   PinholeCamera camera_;
   PixelRect screen_;
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background
-  std::vector<int32_t> nearest_;        ///< Q20 1/Z of the nearest surface, 0 = none; valid under segments_
-  std::vector<int16_t> nearest_owner_;  ///< that surface's Occluder::owner; valid under segments_
-  bool clear_all_ = false;              ///< colours_ holds more than segments_ drew (assign)
+  std::vector<int32_t> nearest_;        ///< Q20 1/Z of the nearest surface under segments_, 0 elsewhere
+  std::vector<int16_t> nearest_owner_;  ///< that surface's Occluder::owner under segments_, 0 elsewhere
+  bool clear_all_ = false;  ///< colours_ and nearest_ hold more than segments_ drew (assign)
   std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
   std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each primitive
   std::vector<ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides

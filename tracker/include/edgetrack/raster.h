@@ -281,7 +281,7 @@ void walk_in_triangle(const LineWalk& line, const PixelTriangle& t, Plot& plot) 
   Int e0 = walk.e[0], e1 = walk.e[1], e2 = walk.e[2];
   for (int k = k0;;) {
     if (n >= minor_lo && n <= minor_hi) {
-      if (e0 >= 0 && e1 >= 0 && e2 >= 0) plot(xm ? m : n, xm ? n : m, static_cast<int32_t>(t.a.w + (acc >> 8)));
+      if ((e0 | e1 | e2) >= 0) plot(xm ? m : n, xm ? n : m, static_cast<int32_t>(t.a.w + (acc >> 8)));
     } else if ((minor_sign > 0) == (n > minor_hi)) {
       break;  // past the box: the minor coordinate only moves on
     }

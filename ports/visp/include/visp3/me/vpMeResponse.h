@@ -63,10 +63,10 @@ class vpMeResponse {
     }
   }
 
-  /// at_each for the pixels of a straight path in order (a site's search path): each coordinate
-  /// is monotonic along it, so its ends bound the rest, and when both lie inside no pixel needs
-  /// the border test.
-  void at_each_along(const int* i, const int* j, int n, int* out) const {
+  /// at_each for pixels that lie in the box whose opposite corners are the first and the last
+  /// (a straight path in order, a block listed from corner to corner): when both lie inside, no
+  /// pixel needs the border test.
+  void at_each_in_box(const int* i, const int* j, int n, int* out) const {
 #if defined(__SSE2__)
     if (padded_ && size_ == 5 && n > 0 && !outside(i[0], j[0]) && !outside(i[n - 1], j[n - 1])) {
       padded_each_5<false>(i, j, n, out);
