@@ -89,14 +89,19 @@ void check_scene(Scene scene, const Vec3& axis, const std::vector<Mat33>& symmet
     const uint32_t seed = 11 + static_cast<uint32_t>(k);
     const Se3 truth = random_view(model.value(), camera, params.views, seed);
     render_trial(model.value(), camera, truth, true, kLines, seed, frame);
-    const Detection d = detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
+    const Detection d = detector.value()
+                            .detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565))
+                            .value();
     const PoseError e = pose_error(d.camera_from_model, truth, extent.centre, symmetries);
     std::printf("  trial %d: found %d score %.2f error %.3f mm %.3f deg, %zu candidates refined\n", k, d.found,
                 static_cast<double>(d.score), e.centre_mm, e.rotation_deg, d.refined.size());
     right += d.found && e.centre_mm <= 2 && e.rotation_deg <= 2;
     near_pairs += unsuppressed_pairs(detector.value());
     render_trial(model.value(), camera, truth, false, kLines, seed, frame);
-    const Detection none = detector.value().detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565)).value();
+    const Detection none =
+        detector.value()
+            .detect(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565))
+            .value();
     std::printf("  without the object: found %d score %.2f, %zu candidates refined\n", none.found,
                 static_cast<double>(none.score), none.refined.size());
     false_found += none.found;
@@ -121,12 +126,14 @@ void check_refinement_from_truth(Scene scene, const std::vector<Mat33>& symmetri
   const PinholeCamera camera = qvga_camera();
   const ViewRange evaluation = evaluation_views();
   // The refinement reads the templates only for the camera and the model's extent: a small set.
-  Result<TemplateSet> templates = make_template_set(model.value(), camera, small_range(Vec3{real(0), real(0), real(1)}));
+  Result<TemplateSet> templates =
+      make_template_set(model.value(), camera, small_range(Vec3{real(0), real(0), real(1)}));
   TEST("templates are made", templates.ok(), true);
   if (!templates.ok()) return;
   const ModelExtent extent = templates.value().extent;
   const DetectorParams params;
-  Result<Detector> detector = Detector::create(model.value(), camera, std::move(templates).value(), params, TrackerParams{});
+  Result<Detector> detector =
+      Detector::create(model.value(), camera, std::move(templates).value(), params, TrackerParams{});
   TEST("the detector is made", detector.ok(), true);
   if (!detector.ok()) return;
   Rgb565Frame frame;
@@ -136,7 +143,9 @@ void check_refinement_from_truth(Scene scene, const std::vector<Mat33>& symmetri
     const Se3 truth = random_view(model.value(), camera, evaluation, seed);
     render_trial(model.value(), camera, truth, true, kLines, seed, frame);
     const RefinedCandidate c =
-        detector.value().refine_from(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565), truth).value();
+        detector.value()
+            .refine_from(packed_frame(frame.pixels.data(), frame.width, frame.height, PixelLayout::kRgb565), truth)
+            .value();
     const PoseError e = pose_error(c.camera_from_model, truth, extent.centre, symmetries);
     std::printf("  trial %d: refined from the truth %s, scale %.2f px, %.3f mm %.3f deg\n", k, status_name(c.status),
                 static_cast<double>(c.residual_scale), e.centre_mm, e.rotation_deg);
@@ -145,7 +154,8 @@ void check_refinement_from_truth(Scene scene, const std::vector<Mat33>& symmetri
   }
   TEST_EQUAL("refined from the true pose, every trial ends within 2 mm and 2 degrees", within,
              static_cast<int>(trials.size()));
-  TEST("and most with a tracked fit within the accepted residual scale", 2 * accepted > static_cast<int>(trials.size()), true);
+  TEST("and most with a tracked fit within the accepted residual scale", 2 * accepted > static_cast<int>(trials.size()),
+       true);
 }
 
 /// The evaluation's cube frame 62 (bench_detection's frames and seed 1: views within 60 degrees,
@@ -168,7 +178,10 @@ void check_restart_from_acceptable() {
   Result<TemplateSet> templates = make_template_set(model.value(), camera, small_range(axis));
   TEST("templates are made", templates.ok(), true);
   if (!templates.ok()) return;
-  const DetectorParams params;
+  DetectorParams params;
+  // The first three matches only: this frame's fourth is, in some real builds (S47.16), confident
+  // by itself, and then no restart runs; the claim here is about the restarts.
+  params.refined_candidates = 3;
   Result<Detector> detector =
       Detector::create(model.value(), camera, std::move(templates).value(), params, TrackerParams{});
   TEST("the detector is made", detector.ok(), true);
@@ -191,10 +204,14 @@ void check_restart_from_acceptable() {
   };
   // The restarts come last, all from one candidate's match (up to 4, ending at the first
   // confident one); the candidates before them are the matches' own.
+  const int restarted_index = d.refined.back().match.template_index;
   size_t first_restart = d.refined.size();
-  while (first_restart > 0 &&
-         d.refined[first_restart - 1].match.template_index == d.refined.back().match.template_index)
-    --first_restart;
+  while (first_restart > 0 && d.refined[first_restart - 1].match.template_index == restarted_index) --first_restart;
+  // When the candidate restarted from was the last one refined from the matches, it opens that run.
+  bool seen_before = false;
+  for (size_t k = 0; k < first_restart; ++k)
+    seen_before = seen_before || d.refined[k].match.template_index == restarted_index;
+  if (!seen_before) ++first_restart;
   int acceptable_before = 0, confident_before = 0, restarted_from = 0;
   for (size_t k = 0; k < d.refined.size(); ++k) {
     const RefinedCandidate& c = d.refined[k];
@@ -203,7 +220,7 @@ void check_restart_from_acceptable() {
     if (k >= first_restart) continue;
     acceptable_before += acceptable(c);
     confident_before += confident(c);
-    restarted_from += c.match.template_index == d.refined.back().match.template_index;
+    restarted_from += c.match.template_index == restarted_index;
   }
   TEST("refined from the matches, some candidates are acceptable", acceptable_before > 0, true);
   TEST_EQUAL("and none is confident", confident_before, 0);
