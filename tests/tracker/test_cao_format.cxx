@@ -2,8 +2,10 @@
 /// The .cao format as ViSP reads it: every primitive and its parameters, comments and Windows
 /// line ends, load() includes (nested, relative to the including file, placed by t= and tu=,
 /// indices local to each file), and bad includes (a missing file, a cycle) reported with the
-/// chain of load() lines.
+/// chain of load() lines; includes within their limits (a chain of thousands of files read
+/// without recursion, files known by identity through symbolic links).
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -202,6 +204,75 @@ void test_includes() {
   TEST("an unquoted load() path is reported at its line", !unquoted.ok() && unquoted.error().line == 2, true);
 }
 
+/// Writes chain_0.cao .. chain_{n-1}.cao in `dir`, each loading the next and holding one point.
+std::string write_chain(const std::string& dir, int n) {
+  mkdir(output_path(dir).c_str(), 0755);
+  for (int i = 0; i < n; ++i) {
+    const std::string load = i + 1 < n ? "load(\"chain_" + std::to_string(i + 1) + ".cao\")\n" : "";
+    write_file(dir + "/chain_" + std::to_string(i) + ".cao", "V1\n" + load + "1\n0 0 " + std::to_string(i) + "\n0\n0\n0\n");
+  }
+  return output_path(dir + "/chain_0.cao");
+}
+
+void test_include_limits() {
+  // A chain of thousands of files is read without recursion (it overflowed the stack).
+  const std::string chain = write_chain("long_chain", 3000);
+  const Result<Polygons> long_chain = read_cao(chain);
+  TEST("a chain of 3000 load()ed files loads", long_chain.ok(), true);
+  TEST("with a point from each", long_chain.ok() && long_chain.value().vertices.size() == 3000, true);
+
+  CaoIncludeLimits shallow;
+  shallow.max_depth = 100;
+  const Result<Polygons> deep = read_cao(chain, shallow);
+  TEST("a chain deeper than the limit is refused", deep.ok(), false);
+  if (!deep.ok()) {
+    const std::string text = deep.error().text();
+    std::printf("%s\n", text.c_str());
+    TEST("naming the limit", contains(text, "deeper than 100 files"), true);
+    TEST("at the load() line of the last file read", contains(text, "chain_99.cao:2:"), true);
+    TEST("the chain abbreviated: first links, the count between, last links",
+         contains(text, "chain_0.cao:2 -> ") && contains(text, "(94 more) -> ") &&
+             contains(text, "chain_99.cao:2 -> " + output_path("long_chain/chain_100.cao")),
+         true);
+    TEST("on one short line", text.find('\n') == std::string::npos && text.size() < 1000, true);
+  }
+
+  // The same part reached through a symbolic link to its directory is one file: read once,
+  // and a link back to a directory on the chain is a cycle (names differ, the file does not).
+  mkdir(output_path("linked").c_str(), 0755);
+  mkdir(output_path("linked/parts").c_str(), 0755);
+  symlink("parts", output_path("linked/alias").c_str());
+  symlink("..", output_path("linked/parts/up").c_str());
+  write_file("linked/parts/wheel.cao", "V1\n1\n0 0 0\n0\n0\n0\n");
+  const Result<Polygons> once =
+      read_cao(write_file("linked/main.cao", "V1\nload(\"parts/wheel.cao\")\nload(\"alias/wheel.cao\")\n"
+                                             "load(\"alias/up/alias/wheel.cao\")\n1\n0 0 1\n0\n0\n0\n"));
+  TEST("a part reached through links to its directory is loaded once",
+       once.ok() && once.value().vertices.size() == 2, true);
+  write_file("linked/parts/back.cao", "V1\nload(\"up/alias/back.cao\")\n1\n0 0 0\n0\n0\n0\n");
+  const Result<Polygons> cycle = read_cao(output_path("linked/parts/back.cao"));
+  TEST("a cycle through a link is recognised", !cycle.ok() && contains(cycle.error().message, "cycle"), true);
+
+  // A fan of ten parts against limits on the number of files and on their bytes.
+  std::string fan = "V1\n";
+  for (int i = 0; i < 10; ++i) {
+    write_file("fan_" + std::to_string(i) + ".cao", "V1\n1\n0 0 " + std::to_string(i) + "\n0\n0\n0\n");
+    fan += "load(\"fan_" + std::to_string(i) + ".cao\")\n";
+  }
+  const std::string fan_path = write_file("fan.cao", fan + "0\n0\n0\n0\n");
+  TEST("the fan of ten parts loads", read_cao(fan_path).ok(), true);
+  CaoIncludeLimits few_files;
+  few_files.max_files = 5;
+  const Result<Polygons> many = read_cao(fan_path, few_files);
+  TEST("more files than the limit are refused at the load() that passes it",
+       !many.ok() && contains(many.error().message, "more than 5 files") && many.error().line == 6, true);
+  CaoIncludeLimits few_bytes;
+  few_bytes.max_bytes = fan.size() + 60;
+  const Result<Polygons> big = read_cao(fan_path, few_bytes);
+  TEST("more bytes than the limit are refused before reading",
+       !big.ok() && contains(big.error().message, "more than " + std::to_string(few_bytes.max_bytes) + " bytes"), true);
+}
+
 void test_bad_records() {
   const struct {
     const char* text;
@@ -253,6 +324,7 @@ static void test_cao_format() {
   test_line_ends_and_visp_files();
   test_v2_and_trailing_text();
   test_includes();
+  test_include_limits();
   test_bad_records();
   test_primitive_limit();
 }

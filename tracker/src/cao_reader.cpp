@@ -2,6 +2,8 @@
 /// ViSP's .cao format as vpMbTracker::loadCAOModel reads it (docs/FORMATS.md): load() includes,
 /// points, lines, faces, cylinders, circles and their key=value parameters.
 #include <cmath>
+#include <optional>
+#include <unordered_set>
 #include <utility>
 
 #include "edgetrack/model_io.h"
@@ -11,44 +13,9 @@
 namespace edgetrack {
 namespace {
 
-/// Where a load() was read: the including file and its line.
-struct IncludeStep {
-  std::string file;
-  int line = 0;
-};
-
-/// "a.cao:3 -> b.cao:7 -> c.cao": each load() on the way to `last`.
-std::string chain_text(const std::vector<IncludeStep>& chain, const std::string& last) {
-  std::string text;
-  for (const IncludeStep& step : chain) text += step.file + ":" + std::to_string(step.line) + " -> ";
-  return text + last;
-}
-
 std::string parent_directory(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
-/// Removes "." and "dir/.." parts, so that one file has one name for the cycle test.
-std::string normalized_path(const std::string& path) {
-  std::vector<std::string> parts;
-  size_t start = 0;
-  const bool absolute = !path.empty() && path[0] == '/';
-  while (start <= path.size()) {
-    const size_t end = path.find('/', start);
-    const std::string part = path.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (part == "..") {
-      if (!parts.empty() && parts.back() != "..") parts.pop_back();
-      else if (!absolute) parts.push_back(part);
-    } else if (!part.empty() && part != ".") {
-      parts.push_back(part);
-    }
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  std::string out = absolute ? "/" : "";
-  for (size_t i = 0; i < parts.size(); ++i) out += (i ? "/" : "") + parts[i];
-  return out;
 }
 
 /// "[a;b;c]" after a load() parameter's prefix; `angles` accepts a "deg" or "rad" suffix per value.
@@ -193,16 +160,22 @@ void append_part(const Polygons& part, Polygons& into) {
   }
 }
 
-class CaoLoader;
-
 /// Reads one .cao file's records in order, keeping the position for error messages. Point
-/// indices are local to the file; load() includes are read first and merged before its own.
+/// indices are local to the file; its load() lines come first and are handed out one by one
+/// (next_include), then the parts they brought are merged before the file's own records.
 class CaoFileReader {
  public:
-  CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file)
-      : path_(std::move(path)), lines_(std::move(lines)), model_from_file_(model_from_file) {}
+  CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file);
 
-  Result<Polygons> read(CaoLoader& loader, std::vector<IncludeStep>& chain);
+  enum class Next { include, done, error };
+  /// The next load() line's file (relative to this one) and where its points go in the model.
+  Next next_include(std::string& path, Se3& model_from_part);
+  /// The records after the load() lines, after the `parts` those brought.
+  Result<Polygons> read_records(Polygons parts, bool included);
+
+  const std::string& path() const { return path_; }
+  int load_line() const { return load_line_; }  ///< the line of the last load() handed out
+  const Error& error() const { return error_; }
 
  private:
   bool read_points(int version, Polygons& out);
@@ -269,71 +242,40 @@ class CaoFileReader {
   std::vector<TextLine> lines_;
   Se3 model_from_file_;
   size_t pos_ = 0;
+  int version_ = 1;
+  int load_line_ = 0;
   long points_ = 0;
   Error error_;
 };
 
-/// Loads a file and its includes: the chain of load() lines being read (for cycles and
-/// messages) and every file loaded so far (ViSP loads a file once per model).
-class CaoLoader {
- public:
-  Result<Polygons> load(const std::string& path, const Se3& model_from_file, std::vector<IncludeStep>& chain) {
-    const std::string name = normalized_path(path);
-    std::vector<TextLine> lines;
-    auto read = read_text_lines(path, lines);
-    if (!read.ok()) {
-      if (chain.empty()) return read.error();
-      return Error{chain.back().file, chain.back().line,
-                   "cannot read the included file " + path + ": " + read.error().message +
-                       " (include chain: " + chain_text(chain, path) + ")"};
-    }
-    loaded_.push_back(name);
-    ancestors_.push_back(name);
-    Result<Polygons> result = CaoFileReader(path, std::move(lines), model_from_file).read(*this, chain);
-    ancestors_.pop_back();
-    return result;
-  }
-  bool is_ancestor(const std::string& path) const { return contains(ancestors_, normalized_path(path)); }
-  bool was_loaded(const std::string& path) const { return contains(loaded_, normalized_path(path)); }
-
- private:
-  static bool contains(const std::vector<std::string>& names, const std::string& name) {
-    for (const std::string& n : names)
-      if (n == name) return true;
-    return false;
-  }
-  std::vector<std::string> loaded_, ancestors_;
-};
-
-Result<Polygons> CaoFileReader::read(CaoLoader& loader, std::vector<IncludeStep>& chain) {
-  Polygons out;
-  int version = 1;
+CaoFileReader::CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file)
+    : path_(std::move(path)), lines_(std::move(lines)), model_from_file_(model_from_file) {
   const std::string& head = lines_.empty() ? std::string() : lines_[0].tokens[0];
   if (head.size() == 2 && head[0] == 'V' && head[1] >= '0' && head[1] <= '9') {
-    version = head[1] - '0';
+    version_ = head[1] - '0';
     ++pos_;
   }
-  bool included = false;
-  while (pos_ < lines_.size() && (lines_[pos_].tokens[0][0] == 'l' || lines_[pos_].tokens[0][0] == 'L')) {
-    const TextLine& line = lines_[pos_++];
-    std::string relative;
-    Se3 placement;
-    if (line.tokens[0].compare(0, 4, "load") != 0 || !parse_load(line.text, relative, placement))
-      return Error{path_, line.number, "expected load(\"file.cao\") with optional t=[x;y;z] and tu=[a;b;c]"};
-    const std::string path = relative[0] == '/' ? relative : parent_directory(path_) + relative;
-    if (loader.is_ancestor(path))
-      return Error{path_, line.number, "load() makes a cycle: " + chain_text(chain, path_ + ":" + std::to_string(line.number) + " -> " + path)};
-    if (loader.was_loaded(path)) continue;  // as ViSP: a file already in the model is not loaded again
-    chain.push_back({path_, line.number});
-    Result<Polygons> part = loader.load(path, model_from_file_ * placement, chain);
-    chain.pop_back();
-    if (!part.ok()) return part.error();
-    append_part(part.value(), out);
-    included = true;
-  }
+}
 
+CaoFileReader::Next CaoFileReader::next_include(std::string& path, Se3& model_from_part) {
+  if (pos_ >= lines_.size() || (lines_[pos_].tokens[0][0] != 'l' && lines_[pos_].tokens[0][0] != 'L'))
+    return Next::done;
+  const TextLine& line = lines_[pos_++];
+  std::string relative;
+  Se3 placement;
+  if (line.tokens[0].compare(0, 4, "load") != 0 || !parse_load(line.text, relative, placement)) {
+    fail(line, "expected load(\"file.cao\") with optional t=[x;y;z] and tu=[a;b;c]");
+    return Next::error;
+  }
+  load_line_ = line.number;
+  path = relative[0] == '/' ? relative : parent_directory(path_) + relative;
+  model_from_part = model_from_file_ * placement;
+  return Next::include;
+}
+
+Result<Polygons> CaoFileReader::read_records(Polygons out, bool included) {
   Polygons own;
-  if (!read_points(version, own)) return error_;
+  if (!read_points(version_, own)) return error_;
   if (points_ == 0 && !included) return Error{path_, lines_[pos_ - 1].number, "the file defines no 3D point"};
   std::vector<std::pair<int, int>> lines;
   std::vector<PrimitiveAttributes> line_attributes;
@@ -443,12 +385,103 @@ bool CaoFileReader::read_circles(Polygons& out) {
   });
 }
 
+/// Reads a model and its includes with an explicit stack of open files (no recursion, so a
+/// long chain needs no call stack), each file once, within CaoIncludeLimits.
+class CaoLoader {
+ public:
+  explicit CaoLoader(const CaoIncludeLimits& limits) : limits_(limits) {}
+
+  Result<Polygons> load(const std::string& top) {
+    if (std::optional<Error> refused = open(top, Se3())) return *refused;
+    for (;;) {
+      OpenFile& file = open_.back();
+      std::string path;
+      Se3 model_from_part;
+      const CaoFileReader::Next next = file.reader.next_include(path, model_from_part);
+      if (next == CaoFileReader::Next::error) return file.reader.error();
+      if (next == CaoFileReader::Next::include) {
+        if (std::optional<Error> refused = open(path, model_from_part)) return *refused;
+        continue;
+      }
+      Result<Polygons> whole = file.reader.read_records(std::move(file.parts), file.included);
+      if (!whole.ok()) return whole.error();
+      on_chain_.erase(file.identity);
+      open_.pop_back();
+      if (open_.empty()) return whole;
+      append_part(whole.value(), open_.back().parts);
+      open_.back().included = true;
+    }
+  }
+
+ private:
+  struct OpenFile {
+    CaoFileReader reader;
+    std::string identity;
+    Polygons parts;  ///< what its load() lines brought so far
+    bool included = false;
+  };
+
+  /// Pushes `path` as the file being read, unless it is already in the model (skipped, as ViSP
+  /// does) or refused.
+  std::optional<Error> open(const std::string& path, const Se3& model_from_file) {
+    const Result<InputFileIdentity> identity = input_file_identity(path);
+    if (!identity.ok()) return unreadable(path, identity.error());
+    const std::string& id = identity.value().canonical_path;
+    if (on_chain_.count(id)) return refusal("load() makes a cycle: " + chain_to(path));
+    if (loaded_.count(id)) return std::nullopt;
+    if (static_cast<long>(open_.size()) >= limits_.max_depth)
+      return refusal("the load() chain is deeper than " + std::to_string(limits_.max_depth) + " files: " + chain_to(path));
+    if (static_cast<long>(loaded_.size()) >= limits_.max_files)
+      return refusal("the model includes more than " + std::to_string(limits_.max_files) + " files; the next: " +
+                     chain_to(path));
+    if (identity.value().size > limits_.max_bytes - bytes_)
+      return refusal("the model's files together are more than " + std::to_string(limits_.max_bytes) +
+                     " bytes; the next: " + chain_to(path));
+    std::vector<TextLine> lines;
+    const Result<bool> read = read_text_lines(path, lines);
+    if (!read.ok()) return unreadable(path, read.error());
+    bytes_ += identity.value().size;
+    loaded_.insert(id);
+    on_chain_.insert(id);
+    open_.push_back(OpenFile{CaoFileReader(path, std::move(lines), model_from_file), id, Polygons{}, false});
+    return std::nullopt;
+  }
+
+  std::optional<Error> unreadable(const std::string& path, const Error& error) const {
+    if (open_.empty()) return error;
+    return refusal("cannot read the included file " + path + ": " + error.message + " (include chain: " +
+                   chain_to(path) + ")");
+  }
+  /// An Error at the load() line being followed.
+  Error refusal(const std::string& message) const {
+    return Error{open_.back().reader.path(), open_.back().reader.load_line(), message};
+  }
+  /// "a.cao:3 -> b.cao:7 -> last": the load() line followed in each open file; a long chain
+  /// keeps its first and last kEnds links and counts those between.
+  std::string chain_to(const std::string& last) const {
+    constexpr size_t kEnds = 3;
+    std::string text;
+    for (size_t i = 0; i < open_.size(); ++i) {
+      if (open_.size() > 2 * kEnds + 1 && i == kEnds) {
+        text += "(" + std::to_string(open_.size() - 2 * kEnds) + " more) -> ";
+        i = open_.size() - kEnds - 1;
+        continue;
+      }
+      text += open_[i].reader.path() + ":" + std::to_string(open_[i].reader.load_line()) + " -> ";
+    }
+    return text + last;
+  }
+
+  CaoIncludeLimits limits_;
+  std::vector<OpenFile> open_;
+  std::unordered_set<std::string> loaded_, on_chain_;  ///< canonical paths
+  std::size_t bytes_ = 0;
+};
+
 }  // namespace
 
-Result<Polygons> read_cao(const std::string& path) {
-  CaoLoader loader;
-  std::vector<IncludeStep> chain;
-  return loader.load(path, Se3(), chain);
+Result<Polygons> read_cao(const std::string& path, const CaoIncludeLimits& limits) {
+  return CaoLoader(limits).load(path);
 }
 
 }  // namespace edgetrack

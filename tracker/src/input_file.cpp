@@ -54,4 +54,13 @@ Result<std::string> read_input_text(const std::string& path, std::size_t max_byt
   return read_whole<std::string>(path, max_bytes);
 }
 
+Result<InputFileIdentity> input_file_identity(const std::string& path, std::size_t max_bytes) {
+  auto size = checked_size(path, max_bytes);
+  if (!size.ok()) return size.error();
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::canonical(path, error);
+  if (error) return Error{path, 0, "cannot resolve its path: " + error.message()};
+  return InputFileIdentity{canonical.string(), size.value()};
+}
+
 }  // namespace edgetrack

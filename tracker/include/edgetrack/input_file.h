@@ -26,4 +26,15 @@ Result<std::vector<uint8_t>> read_input_file(const std::string& path, std::size_
 /// The same as text.
 Result<std::string> read_input_text(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
 
+/// What an input file is before it is read: its size, and one name for it whatever path
+/// reaches it (symbolic links, "." and ".." resolved), so that a reader of includes recognises a
+/// file it has already read.
+struct InputFileIdentity {
+  std::string canonical_path;
+  std::size_t size = 0;
+};
+
+/// The identity of `path`, or the same Error read_input_file would give for it.
+Result<InputFileIdentity> input_file_identity(const std::string& path, std::size_t max_bytes = kMaxTextFileBytes);
+
 }  // namespace edgetrack

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "edgetrack/edge_model.h"
+#include "edgetrack/input_file.h"
 #include "edgetrack/result.h"
 
 namespace edgetrack {
@@ -13,9 +14,19 @@ namespace edgetrack {
 /// t=[..], tu=[..]) includes (relative to the including file, each part's indices local to it,
 /// its points placed by t and tu), points, lines, faces from lines, faces from points,
 /// cylinders, circles and their name=, useLod=, minLineLengthThreshold= and
-/// minPolygonAreaThreshold= parameters. Errors name the file and line; a missing include or
-/// a cycle also shows the chain of load() lines (file:line of each).
-Result<Polygons> read_cao(const std::string& path);
+/// minPolygonAreaThreshold= parameters. Errors name the file and line; a refused include
+/// also shows the chain of load() lines (file:line of each; a long chain as its first and last
+/// few links and the count between).
+///
+/// Includes are read without recursion, each file once: a file is known by its canonical path
+/// (input_file_identity), so a cycle through other names (symbolic links, "..") is an error and
+/// a repeat is skipped as ViSP skips a file already in the model.
+struct CaoIncludeLimits {
+  int max_depth = 4096;                      ///< files on one include chain, the top file included
+  int max_files = 16384;                     ///< distinct files in one model
+  std::size_t max_bytes = kMaxTextFileBytes;  ///< all of them together: a model is one text input
+};
+Result<Polygons> read_cao(const std::string& path, const CaoIncludeLimits& limits = CaoIncludeLimits{});
 
 /// Reads the v and f records of a Wavefront .obj (f accepts v, v/vt, v//vn, v/vt/vn and negative
 /// indices); other records are skipped.
