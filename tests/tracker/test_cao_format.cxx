@@ -273,6 +273,23 @@ void test_include_limits() {
        !big.ok() && contains(big.error().message, "more than " + std::to_string(few_bytes.max_bytes) + " bytes"), true);
 }
 
+void test_visp_readings() {
+  // ViSP lowercases useLod's value, and loads a face of two points as one line.
+  const Result<Polygons> p = read_cao(write_file(
+      "visp_readings.cao", "V1\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0\n0\n3\n3 0 1 2 useLod=True\n"
+                           "3 0 2 3 useLod=FALSE\n2 1 3 name=diagonal useLod=TRUE\n"));
+  TEST("useLod=True, FALSE and TRUE are read", p.ok(), true);
+  if (!p.ok()) return;
+  const Polygons& m = p.value();
+  TEST("True is true", m.face_attributes.size() == 2 && m.face_attributes[0].use_lod == true, true);
+  TEST("FALSE is false", m.face_attributes.size() == 2 && m.face_attributes[1].use_lod == false, true);
+  TEST("the face of two points is a line, not a face", m.faces.size() == 2 && m.lines.size() == 1, true);
+  TEST("from point 1 to point 3 with its parameters",
+       m.lines.size() == 1 && m.lines[0].first == 1 && m.lines[0].second == 3 &&
+           m.line_attributes[0].name == "diagonal" && m.line_attributes[0].use_lod == true,
+       true);
+}
+
 void test_bad_records() {
   const struct {
     const char* text;
@@ -325,6 +342,7 @@ static void test_cao_format() {
   test_v2_and_trailing_text();
   test_includes();
   test_include_limits();
+  test_visp_readings();
   test_bad_records();
   test_primitive_limit();
 }

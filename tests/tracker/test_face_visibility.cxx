@@ -149,6 +149,36 @@ void level_of_detail(const EdgeModel& cube, const PinholeCamera& camera) {
   lines.update(free_line.value(), camera, Se3(), lod);
   sample_control_points(free_line.value(), camera, Se3(), SamplingParams{}, lines, points);
   TEST("an untracked edge is not sampled", points.empty(), true);
+
+  // A primitive's own .cao parameters override the general setting, in both directions.
+  EdgeModel own_face = cube;
+  own_face.faces[0].attributes.use_lod = true;
+  own_face.faces[0].attributes.min_polygon_area = real(12500);
+  FaceVisibility by_face(own_face);
+  by_face.update(own_face, camera, turned_about_y(0, 0.15), FaceVisibilityParams{});
+  TEST("a face's useLod=1 minPolygonAreaThreshold=12500 hides it without the general use_lod",
+       by_face.face_visible(0), false);
+  own_face.faces[0].attributes.use_lod = false;
+  params.min_polygon_area = real(100000);
+  by_face.update(own_face, camera, turned_about_y(0, 0.15), params);
+  TEST("a face's useLod=0 keeps it under the general use_lod", by_face.face_visible(0), true);
+  own_face.faces[0].attributes.use_lod.reset();
+  by_face.update(own_face, camera, turned_about_y(0, 0.15), params);
+  TEST("its own threshold 12500 replaces the general 100000 (the face stays hidden, 12100 < 12500)",
+       by_face.face_visible(0), false);
+  own_face.faces[0].attributes.min_polygon_area = real(11500);
+  by_face.update(own_face, camera, turned_about_y(0, 0.15), params);
+  TEST("and 11500 shows it", by_face.face_visible(0), true);
+
+  EdgeModel own_line = free_line.value();
+  own_line.edges[0].attributes.use_lod = true;
+  own_line.edges[0].attributes.min_line_length = real(50);
+  FaceVisibility by_line(own_line);
+  by_line.update(own_line, camera, Se3(), FaceVisibilityParams{});
+  TEST("a line's useLod=1 minLineLengthThreshold=50 drops the 44 pixel line", by_line.edge_tracked(0), false);
+  own_line.edges[0].attributes.min_line_length = real(40);
+  by_line.update(own_line, camera, Se3(), FaceVisibilityParams{});
+  TEST("its threshold 40 keeps it", by_line.edge_tracked(0), true);
 }
 
 }  // namespace

@@ -96,11 +96,14 @@ bool parse_attributes(const TextLine& line, size_t first, PrimitiveAttributes& o
       }
       out.name = value;
     } else if (key == "useLod") {
-      if (value != "true" && value != "false" && value != "1" && value != "0") {
+      std::string lower = value;  // ViSP lowercases the value: True and TRUE are true
+      for (char& c : lower)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+      if (lower != "true" && lower != "false" && lower != "1" && lower != "0") {
         problem = "useLod= takes true, false, 1 or 0, not '" + value + "'";
         return false;
       }
-      out.use_lod = value == "true" || value == "1";
+      out.use_lod = lower == "true" || lower == "1";
     } else if (key == "minLineLengthThreshold" || key == "minPolygonAreaThreshold") {
       real number(0);
       if (!parse_real(value, number)) {
@@ -348,6 +351,11 @@ bool CaoFileReader::read_faces_from_points(Polygons& out) {
     std::vector<long> indices;
     PrimitiveAttributes attributes;
     if (!read_indexed(line, points_, "point", indices, attributes)) return false;
+    if (indices.size() == 2) {  // as ViSP: a face of two points is one line, always visible
+      out.lines.emplace_back(static_cast<int>(indices[0]), static_cast<int>(indices[1]));
+      out.line_attributes.push_back(attributes);
+      return true;
+    }
     out.faces.emplace_back(indices.begin(), indices.end());
     out.face_attributes.push_back(attributes);
     return true;

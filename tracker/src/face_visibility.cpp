@@ -118,8 +118,10 @@ bool FaceVisibility::face_passes(const EdgeModel& model, int face, const Pinhole
   const Vec3 normal = camera_from_model.rotation() * f.normal;
   // angle < limit  <=>  cos(angle) > cos(limit), with cos(angle) = (-centre . normal) / |centre|.
   if (!(dot(-centre, normal) > cos_limit * norm(centre))) return false;
-  return !params.use_lod ||
-         clipped_area(model, face, camera, camera_from_model, view_clipping(params)) >= params.min_polygon_area;
+  // A face's own useLod= and minPolygonAreaThreshold= override the general setting (ViSP's <lod>).
+  return !f.attributes.use_lod.value_or(params.use_lod) ||
+         clipped_area(model, face, camera, camera_from_model, view_clipping(params)) >=
+             f.attributes.min_polygon_area.value_or(params.min_polygon_area);
 }
 
 void FaceVisibility::update(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
@@ -137,12 +139,13 @@ void FaceVisibility::update(const EdgeModel& model, const PinholeCamera& camera,
     bool tracked = false;
     if (edge.faces[0] < 0 && edge.faces[1] < 0) {
       tracked = true;
-      if (params.use_lod) {
+      if (edge.attributes.use_lod.value_or(params.use_lod)) {
         const Vec3 a = camera_from_model * model.vertices[static_cast<size_t>(edge.a)];
         const Vec3 b = camera_from_model * model.vertices[static_cast<size_t>(edge.b)];
         real t0, t1;
         tracked = clip_to_view(a, b, camera, clipping, t0, t1) &&
-                  norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >= params.min_line_length;
+                  norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >=
+                      edge.attributes.min_line_length.value_or(params.min_line_length);
       }
     } else {
       for (int f : edge.faces)

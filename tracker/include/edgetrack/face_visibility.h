@@ -27,7 +27,9 @@ struct FaceVisibilityParams {
   bool far_clipping = false;   ///< when set, no part of an edge farther than far_distance is sampled
   real far_distance = real(100);
   bool fov_clipping = false;   ///< edges are clipped to the image's field of view before sampling
-  bool use_lod = false;        ///< level of detail: the two thresholds below apply
+  /// Level of detail: the two thresholds below apply. A face's or a free line's own .cao
+  /// parameters (PrimitiveAttributes) take precedence over these three, as in ViSP.
+  bool use_lod = false;
   real min_line_length = real(50);    ///< a free line shorter than this in the image is not tracked (pixels)
   real min_polygon_area = real(2500);  ///< a face smaller than this in the image is not visible (pixels^2)
 };
