@@ -18,6 +18,64 @@ std::string trimmed(const std::string& s) {
   return s.substr(begin, end - begin);
 }
 
+void append_utf8(unsigned long code, std::string& out) {
+  if (code < 0x80) {
+    out += static_cast<char>(code);
+  } else if (code < 0x800) {
+    out += static_cast<char>(0xC0 | (code >> 6));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else if (code < 0x10000) {
+    out += static_cast<char>(0xE0 | (code >> 12));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (code >> 18));
+    out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  }
+}
+
+/// A code point XML allows in a document (XML 1.0, Char).
+bool is_xml_char(unsigned long code) {
+  return code == 0x9 || code == 0xA || code == 0xD || (code >= 0x20 && code <= 0xD7FF) ||
+         (code >= 0xE000 && code <= 0xFFFD) || (code >= 0x10000 && code <= 0x10FFFF);
+}
+
+/// The document as UTF-8, as an XML parser detects its encoding: a UTF-8 byte-order mark is
+/// dropped; UTF-16 (little or big endian, by its byte-order mark or by a first '<' of two bytes)
+/// is converted.
+Result<std::string> as_utf8(const std::string& bytes, const std::string& source) {
+  const auto byte = [&](size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  if (bytes.size() >= 3 && byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) return bytes.substr(3);
+  bool little = false;
+  size_t start = 0;
+  if (bytes.size() >= 2 && ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF))) {
+    little = byte(0) == 0xFF;
+    start = 2;
+  } else if (bytes.size() >= 2 && ((byte(0) == '<' && byte(1) == 0) || (byte(0) == 0 && byte(1) == '<'))) {
+    little = byte(0) == '<';
+  } else {
+    return bytes;
+  }
+  std::string out;
+  int line = 1;
+  const auto unit = [&](size_t i) -> unsigned long { return little ? byte(i) | byte(i + 1) << 8 : byte(i) << 8 | byte(i + 1); };
+  for (size_t i = start; i < bytes.size(); i += 2) {
+    if (i + 1 >= bytes.size()) return Error{source, line, "UTF-16 text ends in the middle of a character"};
+    unsigned long code = unit(i);
+    if (code >= 0xD800 && code <= 0xDBFF && i + 3 < bytes.size() && unit(i + 2) >= 0xDC00 && unit(i + 2) <= 0xDFFF) {
+      code = 0x10000 + ((code - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
+      i += 2;
+    } else if (code >= 0xD800 && code <= 0xDFFF) {
+      return Error{source, line, "a UTF-16 surrogate without its pair"};
+    }
+    if (code == '\n') ++line;
+    append_utf8(code, out);
+  }
+  return out;
+}
+
 class Parser {
  public:
   Parser(const std::string& xml, const std::string& source) : xml_(xml), source_(source) {}
@@ -61,11 +119,39 @@ class Parser {
       } else if (starts("<?")) {
         if (!skip_past("?>")) return fail("a processing instruction is not closed");
       } else if (starts("<!DOCTYPE")) {
-        if (!skip_past(">")) return fail("the DOCTYPE is not closed");
+        if (!skip_doctype()) return fail("the DOCTYPE is not closed");
       } else {
         return true;
       }
     }
+  }
+
+  /// Moves past a DOCTYPE and its internal subset ([...], whose declarations, comments and
+  /// quoted literals may hold '>'); its declarations are not used, as ViSP's parser skips them.
+  bool skip_doctype() {
+    bool in_subset = false;
+    advance(9);
+    while (pos_ < xml_.size()) {
+      const char c = xml_[pos_];
+      if (c == '"' || c == '\'') {
+        advance(1);
+        if (!skip_past(c == '"' ? "\"" : "'")) return false;
+      } else if (in_subset && starts("<!--")) {
+        if (!skip_past("-->")) return false;
+      } else if (c == '[' && !in_subset) {
+        in_subset = true;
+        advance(1);
+      } else if (c == ']' && in_subset) {
+        in_subset = false;
+        advance(1);
+      } else if (c == '>' && !in_subset) {
+        advance(1);
+        return true;
+      } else {
+        advance(1);
+      }
+    }
+    return false;
   }
 
   std::string name() {
@@ -86,6 +172,11 @@ class Parser {
         advance(1);
         continue;
       }
+      if (starts("&#")) {
+        auto referenced = character_reference(out);
+        if (!referenced.ok()) return referenced.error();
+        continue;
+      }
       bool known = false;
       for (const auto& entity : kEntities)
         if (starts(entity[0])) {
@@ -94,8 +185,30 @@ class Parser {
           known = true;
           break;
         }
-      if (!known) return fail("an unknown entity (only &lt; &gt; &amp; &quot; &apos; are read)");
+      if (!known) return fail("an unknown entity (only &lt; &gt; &amp; &quot; &apos; and &#N; &#xN; are read)");
     }
+    return true;
+  }
+
+  /// "&#53;" or "&#x35;": appends the character it names, in UTF-8.
+  Result<bool> character_reference(std::string& out) {
+    const bool hex = xml_.compare(pos_, 3, "&#x") == 0;
+    size_t at = pos_ + (hex ? 3 : 2);
+    unsigned long code = 0;
+    const size_t digits_start = at;
+    for (; at < xml_.size() && at - digits_start < 8; ++at) {
+      const char c = xml_[at];
+      int digit = -1;
+      if (c >= '0' && c <= '9') digit = c - '0';
+      else if (hex && c >= 'a' && c <= 'f') digit = c - 'a' + 10;
+      else if (hex && c >= 'A' && c <= 'F') digit = c - 'A' + 10;
+      if (digit < 0) break;
+      code = code * (hex ? 16 : 10) + static_cast<unsigned long>(digit);
+    }
+    if (at == digits_start || at >= xml_.size() || xml_[at] != ';' || !is_xml_char(code))
+      return fail("a malformed character reference (&#N; or &#xN; naming a character XML allows)");
+    append_utf8(code, out);
+    advance(at + 1 - pos_);
     return true;
   }
 
@@ -173,7 +286,9 @@ class Parser {
 }  // namespace
 
 Result<XmlElement> parse_xml(const std::string& xml, const std::string& source) {
-  return Parser(xml, source).document();
+  const Result<std::string> utf8 = as_utf8(xml, source);
+  if (!utf8.ok()) return utf8.error();
+  return Parser(utf8.value(), source).document();
 }
 
 Result<XmlElement> read_xml_file(const std::string& path) {

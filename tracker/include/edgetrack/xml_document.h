@@ -17,7 +17,9 @@ struct XmlElement {
   std::vector<XmlElement> children;
 };
 
-/// Parses `xml` into its root element. A malformed document (an unclosed or mismatched tag, a
+/// Parses `xml` into its root element: UTF-8 (a byte-order mark dropped) or UTF-16 (little or
+/// big endian), the predefined entities and character references (&#53; &#x35;) decoded, a
+/// DOCTYPE and its internal subset skipped. A malformed document (an unclosed or mismatched tag, a
 /// second root, text outside the root) is an Error naming `source` and the line.
 Result<XmlElement> parse_xml(const std::string& xml, const std::string& source);
 
