@@ -277,7 +277,7 @@ void test_visp_readings() {
   // ViSP lowercases useLod's value, and loads a face of two points as one line.
   const Result<Polygons> p = read_cao(write_file(
       "visp_readings.cao", "V1\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0\n0\n3\n3 0 1 2 useLod=True\n"
-                           "3 0 2 3 useLod=FALSE\n2 1 3 name=diagonal useLod=TRUE\n"));
+                           "3 0 2 3 useLod=FALSE\n2 1 3 name=diagonal useLod=TRUE minLineLengthThreshold=5\n"));
   TEST("useLod=True, FALSE and TRUE are read", p.ok(), true);
   if (!p.ok()) return;
   const Polygons& m = p.value();
@@ -288,6 +288,8 @@ void test_visp_readings() {
        m.lines.size() == 1 && m.lines[0].first == 1 && m.lines[0].second == 3 &&
            m.line_attributes[0].name == "diagonal" && m.line_attributes[0].use_lod == true,
        true);
+  TEST("but the general line length: ViSP reads no minLineLengthThreshold on a face",
+       m.line_attributes.size() == 1 && !m.line_attributes[0].min_line_length.has_value(), true);
 }
 
 void test_bad_records() {

@@ -352,6 +352,9 @@ bool CaoFileReader::read_faces_from_points(Polygons& out) {
     PrimitiveAttributes attributes;
     if (!read_indexed(line, points_, "point", indices, attributes)) return false;
     if (indices.size() == 2) {  // as ViSP: a face of two points is one line, always visible
+      // ViSP reads a face's minPolygonAreaThreshold only: the line keeps the general length.
+      attributes.min_line_length.reset();
+      attributes.min_polygon_area.reset();
       out.lines.emplace_back(static_cast<int>(indices[0]), static_cast<int>(indices[1]));
       out.line_attributes.push_back(attributes);
       return true;

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// lod_visibility_upstream.cpp's output from edgetrack: the configuration applied, the model
+/// loaded, a fresh FaceVisibility updated at each pose, then "kept POSE NAME visible|hidden" for each
+/// named face and free line.
+//   lod_visibility_ours CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "edgetrack/face_visibility.h"
+#include "edgetrack/model_io.h"
+#include "edgetrack/se3.h"
+#include "edgetrack/visp_config.h"
+
+using namespace edgetrack;
+
+int main(int argc, char** argv) {
+  if (argc != 6) return 2;
+  TrackerConfig config;
+  const Result<ConfigNotes> read = apply_visp_config(argv[1], config);
+  const Result<EdgeModel> model = load_model(argv[2]);
+  if (!read.ok() || !model.ok()) {
+    std::fprintf(stderr, "%s\n", (!read.ok() ? read.error() : model.error()).text().c_str());
+    return 1;
+  }
+  config.camera.width = std::atoi(argv[4]);
+  config.camera.height = std::atoi(argv[5]);
+  std::ifstream poses(argv[3]);
+  std::string line;
+  int index = 0;
+  while (std::getline(poses, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    double t[3], tu[3];
+    in >> t[0] >> t[1] >> t[2] >> tu[0] >> tu[1] >> tu[2];
+    const Se3 pose = Se3::from_theta_u({real(t[0]), real(t[1]), real(t[2])}, {real(tu[0]), real(tu[1]), real(tu[2])});
+    FaceVisibility visibility(model.value());
+    visibility.update(model.value(), config.camera, pose, config.params.faces);
+    for (size_t f = 0; f < model.value().faces.size(); ++f)
+      std::printf("kept %d %s %s\n", index, model.value().faces[f].attributes.name.c_str(),
+                  visibility.face_visible(static_cast<int>(f)) ? "visible" : "hidden");
+    for (size_t e = 0; e < model.value().edges.size(); ++e) {
+      const Edge& edge = model.value().edges[e];
+      if (edge.faces[0] >= 0 || edge.faces[1] >= 0) continue;
+      std::printf("kept %d %s %s\n", index, edge.attributes.name.c_str(),
+                  visibility.edge_tracked(static_cast<int>(e)) ? "visible" : "hidden");
+    }
+    ++index;
+  }
+  return 0;
+}

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Which faces and lines Debian's ViSP 3.5 edge tracker keeps for a model with per-primitive
+/// level-of-detail parameters: for each pose of POSES, a fresh vpMbEdgeTracker (configuration
+/// loaded before the model, as ViSP's examples do) initialised at that pose on a blank image,
+/// then "kept POSE NAME visible|hidden" for each of its polygons. lod_visibility_ours.cpp prints the
+/// same from edgetrack.
+//   lod_visibility_upstream CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/mbt/vpMbEdgeTracker.h>
+
+int main(int argc, char** argv) {
+  if (argc != 6) return 2;
+  const unsigned int width = static_cast<unsigned int>(std::atoi(argv[4]));
+  const unsigned int height = static_cast<unsigned int>(std::atoi(argv[5]));
+  std::ifstream poses(argv[3]);
+  std::string line;
+  int index = 0;
+  while (std::getline(poses, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    double t[3], tu[3];
+    in >> t[0] >> t[1] >> t[2] >> tu[0] >> tu[1] >> tu[2];
+    const vpHomogeneousMatrix cMo(t[0], t[1], t[2], tu[0], tu[1], tu[2]);
+    vpMbEdgeTracker tracker;
+    tracker.loadConfigFile(argv[1]);
+    tracker.loadModel(argv[2]);
+    vpImage<unsigned char> image(height, width, 128);
+    tracker.initFromPose(image, cMo);
+    vpMbHiddenFaces<vpMbtPolygon>& faces = tracker.getFaces();
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      std::printf("kept %d %s %s\n", index, faces[i]->getName().c_str(), faces[i]->isVisible() ? "visible" : "hidden");
+    ++index;
+  }
+  return 0;
+}
