@@ -5,9 +5,9 @@
 //   lod_visibility_ours CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "pose_lines.h"
 
 #include "edgetrack/face_visibility.h"
 #include "edgetrack/model_io.h"
@@ -27,15 +27,9 @@ int main(int argc, char** argv) {
   }
   config.camera.width = std::atoi(argv[4]);
   config.camera.height = std::atoi(argv[5]);
-  std::ifstream poses(argv[3]);
-  std::string line;
   int index = 0;
-  while (std::getline(poses, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream in(line);
-    double t[3], tu[3];
-    in >> t[0] >> t[1] >> t[2] >> tu[0] >> tu[1] >> tu[2];
-    const Se3 pose = Se3::from_theta_u({real(t[0]), real(t[1]), real(t[2])}, {real(tu[0]), real(tu[1]), real(tu[2])});
+  for (const auto& p : read_pose_lines(argv[3])) {
+    const Se3 pose = Se3::from_theta_u({real(p[0]), real(p[1]), real(p[2])}, {real(p[3]), real(p[4]), real(p[5])});
     FaceVisibility visibility(model.value());
     visibility.update(model.value(), config.camera, pose, config.params.faces);
     for (size_t f = 0; f < model.value().faces.size(); ++f)

@@ -7,9 +7,9 @@
 //   lod_visibility_upstream CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "pose_lines.h"
 
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
@@ -19,15 +19,9 @@ int main(int argc, char** argv) {
   if (argc != 6) return 2;
   const unsigned int width = static_cast<unsigned int>(std::atoi(argv[4]));
   const unsigned int height = static_cast<unsigned int>(std::atoi(argv[5]));
-  std::ifstream poses(argv[3]);
-  std::string line;
   int index = 0;
-  while (std::getline(poses, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream in(line);
-    double t[3], tu[3];
-    in >> t[0] >> t[1] >> t[2] >> tu[0] >> tu[1] >> tu[2];
-    const vpHomogeneousMatrix cMo(t[0], t[1], t[2], tu[0], tu[1], tu[2]);
+  for (const auto& p : read_pose_lines(argv[3])) {
+    const vpHomogeneousMatrix cMo(p[0], p[1], p[2], p[3], p[4], p[5]);
     vpMbEdgeTracker tracker;
     tracker.loadConfigFile(argv[1]);
     tracker.loadModel(argv[2]);
