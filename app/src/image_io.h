@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "edgetrack/image_limits.h"
 #include "edgetrack/frame_view.h"
 #include "edgetrack/result.h"
 
@@ -46,10 +47,9 @@ FramePixels frame_pixels(RgbImage image);
 /// Takes grey8, RGB24 and RGB565 frames (what FramePixels holds).
 RgbImage to_rgb_image(const edgetrack::FrameView& frame);
 
-/// The largest frames accepted from files and options: sides up to 16384 pixels and at most
-/// 64 M pixels (8192 x 8192, or 16384 x 4096), 192 MB as RGB.
-constexpr int kMaxImageSide = 16384;
-constexpr long long kMaxImagePixels = 64LL << 20;
+/// The largest frames accepted from files and options (edgetrack/image_limits.h).
+using edgetrack::kMaxImageSide;
+using edgetrack::kMaxImagePixels;
 /// True when width x height is a frame size within those bounds.
 bool usable_image_size(long long width, long long height);
 

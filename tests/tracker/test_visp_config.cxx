@@ -159,6 +159,15 @@ void bad_values() {
   refused("mu.xml", "<conf><ecm><contrast>\n\n<mu1>1.5</mu1></contrast></ecm></conf>", 3, "<ecm><contrast><mu1>");
   refused("px.xml", "<conf>\n<camera>\n<px>0</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
   refused("width.xml", "<conf>\n<camera>\n<width>wide</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
+  // Intrinsics and sizes inside the bounds every other input has: a focal length or principal
+  // point beyond a million pixels, a side beyond an image file's 16384, more than 64 M pixels.
+  refused("huge_px.xml", "<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("huge_py.xml", "<conf>\n<camera>\n<py>2e6</py>\n</camera>\n</conf>\n", 3, "<camera><py>");
+  refused("huge_u0.xml", "<conf>\n<camera>\n<u0>1e300</u0>\n</camera>\n</conf>\n", 3, "<camera><u0>");
+  refused("far_v0.xml", "<conf>\n<camera>\n<v0>-2e6</v0>\n</camera>\n</conf>\n", 3, "<camera><v0>");
+  refused("wide.xml", "<conf>\n<camera>\n<width>100000</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
+  refused("many_pixels.xml", "<conf>\n<camera>\n<width>16384</width>\n<height>16384</height>\n</camera>\n</conf>\n", 4,
+          "<camera><height>");
   refused("angle.xml", "<conf>\n<face>\n<angle_appear>200</angle_appear>\n</face>\n</conf>\n", 3, "<face><angle_appear>");
   refused("far.xml", "<conf>\n<face>\n<near_clipping>0.5</near_clipping>\n<far_clipping>0.2</far_clipping>\n</face>\n</conf>\n",
           4, "<face><far_clipping>");

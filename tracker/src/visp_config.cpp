@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "edgetrack/image_limits.h"
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/xml_document.h"
 
@@ -18,6 +19,9 @@ namespace edgetrack {
 namespace {
 
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180;
+/// The focal lengths' bound and the principal point's distance from the origin (pixels): a
+/// million pixels is a field of view under a degree on the widest image, so larger is a typo.
+constexpr double kMaxCameraPixels = 1e6;
 
 /// Reads one file's elements onto a copy of the configuration.
 class Reading {
@@ -107,13 +111,20 @@ class Reading {
       if (value) {
         auto got = number(e, where);
         if (!got.ok()) return got.error();
-        if ((e.name == "px" || e.name == "py") && !(got.value() > 0)) return bad(e, where, "must be positive, not " + e.text);
+        const bool focal = e.name == "px" || e.name == "py";
+        if (focal && !(got.value() > 0 && got.value() <= kMaxCameraPixels))
+          return bad(e, where, "must be in (0, " + std::to_string(static_cast<long>(kMaxCameraPixels)) + "] pixels, not " + e.text);
+        if (!focal && std::fabs(got.value()) > kMaxCameraPixels)
+          return bad(e, where, "must be within " + std::to_string(static_cast<long>(kMaxCameraPixels)) + " pixels of 0, not " + e.text);
         *value = real(got.value());  // set-up time conversion
       } else if (size) {
         auto got = whole(e, where);
         if (!got.ok()) return got.error();
-        if (got.value() <= 0 || got.value() > 100000) return bad(e, where, "must be a positive number of pixels, not " + e.text);
+        if (got.value() <= 0 || got.value() > kMaxImageSide)
+          return bad(e, where, "must be 1.." + std::to_string(kMaxImageSide) + " pixels, not " + e.text);
         *size = static_cast<int>(got.value());
+        if (static_cast<long long>(config_.camera.width) * config_.camera.height > kMaxImagePixels)
+          return bad(e, where, "makes an image of more than " + std::to_string(kMaxImagePixels >> 20) + " M pixels");
       }
     }
     return true;
