@@ -15,13 +15,13 @@ namespace edgetrack_app {
 
 namespace {
 
-/// "MIN:MAX" in metres, 0 < MIN <= MAX <= 100, the value of `option`.
+/// "MIN:MAX" in metres, 0 < MIN < MAX <= 100, the value of `option`.
 Result<bool> distance_range(const std::string& option, const std::string& text, TemplateParams& params) {
   double low = 0, high = 0;
   char end = 0;
   if (std::sscanf(text.c_str(), "%lf:%lf%c", &low, &high, &end) != 2 || !std::isfinite(low) || !std::isfinite(high) ||
-      !(low > 0) || high < low || high > 100)
-    return Error{"", 0, option + " '" + text + "': expected MIN:MAX in metres, 0 < MIN <= MAX <= 100"};
+      !(low > 0) || !(high > low) || high > 100)
+    return Error{"", 0, option + " '" + text + "': expected MIN:MAX in metres, 0 < MIN < MAX <= 100"};
   params.views.distance_min = real(low);
   params.views.distance_max = real(high);
   return true;

@@ -23,6 +23,7 @@ DECLARE(test_detector_core);
 DECLARE(test_template_files);
 DECLARE(test_order_statistic);
 DECLARE(test_xml_document);
+DECLARE(test_template_bounds);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -46,6 +47,7 @@ void register_tests() {
   REGISTER(test_template_files);
   REGISTER(test_order_statistic);
   REGISTER(test_xml_document);
+  REGISTER(test_template_bounds);
 }
 
 DEFINE_MAIN

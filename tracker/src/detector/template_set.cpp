@@ -187,6 +187,8 @@ Result<TemplateSet> make_template_set(const EdgeModel& model, const PinholeCamer
   set.model_fingerprint = model_fingerprint(model);
   const PinholeCamera small = set.matching_camera();
   if (small.width < 16 || small.height < 16) return Error{"", 0, "the downscaled image is under 16 x 16 pixels"};
+  const Result<long long> views = checked_view_count(params.views, camera, set.extent);
+  if (!views.ok()) return views.error();
   EdgeIdBuffer edge_ids(small);
   std::vector<Candidate> candidates;
   for (const ViewPose& view : view_poses(params.views, camera, set.extent)) {

@@ -3,6 +3,8 @@
 #include "edgetrack/detector/viewpoints.h"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace edgetrack {
 
@@ -82,14 +84,70 @@ std::vector<Vec3> sphere_directions(int subdivisions) {
   return v;
 }
 
-std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent) {
-  real low = range.distance_min, high = range.distance_max;
+namespace {
+
+real smaller_focal(const PinholeCamera& camera) { return camera.px < camera.py ? camera.px : camera.py; }
+
+/// The range's nearest and farthest distances, the defaults resolved.
+void distance_bounds(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent, real& low,
+                     real& high) {
+  low = range.distance_min;
+  high = range.distance_max;
   if (low == real(0)) {
     const int side = camera.width < camera.height ? camera.width : camera.height;
-    const real focal = camera.px < camera.py ? camera.px : camera.py;
-    low = focal * real(2) * extent.radius / (real(0.8) * real(side));
-    high = focal * real(2) * extent.radius / (real(0.4) * real(side));
+    low = smaller_focal(camera) * real(2) * extent.radius / (real(0.8) * real(side));
+    high = smaller_focal(camera) * real(2) * extent.radius / (real(0.4) * real(side));
   }
+}
+
+/// The directions of sphere_directions within the range's cone.
+std::vector<Vec3> cone_directions(const ViewRange& range) {
+  using std::acos;
+  const Vec3 axis = normalized(range.axis);
+  std::vector<Vec3> kept;
+  for (const Vec3& d : sphere_directions(range.subdivisions)) {
+    const real c = dot(d, axis);
+    if (acos(c < real(-1) ? real(-1) : c > real(1) ? real(1) : c) <= range.max_angle + real(1e-6)) kept.push_back(d);
+  }
+  return kept;
+}
+
+std::string metres(const real& value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g m", static_cast<double>(value));
+  return text;
+}
+
+}  // namespace
+
+Result<long long> checked_view_count(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent) {
+  real low, high;
+  distance_bounds(range, camera, extent, low, high);
+  if (!(low > extent.radius))
+    return Error{"", 0, "the nearest distance " + metres(low) + " puts the camera inside the model (within " +
+                            metres(extent.radius) + " of its centre)"};
+  if (smaller_focal(camera) * real(2) * extent.radius < real(kMinModelPixels) * high)
+    return Error{"", 0, "at the farthest distance " + metres(high) + " the model spans under " +
+                            std::to_string(kMinModelPixels) + " pixels"};
+  long long distances = 0;
+  using std::sqrt;
+  const real end = high * sqrt(range.distance_ratio);
+  for (real d = low; (d <= end || distances == 0) && distances <= kMaxTemplateViews; d = d * range.distance_ratio)
+    ++distances;
+  const long long directions = static_cast<long long>(cone_directions(range).size());
+  const long long views = distances * directions * range.in_plane_steps;
+  if (views > kMaxTemplateViews)
+    return Error{"", 0, "the range asks for " + std::string(distances > kMaxTemplateViews ? "over " : "") +
+                            std::to_string(views) + " views (" + std::to_string(distances) + " distances x " +
+                            std::to_string(directions) + " directions x " + std::to_string(range.in_plane_steps) +
+                            " in-plane steps), more than the " + std::to_string(kMaxTemplateViews) +
+                            " a template file holds"};
+  return views;
+}
+
+std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent) {
+  real low, high;
+  distance_bounds(range, camera, extent, low, high);
   std::vector<real> distances;
   using std::sqrt;
   const real overshoot = sqrt(range.distance_ratio);
@@ -119,14 +177,8 @@ Se3 view_pose(const Vec3& direction, const real& in_plane, const real& distance,
 }
 
 std::vector<ViewPose> view_poses(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent) {
-  using std::acos;
   const real two_pi = real(6.283185307179586);
-  const Vec3 axis = normalized(range.axis);
-  std::vector<Vec3> kept;
-  for (const Vec3& d : sphere_directions(range.subdivisions)) {
-    const real c = dot(d, axis);
-    if (acos(c < real(-1) ? real(-1) : c > real(1) ? real(1) : c) <= range.max_angle + real(1e-6)) kept.push_back(d);
-  }
+  const std::vector<Vec3> kept = cone_directions(range);
   std::vector<ViewPose> poses;
   const std::vector<real> distances = view_distances(range, camera, extent);
   for (size_t d = 0; d < distances.size(); ++d)

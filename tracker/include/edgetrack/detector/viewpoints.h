@@ -8,6 +8,7 @@
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/result.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
@@ -48,6 +49,19 @@ std::vector<Vec3> sphere_directions(int subdivisions);
 /// the ratio's half); when range.distance_min is 0, min and max are where the model's bounding
 /// sphere spans 80 % and 40 % of the image's shorter side.
 std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
+
+/// The most views a template range may ask for (distances x directions x in-plane steps): each
+/// gives at most one template of at most 63 features, under 900 bytes in a template file, so the
+/// largest file `templates` writes stays within what `detect --templates` reads
+/// (kMaxTextFileBytes, 64 MiB).
+constexpr long long kMaxTemplateViews = 60000;
+/// The model's image (its bounding sphere's diameter) at the farthest distance, at least.
+constexpr int kMinModelPixels = 16;
+
+/// The number of views of the range, counted before any is made; an Error when the camera would
+/// be inside the model's bounding sphere at the nearest distance, the model would span fewer
+/// than kMinModelPixels at the farthest, or the views are more than kMaxTemplateViews.
+Result<long long> checked_view_count(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
 
 /// camera_from_model looking at the model's centre from `direction` (unit, model frame) at
 /// `distance`, turned by `in_plane` radians about the optical axis: the centre is on the
