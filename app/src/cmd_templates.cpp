@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "args.h"
+#include "atomic_output.h"
 #include "commands.h"
 #include "configuration.h"
 #include "detection_options.h"
@@ -36,6 +37,7 @@ int templates_main(int argc, char** argv) {
     std::fprintf(stderr, "%s", usage("templates", synopsis, specs).c_str());
     return 2;
   }
+  if (auto empty = check_output_names({{"--out", a.text("--out")}})) return report("templates", *empty) + 1;
   int width = 0, height = 0;
   auto size = a.size("--size", width, height);
   if (!size.ok()) return report("templates", size.error()) + 1;
@@ -51,7 +53,9 @@ int templates_main(int argc, char** argv) {
   auto set = edgetrack::make_template_set(model.value(), camera.value(), params.value());
   if (!set.ok()) return report("templates", {a.text("--model"), 0, set.error().message});
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  auto written = edgetrack::write_templates(a.text("--out"), set.value());
+  auto written = write_atomically(a.text("--out"), [&](const std::string& partial) {
+    return edgetrack::write_templates(partial, set.value());
+  });
   if (!written.ok()) return report("templates", written.error());
   std::printf("templates: %zu templates over %d distances, %zu features, %.2f MB in memory, made in %.0f ms; wrote %s\n",
               set.value().templates.size(), set.value().distance_count, set.value().features.size(),

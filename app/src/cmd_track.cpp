@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "args.h"
+#include "atomic_output.h"
 #include "click_init.h"
 #include "commands.h"
 #include "configuration.h"
@@ -200,6 +201,10 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
     std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
     return 2;
   }
+  std::vector<std::pair<std::string, std::string>> outputs;
+  for (const char* option : {"--poses", "--video", "--overlay", "--save-clicks", "--save-pose"})
+    if (a.has(option)) outputs.emplace_back(option, a.text(option));
+  if (auto clash = check_output_names(outputs)) return report("track", *clash) + 1;
   SourceOptions& source = request.source;
   source.images = a.text("--images");
   auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);

@@ -5,6 +5,9 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cstdio>
 
 #include "host_io.h"
@@ -50,16 +53,40 @@ class CaptureInput : public VideoInput {
   cv::VideoCapture capture_;
 };
 
+/// The frames a video file holds, -1 when it cannot be read. FFmpeg names on stderr what it
+/// finds wrong in the file; the caller's one line says it instead.
+long long frames_in(const std::string& path) {
+  std::fflush(stderr);
+  const int saved = dup(STDERR_FILENO);
+  const int null = open("/dev/null", O_WRONLY);
+  if (saved >= 0 && null >= 0) dup2(null, STDERR_FILENO);
+  cv::VideoCapture video(path, cv::CAP_FFMPEG);
+  const long long frames = video.isOpened() ? static_cast<long long>(video.get(cv::CAP_PROP_FRAME_COUNT)) : -1;
+  video.release();
+  if (saved >= 0 && null >= 0) dup2(saved, STDERR_FILENO);
+  if (null >= 0) close(null);
+  if (saved >= 0) close(saved);
+  return frames;
+}
+
 class WriterOutput : public VideoOutput {
  public:
   WriterOutput(cv::VideoWriter writer, std::string partial, std::string path)
       : writer_(std::move(writer)), partial_(std::move(partial)), path_(std::move(path)) {}
   bool write(const RgbImage& frame) override {
     writer_.write(to_bgr(frame));
-    return true;
+    ++frames_;
+    return writer_.isOpened();
   }
   Result<bool> close() override {
     writer_.release();
+    // cv::VideoWriter::write reports no failure: the file, read back, must hold every frame
+    // (a disk full or a file-size limit leaves it short or without its index).
+    const long long held = frames_in(partial_);
+    if (held != frames_)
+      return Error{path_, 0, "the video was not written whole (" + (held < 0 ? std::string("unreadable") :
+                             std::to_string(held) + " of " + std::to_string(frames_) + " frames") + " in " + partial_ +
+                             "): is the disk full or the file size limited?"};
     if (std::rename(partial_.c_str(), path_.c_str()) != 0)
       return Error{path_, 0, "cannot rename " + partial_ + " to it"};
     return true;
@@ -68,6 +95,7 @@ class WriterOutput : public VideoOutput {
  private:
   cv::VideoWriter writer_;
   std::string partial_, path_;
+  long long frames_ = 0;
 };
 
 /// OpenCV reports on stderr what its backends try and fail; our messages say what failed, once.

@@ -124,5 +124,24 @@ case $name in
     expect_error "option --size asks for 40000x40000" "$edgetrack" synth --out "$work/s" --camera "$work/c.xml" --size 40000x40000
     expect_error "would be 32768x16384" "$edgetrack" synth --out "$work/s" --camera "$work/c.xml" --size 8192x4096 \
       --supersample 4 ;;
+  outputs_named_and_written_whole)
+    # Names checked before any work: an empty one, two naming one file (through other spellings).
+    expect_error "--poses names no file" track --images "$mbt/cube/image%04d.pgm" --poses ""
+    expect_error "--poses and --video name the same file" track --images "$mbt/cube/image%04d.pgm" \
+      --poses "$work/out.mp4" --video "$work/../$name/out.mp4"
+    expect_error "--out names no file" "$edgetrack" templates --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --out ""
+    [ -z "$(ls "$work" | grep -v std)" ] || fail "a refused run left files: $(ls "$work")"
+    # Writes that fail (a file-size limit, its signal ignored so that write() reports it): each
+    # output refused by name, nothing under the final name.
+    limited() { (trap '' XFSZ; ulimit -f "$1"; shift; "$@"); }
+    expect_error "$work/cut.mp4: the video was not written whole" limited 20 track \
+      --images "$mbt/cube/image%04d.pgm" --last 20 --video "$work/cut.mp4"
+    [ ! -e "$work/cut.mp4" ] || fail "a video cut short is under its final name"
+    expect_error "$work/cut.csv: write failed" limited 8 track --images "$mbt/cube/image%04d.pgm" --poses "$work/cut.csv"
+    [ ! -e "$work/cut.csv" ] || fail "a poses table cut short is under its final name"
+    expect_error "$work/templates.txt: write failed" limited 20 "$edgetrack" templates --model "$mbt/cube.cao" \
+      --camera "$mbt/cube.xml" --size 640x480 --distance 0.3:0.4 --out "$work/templates.txt"
+    [ ! -e "$work/templates.txt" ] && [ ! -e "$work/templates.txt.partial" ] || fail "templates cut short were left"
+    echo "ok: nothing under a final name" ;;
   *) fail "unknown case" ;;
 esac
