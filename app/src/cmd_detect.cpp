@@ -77,7 +77,12 @@ int detect_main(int argc, char** argv) {
                                  std::to_string(image.value().height) + " does not match the camera's " +
                                  std::to_string(camera.width) + "x" + std::to_string(camera.height)});
   auto templates = templates_for(a, model.value(), camera);
-  if (!templates.ok()) return report("detect", templates.error());
+  if (!templates.ok()) {
+    edgetrack::Error error = templates.error();
+    // An image too small to downscale for matching is the image's fault: name it.
+    if (error.file.empty() && error.message.find("image") != std::string::npos) error.file = a.text("--image");
+    return report("detect", error);
+  }
   auto detector = edgetrack::Detector::create(model.value(), camera, std::move(templates).value(),
                                               edgetrack::DetectorParams{}, config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
