@@ -78,6 +78,7 @@ class PatternSource : public FrameSource {
     if (!exists.ok()) return exists.error();
     if (!exists.value()) {
       if (last_ >= 0) return Error{path, 0, "missing frame (the sequence should run to " + std::to_string(last_) + ")"};
+      warn_of_gap(path);
       return false;
     }
     auto image = read_frame_file(path, raw_width_, raw_height_);
@@ -89,6 +90,21 @@ class PatternSource : public FrameSource {
   }
 
  private:
+  /// The sequence ends at the first missing frame; a frame soon after it means a gap, which the
+  /// run would otherwise pass over in silence.
+  void warn_of_gap(const std::string& missing) const {
+    constexpr int kGapProbe = 100;
+    for (int k = next_ + 1; k <= next_ + kGapProbe; ++k) {
+      const std::string later = expand_pattern(pattern_, k);
+      auto found = path_exists(later);
+      if (found.ok() && found.value()) {
+        std::fprintf(stderr, "note: %s is missing but %s exists: the sequence stops at the gap "
+                             "(give --last to require every frame)\n", missing.c_str(), later.c_str());
+        return;
+      }
+    }
+  }
+
   std::string pattern_;
   int next_;
   int last_;

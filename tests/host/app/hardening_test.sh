@@ -158,5 +158,13 @@ case $name in
     expect_error "$work/wide.xml:1: <camera><width> must be 1..16384" "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$work/wide.xml" --out "$work/t.txt"
     [ ! -e "$work/t.txt" ] || fail "a refused templates run wrote its file" ;;
+  frame_gap_named)
+    mkdir -p "$work/seq"
+    for i in 0 1 2 4; do ln -s "$mbt/cube/image000$i.pgm" "$work/seq/image000$i.pgm"; done
+    track --images "$work/seq/image%04d.pgm" --poses "$work/gap.csv" >"$work/stdout" 2>"$work/stderr" || fail "the run failed"
+    grep -qF "note: $work/seq/image0003.pgm is missing but $work/seq/image0004.pgm exists" "$work/stderr" ||
+      fail "the gap is not named: $(cat "$work/stderr")"
+    [ "$(wc -l <"$work/gap.csv")" -eq 4 ] || fail "the run did not stop at the gap"
+    expect_error "$work/seq/image0003.pgm: missing frame" track --images "$work/seq/image%04d.pgm" --last 4 ;;
   *) fail "unknown case" ;;
 esac
