@@ -43,4 +43,39 @@ Result<bool> write_atomically(const std::string& path, const std::function<Resul
   return true;
 }
 
+namespace {
+
+/// "overlay0042.png": a frame `track --overlay` writes.
+bool is_overlay_frame(const std::string& name) {
+  const std::string prefix = "overlay";
+  if (name.size() < prefix.size() + 4 + 4 || name.compare(0, prefix.size(), prefix) != 0) return false;
+  const std::string ext = name.substr(name.size() - 4);
+  if (ext != ".png" && ext != ".ppm") return false;
+  for (size_t i = prefix.size(); i < name.size() - 4; ++i)
+    if (name[i] < '0' || name[i] > '9') return false;
+  return true;
+}
+
+}  // namespace
+
+std::optional<Error> prepare_overlay_directory(const std::string& dir, const std::string& marker) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) return Error{dir, 0, "cannot create the directory: " + error.message()};
+  std::vector<fs::path> ours;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name != marker && !is_overlay_frame(name))
+      return Error{dir, 0, "holds " + name + ", which is not an overlay frame: give an empty or new directory"};
+    ours.push_back(it->path());
+  }
+  if (error) return Error{dir, 0, "cannot list the directory: " + error.message()};
+  for (const fs::path& file : ours) {
+    fs::remove(file, error);
+    if (error) return Error{file.string(), 0, "cannot remove an earlier run's frame: " + error.message()};
+  }
+  return std::nullopt;
+}
+
 }  // namespace edgetrack_app

@@ -22,4 +22,9 @@ std::optional<edgetrack::Error> check_output_names(const std::vector<std::pair<s
 edgetrack::Result<bool> write_atomically(const std::string& path,
                                          const std::function<edgetrack::Result<bool>(const std::string&)>& write);
 
+/// Makes `dir` ready for a run's overlay frames: created when missing, and emptied of an earlier
+/// run's frames (overlayNNNN.png or .ppm, and the `marker` file), so that no stale frame sits
+/// beside the new ones; a directory holding anything else is refused rather than mixed into.
+std::optional<edgetrack::Error> prepare_overlay_directory(const std::string& dir, const std::string& marker);
+
 }  // namespace edgetrack_app

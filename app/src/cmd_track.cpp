@@ -7,7 +7,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -307,9 +306,7 @@ std::optional<int> open_outputs(const TrackRequest& request, const TrackInputs& 
   out.overlay_dir = a.text("--overlay");
   if (a.has("--overlay") || a.has("--video")) {
     if (!out.overlay_dir.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(out.overlay_dir, error);
-      if (error) return report("track", {out.overlay_dir, 0, "cannot create the directory: " + error.message()});
+      if (auto refused = prepare_overlay_directory(out.overlay_dir, kIncompleteMarker)) return report("track", *refused);
       // Removed when the run ends well: a directory of frames that still holds it is incomplete.
       auto marked = write_text_file(out.overlay_dir + "/" + kIncompleteMarker,
                                     "edgetrack track is writing these frames, or stopped before the end\n");

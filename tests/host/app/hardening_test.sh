@@ -166,5 +166,16 @@ case $name in
       fail "the gap is not named: $(cat "$work/stderr")"
     [ "$(wc -l <"$work/gap.csv")" -eq 4 ] || fail "the run did not stop at the gap"
     expect_error "$work/seq/image0003.pgm: missing frame" track --images "$work/seq/image%04d.pgm" --last 4 ;;
+  overlay_directory_of_one_run)
+    mkdir -p "$work/seq"
+    for i in 0 1 2; do ln -s "$mbt/cube/image000$i.pgm" "$work/seq/image000$i.pgm"; done
+    track --images "$work/seq/image%04d.pgm" --overlay "$work/frames" >/dev/null 2>&1 || fail "the first run failed"
+    track --images "$work/seq/image%04d.pgm" --last 1 --overlay "$work/frames" >/dev/null 2>&1 || fail "the second run failed"
+    [ "$(ls "$work/frames" | wc -l)" -eq 2 ] || fail "an earlier, longer run's frames stayed: $(ls "$work/frames")"
+    echo "ok: the earlier run's frames removed"
+    echo "mine" >"$work/frames/notes.txt"
+    expect_error "$work/frames: holds notes.txt, which is not an overlay frame" track --images "$work/seq/image%04d.pgm" \
+      --overlay "$work/frames"
+    [ -e "$work/frames/notes.txt" ] && [ "$(ls "$work/frames" | wc -l)" -eq 3 ] || fail "a refused run touched the directory" ;;
   *) fail "unknown case" ;;
 esac
