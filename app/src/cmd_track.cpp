@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -113,6 +114,26 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
   return pose.value().camera_from_model;
 }
 
+/// --status NAME=VALUE,...: each setting over `status`, checked.
+Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParams& status) {
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t equals = item.find('=');
+    char* stop = nullptr;
+    const double value = equals == std::string::npos ? 0 : std::strtod(item.c_str() + equals + 1, &stop);
+    if (equals == std::string::npos || equals + 1 == item.size() || *stop != '\0')
+      return Error{"", 0, "--status takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
+    std::string problem = edgetrack::set_status_param(status, item.substr(0, equals), value);
+    if (problem.empty()) problem = edgetrack::check_status_params(status);
+    if (!problem.empty()) return Error{"", 0, "--status " + item + ": " + problem};
+    start = end + 1;
+  }
+  return true;
+}
+
 /// What the command line asks for.
 struct TrackRequest {
   Args args;
@@ -175,6 +196,8 @@ const std::vector<OptionSpec>& track_options() {
       {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
       {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
+      {"--status", true, "NAME=VALUE[,NAME=VALUE...]: status rule settings over the configuration's, named as in its "
+                         "<status> block (docs/APP.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -255,6 +278,8 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   in.notes = config.value().notes;
   edgetrack::TrackerParams params = config.value().config.params;
   params.hypotheses = request.hypotheses;
+  auto status = apply_status_option(a.text("--status"), params.status);
+  if (!status.ok()) return report("track", status.error()) + 1;
   downscale_settings(params, request.factor);  // in pixels of the input frames
   auto source = open_frame_source(request.source);
   if (!source.ok()) return report("track", source.error());
