@@ -105,6 +105,9 @@ static void test_status_statistics() {
   // A detection: the fixed bounds until a frame tracked by them confirms it.
   StatusStatistics detected;
   detected.restart(false);
+  track(detected, frame(0.8, 0.5), params);
+  TEST("the frame a detection was found on does not confirm it",
+       detected.phase() == StatusStatistics::Phase::kUnconfirmed, true);
   for (int k = 0; k < 10; ++k)
     TEST("an unconfirmed detection keeps the fixed bounds", track(detected, frame(4.0, 1.8), params).status,
          TrackingStatus::kUncertain);

@@ -44,6 +44,7 @@ void RunningStatistic::add(real sample, real rate) {
 
 void StatusStatistics::restart(bool trusted) {
   phase_ = trusted ? Phase::kLearning : Phase::kUnconfirmed;
+  past_first_frame_ = false;
   scale_.clear();
   matched_.clear();
   inliers_.clear();
@@ -60,7 +61,11 @@ StatusBounds StatusStatistics::bounds(const StatusParams& p) const {
 }
 
 void StatusStatistics::add(const FrameMeasures& m, TrackingStatus status, const StatusParams& p) {
-  if (p.learn_frames == 0 || status != TrackingStatus::kTracked) return;
+  // A detected start is tracked first on the frame it was found on, and its pose was refined
+  // on that very image: that frame confirms nothing.
+  const bool found_on = phase_ == Phase::kUnconfirmed && !past_first_frame_;
+  past_first_frame_ = true;
+  if (p.learn_frames == 0 || status != TrackingStatus::kTracked || found_on) return;
   if (phase_ == Phase::kUnconfirmed) phase_ = Phase::kLearning;
   scale_.add(m.residual_scale, p.learning_rate);
   matched_.add(m.matched_share, p.learning_rate);

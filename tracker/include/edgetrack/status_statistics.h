@@ -44,7 +44,8 @@ class StatusStatistics {
   /// The bounds this frame is judged by (StatusParams holds the fixed ones and the outer ones).
   StatusBounds bounds(const StatusParams& params) const;
   /// Takes a frame's measures and its status: tracked frames teach the statistics; an
-  /// unconfirmed start is confirmed by the first tracked frame.
+  /// unconfirmed start is confirmed by the first tracked frame after the one it was found on
+  /// (the first frame after restart).
   void add(const FrameMeasures& measures, TrackingStatus status, const StatusParams& params);
 
   Phase phase() const { return phase_; }
@@ -55,6 +56,7 @@ class StatusStatistics {
 
  private:
   Phase phase_ = Phase::kLearning;
+  bool past_first_frame_ = false;  ///< a frame was added since the last restart
   RunningStatistic scale_;
   RunningStatistic matched_;
   RunningStatistic inliers_;
