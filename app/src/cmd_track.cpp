@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "args.h"
 #include "click_init.h"
@@ -387,13 +388,41 @@ Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const e
   return true;
 }
 
+/// The camera distances the detector's templates cover, as "A to B m".
+std::string searched_distances(const edgetrack::AutoInitTracker& tracker) {
+  double nearest = 0, farthest = 0;
+  for (const edgetrack::Template& t : tracker.detector().templates().templates) {
+    const double d = static_cast<double>(t.distance);
+    if (nearest == 0 || d < nearest) nearest = d;
+    if (d > farthest) farthest = d;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3f to %.3f m", nearest, farthest);
+  return text;
+}
+
 /// Adds a frame the detector ran on to the totals and, with progress lines, says what it found.
 void count_detection(int index, const edgetrack::AutoInitTracker& tracker, std::chrono::steady_clock::duration spent,
                      bool progress, RunTotals& totals) {
   ++totals.detections;
   totals.found += tracker.found() ? 1 : 0;
   totals.detection_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(spent).count();
-  if (progress) std::fprintf(stderr, "frame %d detection: %s\n", index, tracker.found() ? "found" : "not found");
+  if (!progress) return;
+  if (tracker.found()) std::fprintf(stderr, "frame %d detection: found\n", index);
+  else std::fprintf(stderr, "frame %d detection: not found (camera distances %s searched)\n", index,
+                    searched_distances(tracker).c_str());
+}
+
+/// --init-auto: an error line, and 1, when no frame of the run was tracked.
+int check_auto_run(const edgetrack::AutoInitTracker& tracker, const RunTotals& totals) {
+  if (totals.frames > totals.lost + totals.uncertain) return 0;
+  const std::string frames = std::to_string(totals.frames);
+  if (totals.found == 0)
+    return report("track", {"", 0, "--init-auto did not find the model in any of " + frames + " frames (camera distances " +
+                                       searched_distances(tracker) + " searched); give --init-distance MIN:MAX or "
+                                       "--templates for the scene"});
+  return report("track", {"", 0, "--init-auto found the model on " + std::to_string(totals.found) +
+                                     " frames, but no frame of " + frames + " was tracked"});
 }
 
 /// The progress line: on a terminal after every frame, else every 50 frames.
@@ -473,8 +502,9 @@ int track_main(int argc, char** argv) {
   if (auto stop = close_outputs(outputs)) return *stop;
   print_notes(inputs.notes);  // after a run that went through: an error stays one line
   print_table1(totals);
-  if (inputs.auto_tracker) print_detections(totals);
-  return 0;
+  if (!inputs.auto_tracker) return 0;
+  print_detections(totals);
+  return check_auto_run(*inputs.auto_tracker, totals);
 }
 
 }  // namespace

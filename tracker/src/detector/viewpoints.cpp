@@ -82,14 +82,17 @@ std::vector<Vec3> sphere_directions(int subdivisions) {
   return v;
 }
 
+void span_distances(const PinholeCamera& camera, const ModelExtent& extent, const real& largest_share,
+                    const real& smallest_share, real& nearest, real& farthest) {
+  const int side = camera.width < camera.height ? camera.width : camera.height;
+  const real focal = camera.px < camera.py ? camera.px : camera.py;
+  nearest = focal * real(2) * extent.radius / (largest_share * real(side));
+  farthest = focal * real(2) * extent.radius / (smallest_share * real(side));
+}
+
 std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent) {
   real low = range.distance_min, high = range.distance_max;
-  if (low == real(0)) {
-    const int side = camera.width < camera.height ? camera.width : camera.height;
-    const real focal = camera.px < camera.py ? camera.px : camera.py;
-    low = focal * real(2) * extent.radius / (real(0.8) * real(side));
-    high = focal * real(2) * extent.radius / (real(0.4) * real(side));
-  }
+  if (low == real(0)) span_distances(camera, extent, real(0.8), real(0.4), low, high);
   std::vector<real> distances;
   using std::sqrt;
   const real overshoot = sqrt(range.distance_ratio);
