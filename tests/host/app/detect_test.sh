@@ -99,7 +99,7 @@ case $name in
   track_init_auto_as_shipped)
     # ViSP's mbt/cube with cube.cao and cube.xml alone: no --init-distance, the range is every
     # distance at which the cube's bounding sphere spans a tenth to the whole of the image's
-    # shorter side (0.17 to 1.7 m here). Frames 0-19 tracked, none lost, the cube's centre within
+    # shorter side (0.164 to 1.64 m here). Frames 0-19 tracked, none lost, the cube's centre within
     # 6 mm of the run from cube.0.pos in every frame.
     "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-auto --last 19 \
       --images "$mbt/cube/image%04d.pgm" --poses "$work/auto.csv" --quiet >/dev/null || fail "track --init-auto failed"
