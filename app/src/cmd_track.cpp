@@ -7,8 +7,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "args.h"
 #include "atomic_output.h"
@@ -113,6 +115,26 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
   return pose.value().camera_from_model;
 }
 
+/// --status NAME=VALUE,...: each setting over `status`, checked.
+Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParams& status) {
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t equals = item.find('=');
+    char* stop = nullptr;
+    const double value = equals == std::string::npos ? 0 : std::strtod(item.c_str() + equals + 1, &stop);
+    if (equals == std::string::npos || equals + 1 == item.size() || *stop != '\0')
+      return Error{"", 0, "--status takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
+    std::string problem = edgetrack::set_status_param(status, item.substr(0, equals), value);
+    if (problem.empty()) problem = edgetrack::check_status_params(status);
+    if (!problem.empty()) return Error{"", 0, "--status " + item + ": " + problem};
+    start = end + 1;
+  }
+  return true;
+}
+
 /// What the command line asks for.
 struct TrackRequest {
   Args args;
@@ -175,6 +197,8 @@ const std::vector<OptionSpec>& track_options() {
       {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
       {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
                              "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
+      {"--status", true, "NAME=VALUE[,NAME=VALUE...]: status rule settings over the configuration's, named as in its "
+                         "<status> block (docs/APP.md)"},
       {"--quiet", false, "no progress line"},
       {"--help", false, "this text"},
   };
@@ -259,6 +283,8 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   in.notes = config.value().notes;
   edgetrack::TrackerParams params = config.value().config.params;
   params.hypotheses = request.hypotheses;
+  auto status = apply_status_option(a.text("--status"), params.status);
+  if (!status.ok()) return report("track", status.error()) + 1;
   downscale_settings(params, request.factor);  // in pixels of the input frames
   auto source = open_frame_source(request.source);
   if (!source.ok()) return report("track", source.error());
@@ -364,13 +390,41 @@ Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const e
   return true;
 }
 
+/// The camera distances the detector's templates cover, as "A to B m".
+std::string searched_distances(const edgetrack::AutoInitTracker& tracker) {
+  double nearest = 0, farthest = 0;
+  for (const edgetrack::Template& t : tracker.detector().templates().templates) {
+    const double d = static_cast<double>(t.distance);
+    if (nearest == 0 || d < nearest) nearest = d;
+    if (d > farthest) farthest = d;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3f to %.3f m", nearest, farthest);
+  return text;
+}
+
 /// Adds a frame the detector ran on to the totals and, with progress lines, says what it found.
 void count_detection(int index, const edgetrack::AutoInitTracker& tracker, std::chrono::steady_clock::duration spent,
                      bool progress, RunTotals& totals) {
   ++totals.detections;
   totals.found += tracker.found() ? 1 : 0;
   totals.detection_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(spent).count();
-  if (progress) std::fprintf(stderr, "frame %d detection: %s\n", index, tracker.found() ? "found" : "not found");
+  if (!progress) return;
+  if (tracker.found()) std::fprintf(stderr, "frame %d detection: found\n", index);
+  else std::fprintf(stderr, "frame %d detection: not found (camera distances %s searched)\n", index,
+                    searched_distances(tracker).c_str());
+}
+
+/// --init-auto: an error line, and 1, when no frame of the run was tracked.
+int check_auto_run(const edgetrack::AutoInitTracker& tracker, const RunTotals& totals) {
+  if (totals.frames > totals.lost + totals.uncertain) return 0;
+  const std::string frames = std::to_string(totals.frames);
+  if (totals.found == 0)
+    return report("track", {"", 0, "--init-auto did not find the model in any of " + frames + " frames (camera distances " +
+                                       searched_distances(tracker) + " searched); give --init-distance MIN:MAX or "
+                                       "--templates for the scene"});
+  return report("track", {"", 0, "--init-auto found the model on " + std::to_string(totals.found) +
+                                     " frames, but no frame of " + frames + " was tracked"});
 }
 
 /// The progress line: on a terminal after every frame, else every 50 frames.
@@ -450,8 +504,9 @@ int track_main(int argc, char** argv) {
   if (auto stop = close_outputs(outputs)) return *stop;
   print_notes(inputs.notes);  // after a run that went through: an error stays one line
   print_table1(totals);
-  if (inputs.auto_tracker) print_detections(totals);
-  return 0;
+  if (!inputs.auto_tracker) return 0;
+  print_detections(totals);
+  return check_auto_run(*inputs.auto_tracker, totals);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ DECLARE(test_template_files);
 DECLARE(test_order_statistic);
 DECLARE(test_xml_document);
 DECLARE(test_template_bounds);
+DECLARE(test_status_statistics);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -48,6 +49,7 @@ void register_tests() {
   REGISTER(test_order_statistic);
   REGISTER(test_xml_document);
   REGISTER(test_template_bounds);
+  REGISTER(test_status_statistics);
 }
 
 DEFINE_MAIN

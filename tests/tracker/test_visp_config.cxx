@@ -131,6 +131,21 @@ void precedence() {
   TEST("cube.xml's near clipping stays", config.params.faces.near_clipping, true);
 }
 
+/// edgetrack's status settings, in a block ViSP passes over, beside ViSP's own.
+void status_block() {
+  TrackerConfig config;
+  auto read = apply_visp_config(write("status.xml", "<conf><ecm><range><tracking>6</tracking></range></ecm>"
+                                                    "<edgetrack><status><tracked_scale_px>1.5</tracked_scale_px>"
+                                                    "<learn_frames>8</learn_frames></status></edgetrack>"
+                                                    "<status><least_inlier_share>0.3</least_inlier_share></status></conf>"),
+                                config);
+  TEST("a file with <edgetrack><status> and <status> is read", read.ok(), true);
+  TEST_NEAR("  the tracked scale", config.params.status.tracked_scale_px, 1.5, 1e-6);
+  TEST_EQUAL("  the learning frames", config.params.status.learn_frames, 8);
+  TEST_NEAR("  the least inlier share", config.params.status.least_inlier_share, 0.3, 1e-6);
+  TEST_EQUAL("  and ViSP's range beside them", config.params.me.getRange(), 6u);
+}
+
 void refused(const std::string& name, const std::string& xml, int line, const std::string& element) {
   TrackerConfig config;
   const TrackerConfig before = config;
@@ -174,6 +189,14 @@ void bad_values() {
   refused("fov.xml", "<conf>\n<face><fov_clipping>yes</fov_clipping></face>\n</conf>\n", 2, "<face><fov_clipping>");
   refused("lod.xml", "<conf>\n<lod>\n<min_polygon_area_threshold>-4</min_polygon_area_threshold>\n</lod>\n</conf>\n", 3,
           "<lod><min_polygon_area_threshold>");
+  refused("status.xml", "<conf>\n<edgetrack>\n<status>\n<learning_rate>0</learning_rate>\n</status>\n</edgetrack>\n</conf>\n",
+          4, "<edgetrack><status><learning_rate>");
+  refused("status_share.xml", "<conf>\n<status><min_inlier_share>1.5</min_inlier_share></status>\n</conf>\n", 2,
+          "<status><min_inlier_share>");
+  refused("status_name.xml", "<conf>\n<status>\n<tracked_scale>2</tracked_scale>\n</status>\n</conf>\n", 3,
+          "<status><tracked_scale>");
+  refused("status_frames.xml", "<conf>\n<status>\n<learn_frames>2.5</learn_frames>\n</status>\n</conf>\n", 3,
+          "<status><learn_frames>");
   refused("unclosed.xml", "<conf>\n<ecm>\n<range><tracking>5</tracking>\n</ecm>\n</conf>\n", 4, "</ecm> does not close <range>");
   TrackerConfig config;
   auto missing = apply_visp_config(std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", config);
@@ -187,6 +210,7 @@ static void test_visp_config() {
   cube_xml();
   blocks();
   precedence();
+  status_block();
   bad_values();
 }
 

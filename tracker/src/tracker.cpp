@@ -121,6 +121,7 @@ bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
   motion_.reset(camera_from_model);
   contrast_memory_.clear();
   started_ = false;
+  status_statistics_.restart(start == StartPose::kGiven);
   return true;
 }
 
@@ -218,7 +219,8 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
       pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
-  const FrameStatus judged = judge_frame(m, params_.status, params_.pose.min_points);
+  const FrameStatus judged =
+      judge_frame(m, params_.status, params_.pose.min_points, status_statistics_.bounds(params_.status));
   result.status = judged.status;
   result.reason = judged.reason;
 }
@@ -234,6 +236,7 @@ void Tracker::conclude(FrameResult& result) {
     contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
     started_ = true;
   }
+  status_statistics_.add(result.measures, result.status, params_.status);
   camera_from_model_ = motion_.prediction();
 }
 

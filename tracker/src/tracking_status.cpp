@@ -2,6 +2,8 @@
 /// The tracking status rule.
 #include "edgetrack/tracking_status.h"
 
+#include <utility>
+
 namespace edgetrack {
 
 const char* status_name(TrackingStatus status) {
@@ -44,10 +46,55 @@ std::string check_status_params(const StatusParams& p) {
   if (!positive(p.max_pose_uncertainty_px) || !positive(p.lost_uncertainty_range_share))
     return "status: the pose uncertainty bounds must be positive";
   if (p.edge_location_px < real(0)) return "status: the edge location error must be at least 0 pixels";
+  if (p.learn_frames < 0 || p.learn_frames > 1000) return "status: the learning frames must be 0 to 1000";
+  if (!positive(p.learning_rate) || p.learning_rate > real(1)) return "status: the learning rate must be over 0 and at most 1";
+  if (p.learned_deviations < real(0) || p.least_deviation_share < real(0))
+    return "status: the learned deviations and the least deviation share must be at least 0";
+  if (p.least_matched_share < real(0) || p.least_matched_share > p.min_matched_share || p.least_inlier_share < real(0) ||
+      p.least_inlier_share > p.min_inlier_share)
+    return "status: the least matched and inlier shares must be in [0, the fixed minimum shares]";
   return "";
 }
 
+std::string set_status_param(StatusParams& p, const std::string& name, double value) {
+  if (name == "learn_frames") {
+    if (!(value >= 0 && value <= 1000) || value != static_cast<double>(static_cast<int>(value)))
+      return "learn_frames must be a whole number from 0 to 1000";
+    p.learn_frames = static_cast<int>(value);
+    return "";
+  }
+  const std::pair<const char*, real*> values[] = {{"tracked_scale_px", &p.tracked_scale_px},
+                                                  {"lost_range_share", &p.lost_range_share},
+                                                  {"lost_scale_floor_px", &p.lost_scale_floor_px},
+                                                  {"min_matched_share", &p.min_matched_share},
+                                                  {"min_inlier_share", &p.min_inlier_share},
+                                                  {"max_pose_uncertainty_px", &p.max_pose_uncertainty_px},
+                                                  {"lost_uncertainty_range_share", &p.lost_uncertainty_range_share},
+                                                  {"edge_location_px", &p.edge_location_px},
+                                                  {"learning_rate", &p.learning_rate},
+                                                  {"learned_deviations", &p.learned_deviations},
+                                                  {"least_deviation_share", &p.least_deviation_share},
+                                                  {"least_matched_share", &p.least_matched_share},
+                                                  {"least_inlier_share", &p.least_inlier_share}};
+  for (const auto& named : values) {
+    if (name != named.first) continue;
+    if (!(value >= -1e6 && value <= 1e6)) return name + " must be a number within +-1e6";
+    *named.second = real(value);  // set-up time conversion
+    return "";
+  }
+  return "'" + name + "' is not a status setting";
+}
+
+StatusBounds fixed_bounds(const StatusParams& params) {
+  return {params.tracked_scale_px, params.min_matched_share, params.min_inlier_share, params.max_pose_uncertainty_px};
+}
+
 FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points) {
+  return judge_frame(m, params, min_points, fixed_bounds(params));
+}
+
+FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points,
+                        const StatusBounds& bounds) {
   const auto lost = [](StatusReason reason) { return FrameStatus{TrackingStatus::kLost, reason}; };
   const auto uncertain = [&m](StatusReason reason) {
     return m.after_loss ? FrameStatus{TrackingStatus::kLost, StatusReason::kNotReacquired}
@@ -61,11 +108,11 @@ FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int 
   if (m.pose_uncertainty_px > params.lost_uncertainty_range_share * real(static_cast<int>(m.range)))
     return lost(StatusReason::kPoseUndetermined);
   if (m.kept < 2 * min_points) return uncertain(StatusReason::kFewToCheck);
-  if (m.matched_share < params.min_matched_share) return uncertain(StatusReason::kFewMatched);
-  if (m.inlier_share < params.min_inlier_share) return uncertain(StatusReason::kManyOutliers);
-  if (m.residual_scale > params.tracked_scale_px) return uncertain(StatusReason::kLooseFit);
+  if (m.matched_share < bounds.min_matched_share) return uncertain(StatusReason::kFewMatched);
+  if (m.inlier_share < bounds.min_inlier_share) return uncertain(StatusReason::kManyOutliers);
+  if (m.residual_scale > bounds.tracked_scale_px) return uncertain(StatusReason::kLooseFit);
   if (m.saturations > 0) return uncertain(StatusReason::kSaturated);
-  if (m.pose_uncertainty_px > params.max_pose_uncertainty_px) return uncertain(StatusReason::kPoseUnconstrained);
+  if (m.pose_uncertainty_px > bounds.max_pose_uncertainty_px) return uncertain(StatusReason::kPoseUnconstrained);
   return {TrackingStatus::kTracked, StatusReason::kNone};
 }
 

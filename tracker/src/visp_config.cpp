@@ -39,6 +39,8 @@ class Reading {
       else if (block.name == "sample") read = sample(block, "sample");
       else if (block.name == "face") read = face(block);
       else if (block.name == "lod") read = lod(block);
+      else if (block.name == "status") read = status(block, "<status>");
+      else if (block.name == "edgetrack") read = edgetrack_block(block);
       else if (block.name == "projection_error")
         note("<projection_error> (ViSP's projection-error diagnostic, which edgetrack does not compute)");
       if (!read.ok()) return read;
@@ -227,6 +229,31 @@ class Reading {
       else if (e.name == "min_line_length_threshold") read = measure(e, where, 1, faces.min_line_length);
       else if (e.name == "min_polygon_area_threshold") read = measure(e, where, 1, faces.min_polygon_area);
       if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status>.
+  Result<bool> edgetrack_block(const XmlElement& block) {
+    for (const XmlElement& e : block.children) {
+      if (e.name != "status") continue;
+      auto read = status(e, "<edgetrack><status>");
+      if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  /// The status rule's settings (StatusParams), each element named as its field; a name that
+  /// is none is refused (the block is edgetrack's own: a misspelt setting would go unnoticed).
+  Result<bool> status(const XmlElement& block, const std::string& where_block) {
+    StatusParams& p = config_.params.status;
+    for (const XmlElement& e : block.children) {
+      const std::string where = where_block + "<" + e.name + ">";
+      auto got = number(e, where);
+      if (!got.ok()) return got.error();
+      std::string problem = set_status_param(p, e.name, got.value());
+      if (problem.empty()) problem = check_status_params(p);
+      if (!problem.empty()) return bad(e, where, "'" + e.text + "' is refused: " + problem);
     }
     return true;
   }

@@ -215,6 +215,42 @@ case $name in
     expect_error "$work/bad.xml:5: <ecm><mask><size> must be 3..15 pixels, not 1" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --config "$work/bad.xml" ;;
+  error_bad_status_option)
+    expect_error "--status tracked_scale=2: 'tracked_scale' is not a status setting" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --status tracked_scale=2 ;;
+  castel_as_shipped_tracked)
+    # ViSP's real castel with its files as shipped: the model approximates the castle (no
+    # crenellations, no rough walls), so a well held frame's residual scale is 3-5 px and its
+    # pose uncertainty 1.4-3 px, over the fixed bounds of a perfect model (1 px, 1 px). Learned
+    # from the frames after the given pose, at most 3 of the 30 frames are not tracked; with the
+    # learning off (--status, or the XML's <edgetrack><status> block) the fixed bounds call
+    # every frame uncertain (measured: 30 of 30).
+    castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
+    track_castel() {
+      "$edgetrack" track --model "$castel/chateau.cao" --camera "$castel/chateau.xml" --init-pose "$castel/chateau.0.pos" \
+        --images "$castel/castel/image_%04d.pgm" --quiet "$@"
+    }
+    not_tracked() { awk -F, 'NR > 1 && $10 != "ok"' "$1" | wc -l; }
+    track_castel --poses "$work/learned.csv" || fail "track failed"
+    track_castel --poses "$work/fixed.csv" --status learn_frames=0 || fail "track --status failed"
+    printf '<conf><edgetrack><status><learn_frames>0</learn_frames></status></edgetrack></conf>\n' >"$work/fixed.xml"
+    track_castel --poses "$work/fixed_xml.csv" --config "$work/fixed.xml" || fail "track --config failed"
+    echo "castel frames not tracked: learned $(not_tracked "$work/learned.csv"), fixed $(not_tracked "$work/fixed.csv")," \
+      "fixed from the XML $(not_tracked "$work/fixed_xml.csv")"
+    [ "$(($(wc -l <"$work/learned.csv") - 1))" -eq 30 ] || fail "expected 30 frames"
+    [ "$(not_tracked "$work/learned.csv")" -le 3 ] || fail "more than 3 of 30 frames not tracked"
+    [ "$(not_tracked "$work/fixed.csv")" -gt 3 ] || fail "--status learn_frames=0 did not keep the fixed bounds"
+    [ "$(not_tracked "$work/fixed_xml.csv")" -gt 3 ] || fail "<edgetrack><status> did not keep the fixed bounds" ;;
+  mbt_cube_none_uncertain)
+    # mbt/cube with cube.xml, all 218 frames at 640x480 and QVGA: every frame tracked.
+    for scale in 1 2; do
+      track_cube --init-pose "$mbt/cube.0.pos" --last 217 --downscale $scale --poses "$work/poses$scale.csv" ||
+        fail "track failed"
+      others=$(awk -F, 'NR > 1 && $10 != "ok"' "$work/poses$scale.csv" | wc -l)
+      echo "downscale $scale: $others of 218 frames not tracked"
+      [ "$others" -eq 0 ] || fail "frames not tracked at downscale $scale"
+    done ;;
   lost_on_noise_and_blank_frames)
     # A frame of noise (every site finds an edge, at chance distances) and a flat frame (no
     # edge) are lost, at 640x480 and QVGA; the frames around them are not, and tracking resumes

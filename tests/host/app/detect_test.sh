@@ -96,6 +96,36 @@ case $name in
     echo "cube centre against the run from cube.0.pos: largest $worst mm, mean $mean mm"
     less "$mean" 1.0 || fail "the centre is 1 mm or more from the run from cube.0.pos on average"
     less "$worst" 6.0 || fail "the centre strays 6 mm or more from the run from cube.0.pos" ;;
+  track_init_auto_as_shipped)
+    # ViSP's mbt/cube with cube.cao and cube.xml alone: no --init-distance, the range is every
+    # distance at which the cube's bounding sphere spans a tenth to the whole of the image's
+    # shorter side (0.164 to 1.64 m here). Frames 0-19 tracked, none lost, the cube's centre within
+    # 6 mm of the run from cube.0.pos in every frame.
+    "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-auto --last 19 \
+      --images "$mbt/cube/image%04d.pgm" --poses "$work/auto.csv" --quiet >/dev/null || fail "track --init-auto failed"
+    "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" --last 19 \
+      --images "$mbt/cube/image%04d.pgm" --poses "$work/pos.csv" --quiet >/dev/null || fail "track failed"
+    check_poses "$work/auto.csv" 20 40
+    read -r worst mean < <(centre_offsets "$work/auto.csv" "$work/pos.csv" "-0.042 0.042 0.042")
+    echo "cube centre against the run from cube.0.pos: largest $worst mm, mean $mean mm"
+    less "$worst" 6.0 || fail "the centre strays 6 mm or more from the run from cube.0.pos" ;;
+  track_init_auto_nothing_found)
+    # Three flat frames: the detector finds nothing, says so with the distances it searched, and
+    # track exits non-zero, no frame of the run having been tracked.
+    "$edgetrack" synth --out "$work/seq" --frames 1 >/dev/null || fail "synth failed"
+    mkdir -p "$work/flat"
+    for i in 0 1 2; do
+      { printf 'P5\n320 240\n255\n'; head -c $((320 * 240)) /dev/zero | tr '\0' '\200'; } >"$work/flat/flat$i.pgm"
+    done
+    "$edgetrack" track --model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" --init-auto \
+      --init-distance 0.12:0.2 --images "$work/flat/flat%d.pgm" --poses "$work/auto.csv" >"$work/track.txt" 2>"$work/track.err"
+    status=$?
+    cat "$work/track.err"
+    [ "$status" -ne 0 ] || fail "exit status 0 with no frame tracked"
+    grep -q "frame 0 detection: not found (camera distances 0.120 to 0.[0-9]* m searched)" "$work/track.err" ||
+      fail "no not-found line with the distances searched"
+    grep -q "did not find the model in any of 3 frames (camera distances 0.120 to" "$work/track.err" ||
+      fail "no closing line saying the model was never found" ;;
   track_init_auto_redetects_after_cover)
     # The generated cube (synth's path, 20 frames) covered by a board on frames 6-9 and 20 mm
     # lower when it comes back on frame 10, beyond the tracker's own recovery from where it went:

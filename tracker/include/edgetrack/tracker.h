@@ -20,6 +20,7 @@
 #include "edgetrack/pose_solver.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/status_statistics.h"
 #include "edgetrack/tracking_status.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
@@ -130,7 +131,10 @@ class Tracker {
   /// (a detector's unrefined candidate) is not trusted for the contrasts, as the prediction
   /// after a lost frame is not, until a frame is tracked from it; its distances still weigh the
   /// first solve (PoseParams::weigh_at_start), which the prediction after a loss does not.
-  enum class StartPose { kGiven, kGuess };
+  /// A refined detection (kDetected) is a given pose for the contrasts, but the status keeps
+  /// the fixed bounds until a frame tracked by them confirms it, and learns the scene from
+  /// there (status_statistics.h); a given pose starts the learning at once.
+  enum class StartPose { kGiven, kGuess, kDetected };
   bool reset(const Se3& camera_from_model, StartPose start = StartPose::kGiven);
   /// The visible control points and the matches of the last frame (with the pose step's
   /// outliers marked), for tests and display.
@@ -186,6 +190,7 @@ class Tracker {
   std::vector<unsigned char> borrowed_;  ///< per visible point, nonzero: its reference is its primitive's
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
+  StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
 };
 
 }  // namespace edgetrack

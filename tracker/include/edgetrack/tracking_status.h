@@ -82,10 +82,51 @@ struct StatusParams {
   /// so the residuals about the fitted pose do not show it; with a few edges left the pose fits
   /// them exactly and the residual scale falls far below it (docs/ARCHITECTURE.md).
   real edge_location_px = real(0.3);
+
+  // What a tracked frame looks like is learned from the scene (status_statistics.h): a user's
+  // model approximates the object, so its residual scale and pose uncertainty on a well held
+  // frame may be several times a perfect model's. The fixed bounds above are the least the
+  // learned ones may be; the lost rules (chance residuals, pose undetermined) stay as they are.
+  /// Frames after a trusted start (a given pose, or a detection once a frame tracked by the
+  /// fixed bounds confirms it) that teach the statistics before a frame is judged by its
+  /// departure from them; they are judged by the lost rules and the share floors below only.
+  /// 0: no learning, the fixed bounds throughout (the detector's refinement of a candidate).
+  int learn_frames = 5;
+  /// The weight of a new frame in the running statistics once 1 / learning_rate frames have
+  /// been seen (an EWMA's lambda; before, each frame weighs 1/n): how fast they follow the scene.
+  real learning_rate = real(0.1);
+  /// A tracked frame's measure lies within this many deviations of the learned mean (toward
+  /// worse: a larger residual scale or pose uncertainty, a smaller share).
+  real learned_deviations = real(3);
+  /// The deviation taken as at least this share of the mean (of a share: of what it misses,
+  /// 1 - mean): a few calm frames underestimate the spread of the frames to come.
+  real least_deviation_share = real(0.2);
+  /// The learned matched and inlier shares' bounds stay at or above these floors (and at or
+  /// below min_matched_share and min_inlier_share): a pose resting on under a quarter of the
+  /// visible model, or with three quarters of its matches outliers, is never called tracked.
+  real least_matched_share = real(0.25);
+  real least_inlier_share = real(0.25);
 };
+
+/// The bounds between a tracked and an uncertain frame (the lost rules have their own): the
+/// fixed ones of StatusParams, or those learned from the scene (status_statistics.h).
+struct StatusBounds {
+  real tracked_scale_px{1};          ///< above: uncertain (loose fit)
+  real min_matched_share{0.5};       ///< below: uncertain
+  real min_inlier_share{0.5};        ///< below: uncertain
+  real max_pose_uncertainty_px{1};   ///< above: uncertain (pose unconstrained)
+};
+
+/// The fixed bounds of `params`.
+StatusBounds fixed_bounds(const StatusParams& params);
 
 /// The first setting outside its limits, as "status: ...", or an empty string.
 std::string check_status_params(const StatusParams& params);
+
+/// Sets the setting whose field is named `name` (tracked_scale_px, learn_frames, ...) to
+/// `value`, for the configuration file's <status> block and the command line; the problem
+/// (no such setting, a fraction for learn_frames) or an empty string. Limits: check_status_params.
+std::string set_status_param(StatusParams& params, const std::string& name, double value);
 
 struct FrameStatus {
   TrackingStatus status = TrackingStatus::kLost;
@@ -102,6 +143,9 @@ struct FrameStatus {
 /// than twice `min_points` (12 for six pose parameters) leave too few residual degrees of
 /// freedom for the fit to say anything: uncertain.
 /// `min_points` is the pose step's minimum (PoseParams::min_points).
+/// `bounds` separate tracked from uncertain frames (by default the fixed ones of `params`).
 FrameStatus judge_frame(const FrameMeasures& measures, const StatusParams& params, int min_points);
+FrameStatus judge_frame(const FrameMeasures& measures, const StatusParams& params, int min_points,
+                        const StatusBounds& bounds);
 
 }  // namespace edgetrack

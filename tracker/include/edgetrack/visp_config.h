@@ -3,6 +3,8 @@
 /// vpMbGenericTracker::loadConfigFile reads it for the edge tracker: <camera>, <ecm> (and the
 /// older <sample> beside it), <face> and <lod>. Values the file does not give keep what the
 /// configuration held before, so a second file overrides the first element by element.
+/// edgetrack's own status settings (StatusParams, each element named as its field) come from a
+/// <status> block, or <edgetrack><status>, which ViSP passes over.
 #pragma once
 
 #include <string>

@@ -39,7 +39,7 @@ Result<FrameResult> AutoInitTracker::detect(const FrameView& frame, const FrameR
   detected_ = true;
   const Result<Detection> detection = detector_.detect(frame);
   if (!detection.ok()) return detection.error();
-  found_ = detection.value().found && tracker_.reset(detection.value().camera_from_model);
+  found_ = detection.value().found && tracker_.reset(detection.value().camera_from_model, Tracker::StartPose::kDetected);
   if (!found_) {
     if (own) return *own;
     FrameResult lost;

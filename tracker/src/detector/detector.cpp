@@ -100,6 +100,8 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   // first solve is weighted at the last one's pose, so the run's frames carry the re-weighting on.
   TrackerParams screening = tracking, refining = tracking;
   screening.motion.velocity_share = refining.motion.velocity_share = real(0);
+  // A candidate is no trusted start: each is judged by the fixed status bounds, learning nothing.
+  screening.status.learn_frames = refining.status.learn_frames = 0;
   screening.me.setSampleStep(params.screen_sample_step);
   screening.pose.robust_rounds = params.screen_robust_rounds;
   refining.me.setSampleStep(params.refine_sample_step);

@@ -88,16 +88,24 @@ namespace {
 
 real smaller_focal(const PinholeCamera& camera) { return camera.px < camera.py ? camera.px : camera.py; }
 
+}  // namespace
+
+void span_distances(const PinholeCamera& camera, const ModelExtent& extent, const real& largest_share,
+                    const real& smallest_share, real& nearest, real& farthest) {
+  const int side = camera.width < camera.height ? camera.width : camera.height;
+  const real focal = smaller_focal(camera);
+  nearest = focal * real(2) * extent.radius / (largest_share * real(side));
+  farthest = focal * real(2) * extent.radius / (smallest_share * real(side));
+}
+
+namespace {
+
 /// The range's nearest and farthest distances, the defaults resolved.
 void distance_bounds(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent, real& low,
                      real& high) {
   low = range.distance_min;
   high = range.distance_max;
-  if (low == real(0)) {
-    const int side = camera.width < camera.height ? camera.width : camera.height;
-    low = smaller_focal(camera) * real(2) * extent.radius / (real(0.8) * real(side));
-    high = smaller_focal(camera) * real(2) * extent.radius / (real(0.4) * real(side));
-  }
+  if (low == real(0)) span_distances(camera, extent, real(0.8), real(0.4), low, high);
 }
 
 /// The directions of sphere_directions within the range's cone.

@@ -38,6 +38,7 @@ class AutoInitTracker {
   /// Whether a tracked frame has followed the last detection.
   bool confirmed() const { return confirmed_; }
   Tracker& tracker() { return tracker_; }
+  const Detector& detector() const { return detector_; }
 
   /// Uncertain frames in a row, after a confirmation, between detections: a handful of frames
   /// (a sixth of a second at 30 Hz) lets the tracker's own recovery outlast a passing cause (fast

@@ -45,6 +45,12 @@ ModelExtent model_extent(const EdgeModel& model);
 /// Unit directions: the vertices of the icosahedron subdivided `subdivisions` times.
 std::vector<Vec3> sphere_directions(int subdivisions);
 
+/// The camera distances to the model's centre (metres) at which the model's bounding sphere
+/// spans `largest_share` of the image's shorter side (`nearest`) and `smallest_share` of it
+/// (`farthest`).
+void span_distances(const PinholeCamera& camera, const ModelExtent& extent, const real& largest_share,
+                    const real& smallest_share, real& nearest, real& farthest);
+
 /// Distances from min to max (each ratio times the last, the last one not past max by more than
 /// the ratio's half); when range.distance_min is 0, min and max are where the model's bounding
 /// sphere spans 80 % and 40 % of the image's shorter side.
