@@ -31,19 +31,19 @@ void cube_xml() {
   TEST_NEAR("<camera><px>", config.camera.px, 547.7367575, 1e-4);
   TEST_NEAR("<camera><v0>", config.camera.v0, 234.5083345, 1e-4);
   TEST_EQUAL("no image size in cube.xml", config.camera.width, 0);
-  TEST_EQUAL("<ecm><mask><size>", p.me.getMaskSize(), 5u);
-  TEST_EQUAL("<ecm><mask><nb_mask>", p.me.getMaskNumber(), 180u);
-  TEST_EQUAL("<ecm><range><tracking> 7", p.me.getRange(), 7u);
-  TEST_NEAR("<ecm><contrast><edge_threshold> 5000", p.me.getThreshold(), 5000, 0);
-  TEST_NEAR("<ecm><sample><step> 4 spaces the control points", p.me.getSampleStep(), 4, 0);
+  TEST_EQUAL("<ecm><mask><size>", p.me.mask_size, 5u);
+  TEST_EQUAL("<ecm><mask><nb_mask>", p.me.mask_number, 180u);
+  TEST_EQUAL("<ecm><range><tracking> 7", p.me.range, 7u);
+  TEST_NEAR("<ecm><contrast><edge_threshold> 5000", p.me.threshold, 5000, 0);
+  TEST_NEAR("<ecm><sample><step> 4 spaces the control points", p.me.sample_step, 4, 0);
   TEST_NEAR("<face><angle_appear> 65 degrees", p.faces.angle_appear, 65 * kDegree, 1e-5);
   TEST_NEAR("<face><angle_disappear> 75 degrees", p.faces.angle_disappear, 75 * kDegree, 1e-5);
   TEST("<face><near_clipping> 0.1 m", p.faces.near_clipping && std::abs(static_cast<double>(p.faces.near_distance) - 0.1) < 1e-5, true);
   TEST("<face><far_clipping> 0.9 m", p.faces.far_clipping && std::abs(static_cast<double>(p.faces.far_distance) - 0.9) < 1e-5, true);
   TEST("<face><fov_clipping> 1", p.faces.fov_clipping, true);
   TEST("no <lod>: level of detail off, as ViSP", p.faces.use_lod, false);
-  TEST_NEAR("<ecm><contrast><mu1> 0.5", p.me.getMu1(), 0.5, 1e-6);
-  TEST_NEAR("<ecm><contrast><mu2> 0.5", p.me.getMu2(), 0.5, 1e-6);
+  TEST_NEAR("<ecm><contrast><mu1> 0.5", p.me.mu1, 0.5, 1e-6);
+  TEST_NEAR("<ecm><contrast><mu2> 0.5", p.me.mu2, 0.5, 1e-6);
   TEST_EQUAL("nothing is named as not applied: <klt> is another tracker's, passed over as ViSP's edge tracker does",
              read.value().not_applied.size(), size_t(0));
 }
@@ -68,17 +68,17 @@ void blocks() {
   TrackerConfig outside;
   read = apply_visp_config(write("old_sample.xml", "<conf>\n<!-- older files -->\n<sample><step>6</step></sample>\n"
                                                    "<ecm><range><tracking>5</tracking></range></ecm></conf>"), outside);
-  TEST("<sample> beside <ecm> (older files) sets the step", read.ok() && outside.params.me.getSampleStep() == real(6), true);
+  TEST("<sample> beside <ecm> (older files) sets the step", read.ok() && outside.params.me.sample_step == real(6), true);
   TrackerConfig both;
   read = apply_visp_config(write("both_samples.xml", "<conf><ecm><sample><step>3</step></sample></ecm>"
                                                      "<sample><step>8</step></sample></conf>"), both);
-  TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.getSampleStep() == real(8), true);
+  TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.sample_step == real(8), true);
 
   TrackerConfig cut;
   read = apply_visp_config(write("fraction.xml", "<conf><ecm><sample><step>4.5</step></sample>"
                                                  "<range><tracking>7.9</tracking></range></ecm></conf>"), cut);
   TEST("a decimal fraction where ViSP reads an integer is cut to its whole part, as ViSP does",
-       read.ok() && cut.params.me.getSampleStep() == real(4) && cut.params.me.getRange() == 7u, true);
+       read.ok() && cut.params.me.sample_step == real(4) && cut.params.me.range == 7u, true);
   TEST("and each is named in the notes", read.ok() && read.value().cut_to_whole.size() == 2 &&
                                              read.value().cut_to_whole[0].find("<ecm><sample><step> '4.5' is read as 4") == 0,
        true);
@@ -103,9 +103,9 @@ void blocks() {
   read = apply_visp_config(write("camera_only.xml", "<conf><camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0>"
                                                     "</camera><unknown><x>1</x></unknown><ecm><bogus>2</bogus></ecm></conf>"), bare);
   TEST("a camera-only file (with unknown elements) reads", read.ok(), true);
-  TEST_EQUAL("missing <ecm>: ViSP's range 4", bare.params.me.getRange(), defaults.params.me.getRange());
-  TEST_NEAR("ViSP's threshold 1500", bare.params.me.getThreshold(), 1500, 0);
-  TEST_NEAR("ViSP's sample step 10", bare.params.me.getSampleStep(), 10, 0);
+  TEST_EQUAL("missing <ecm>: ViSP's range 4", bare.params.me.range, defaults.params.me.range);
+  TEST_NEAR("ViSP's threshold 1500", bare.params.me.threshold, 1500, 0);
+  TEST_NEAR("ViSP's sample step 10", bare.params.me.sample_step, 10, 0);
   TEST_NEAR("missing <face>: vpMbTracker's 89 degrees", bare.params.faces.angle_appear, 89 * kDegree, 1e-5);
   TEST("and no clipping", !bare.params.faces.near_clipping && !bare.params.faces.far_clipping && !bare.params.faces.fov_clipping, true);
   TEST("nothing to note", read.ok() && read.value().not_applied.empty() && read.value().camera_block, true);
@@ -124,8 +124,8 @@ void precedence() {
   auto second = apply_visp_config(write("override.xml", "<conf><ecm><range><tracking>3</tracking></range></ecm>"
                                                         "<face><fov_clipping>0</fov_clipping></face></conf>"), config);
   TEST("a second file applies over the first", first.ok() && second.ok(), true);
-  TEST_EQUAL("its range replaces cube.xml's", config.params.me.getRange(), 3u);
-  TEST_NEAR("cube.xml's step stays", config.params.me.getSampleStep(), 4, 0);
+  TEST_EQUAL("its range replaces cube.xml's", config.params.me.range, 3u);
+  TEST_NEAR("cube.xml's step stays", config.params.me.sample_step, 4, 0);
   TEST_NEAR("cube.xml's camera stays", config.camera.px, 547.7367575, 1e-4);
   TEST("its fov_clipping 0 replaces cube.xml's 1", config.params.faces.fov_clipping, false);
   TEST("cube.xml's near clipping stays", config.params.faces.near_clipping, true);
@@ -141,7 +141,7 @@ void refused(const std::string& name, const std::string& xml, int line, const st
   TEST_EQUAL(("  at line " + std::to_string(line)).c_str(), read.error().line, line);
   TEST(("  naming the file and " + element).c_str(),
        read.error().file == path && read.error().message.find(element) != std::string::npos, true);
-  TEST("  nothing applied", config.params.me.getRange() == before.params.me.getRange(), true);
+  TEST("  nothing applied", config.params.me.range == before.params.me.range, true);
 }
 
 void bad_values() {

@@ -310,9 +310,18 @@ void add_crease_edges(const EdgeUses& uses, const EdgeRules& rules, EdgeModel& m
 }  // namespace
 
 Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+  const auto finite = [](const real& v) { return std::isfinite(static_cast<double>(v)); };
+  for (size_t v = 0; v < polygons.vertices.size(); ++v) {
+    const Vec3& p = polygons.vertices[v];
+    if (!finite(p.x) || !finite(p.y) || !finite(p.z)) return fail("point " + std::to_string(v) + " is not a finite number");
+  }
+  for (const CylinderRecord& c : polygons.cylinders)
+    if (!finite(c.radius)) return fail("a cylinder's radius is not a finite number");
+  for (const CircleRecord& c : polygons.circles)
+    if (!finite(c.radius)) return fail("a circle's radius is not a finite number");
   EdgeModel model;
   model.vertices = polygons.vertices;
-  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
   EdgeUses uses;
   for (size_t f = 0; f < polygons.faces.size(); ++f) {
     const Result<bool> face = add_face(polygons, f, source, uses, model);

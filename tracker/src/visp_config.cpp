@@ -120,7 +120,7 @@ class Reading {
   }
 
   Result<bool> ecm(const XmlElement& block) {
-    vpMe& me = config_.params.me;
+    MovingEdgeParams& me = config_.params.me;
     for (const XmlElement& group : block.children) {
       if (group.name == "sample") {
         auto read = sample(group, "ecm><sample");
@@ -132,21 +132,16 @@ class Reading {
         if (group.name == "mask" && (e.name == "size" || e.name == "nb_mask")) {
           auto got = count(e, where);
           if (!got.ok()) return got.error();
-          const bool size = e.name == "size";
-          const auto masks = check_masks(size ? got.value() : me.getMaskSize(), size ? me.getMaskNumber() : got.value());
-          if (masks) return Error{path_, e.line, masks->message};
-          if (size) me.setMaskSize(got.value());
-          else me.setMaskNumber(got.value());
+          (e.name == "size" ? me.mask_size : me.mask_number) = got.value();
         } else if (group.name == "range" && e.name == "tracking") {
           auto got = count(e, where);
           if (!got.ok()) return got.error();
-          me.setRange(got.value());
+          me.range = got.value();
         } else if (group.name == "contrast" && (e.name == "edge_threshold" || e.name == "mu1" || e.name == "mu2")) {
           auto got = number(e, where);
           if (!got.ok()) return got.error();
-          if (e.name == "edge_threshold") me.setThreshold(got.value());
-          else if (e.name == "mu1") me.setMu1(got.value());
-          else me.setMu2(got.value());
+          (e.name == "edge_threshold" ? me.threshold : e.name == "mu1" ? me.mu1 : me.mu2) =
+              real(got.value());  // set-up time conversion
         } else {
           continue;
         }
@@ -163,8 +158,9 @@ class Reading {
       if (e.name != "step") continue;
       auto got = whole(e, "<" + where + "><step>");
       if (!got.ok()) return got.error();
-      if (got.value() < 1) return bad(e, "<" + where + "><step>", "must be at least 1 pixel, not " + e.text);
-      config_.params.me.setSampleStep(static_cast<double>(got.value()));
+      config_.params.me.sample_step = real(static_cast<double>(got.value()));  // set-up time conversion
+      auto checked = check(e);
+      if (!checked.ok()) return checked;
     }
     return true;
   }
@@ -227,14 +223,25 @@ class Reading {
 
 }  // namespace
 
-Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config) {
-  auto document = read_xml_file(path);
+namespace {
+
+Result<ConfigNotes> apply_document(const Result<XmlElement>& document, const std::string& path, TrackerConfig& config) {
   if (!document.ok()) return document.error();
   Reading reading(path, config);
   auto read = reading.root(document.value());
   if (!read.ok()) return read.error();
   config = reading.config();
   return reading.notes();
+}
+
+}  // namespace
+
+Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config) {
+  return apply_document(read_xml_file(path), path, config);
+}
+
+Result<ConfigNotes> apply_visp_config_text(const std::string& xml, const std::string& name, TrackerConfig& config) {
+  return apply_document(parse_xml(xml, name), name, config);
 }
 
 }  // namespace edgetrack

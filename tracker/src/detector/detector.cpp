@@ -100,15 +100,15 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   // first solve is weighted at the last one's pose, so the run's frames carry the re-weighting on.
   TrackerParams screening = tracking, refining = tracking;
   screening.motion.velocity_share = refining.motion.velocity_share = real(0);
-  screening.me.setSampleStep(params.screen_sample_step);
+  screening.me.sample_step = params.screen_sample_step;
   screening.pose.robust_rounds = params.screen_robust_rounds;
-  refining.me.setSampleStep(params.refine_sample_step);
+  refining.me.sample_step = params.refine_sample_step;
   refining.pose.robust_rounds = params.refine_robust_rounds;
   refining.pose.rounds_settled_px = params.refine_rounds_settled_px;
   screening.pose.solver = refining.pose.solver = params.solver;
   TrackerParams wide_tracking = refining, fine_tracking = refining;
-  wide_tracking.me.setRange(params.wide_range);
-  fine_tracking.me.setRange(params.fine_range);
+  wide_tracking.me.range = params.wide_range;
+  fine_tracking.me.range = params.fine_range;
   Result<Tracker> screen = Tracker::create(model, camera, start, screening);
   if (!screen.ok()) return screen.error();
   Result<Tracker> tracker = Tracker::create(model, camera, start, refining);
@@ -120,7 +120,7 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   Detector detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
                     std::move(tracker).value(), std::move(fine).value());
   detector.model_ = model;
-  detector.tracking_range_ = tracking.me.getRange();
+  detector.tracking_range_ = tracking.me.range;
   return detector;
 }
 
@@ -135,15 +135,16 @@ Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker 
 
 void Detector::match(const FrameView& frame) {
   const PinholeCamera& camera = templates_.camera;
-  grey_.resize(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
+  grey_.resize(static_cast<size_t>(camera.height) * static_cast<size_t>(camera.width));
+  vpImage<unsigned char> grey(grey_.data(), static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
   PixelBox whole;
   whole.bottom = camera.height;
   whole.right = camera.width;
-  convert_to_grey(frame, whole, grey_);
+  convert_to_grey(frame, whole, grey);
   const int factor = templates_.params.downscale;
-  const uint8_t* image = grey_.bitmap;
+  const uint8_t* image = grey_.data();
   if (factor > 1) {
-    downscale_grey(grey_.bitmap, camera.width, camera.height, factor, small_);
+    downscale_grey(grey_.data(), camera.width, camera.height, factor, small_);
     image = small_.data();
   }
   quantise_orientations(image, camera.width / factor, camera.height / factor, params_.orientations, scratch_,
@@ -335,7 +336,7 @@ Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3
     return *refused;
   match(frame);
   points_searched_ = 0;
-  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   return refine(grey, TemplateMatch{}, start);
 }
@@ -347,7 +348,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   points_searched_ = 0;
   match(frame);
   // The trackers read the grey image matching made, in place: no frame is converted again.
-  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   for (const TemplateMatch& m : screen(grey)) {
     detection.refined.push_back(refine(grey, m, detection.refined));
