@@ -139,9 +139,16 @@ if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
   run "$prefix/bin/edgetrack" track --model "$mbt/cube.cao" --camera "$camera" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --last $beside_last --quiet --poses "$work/beside.csv" >/dev/null ||
     fail "edgetrack track failed"
+  # pkg-config links every ViSP library, visp_me included, after edgetrack's: a port class that
+  # kept upstream's symbol names would be linked in place of ViSP's (or ViSP's in place of ours).
+  shared=$(comm -12 <(nm --defined-only "$prefix"/lib/libedgetrack_*.a 2>/dev/null | awk 'NF == 3 { print $3 }' | sort -u) \
+                    <(for so in $(pkg-config --libs-only-l visp | sed 's/-l//g'); do
+                        f=$(ls /usr/lib/*/lib"$so".so 2>/dev/null | head -1); [ -n "$f" ] && nm -D --defined-only "$f"
+                      done | awk 'NF == 3 { print $3 }' | sort -u) | wc -l)
+  echo "symbols defined both by the installed edgetrack libraries and by ViSP's: $shared"
   for program in "$work/visp_beside/visp_beside" "$work/visp_beside_pc"; do
     "$program" "$mbt/cube.cao" "$camera" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" 0 $beside_last >"$program.out" ||
-      fail "$program failed"
+      fail "$program failed ($shared symbols of the ports have the same names as ViSP's)"
     awk -v frames=$((beside_last + 1)) '
       FNR == NR { if (FNR > 1) { for (i = 2; i <= 7; i++) pose[$1, i] = $i } ; next }
       {

@@ -5,6 +5,7 @@
 /// unknown elements and other trackers' blocks passed over, and bad values refused at their line.
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "edgetrack/visp_config.h"
@@ -158,6 +159,8 @@ void bad_values() {
           "<ecm><contrast><edge_threshold>");
   refused("mu.xml", "<conf><ecm><contrast>\n\n<mu1>1.5</mu1></contrast></ecm></conf>", 3, "<ecm><contrast><mu1>");
   refused("px.xml", "<conf>\n<camera>\n<px>0</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("huge_px.xml", "<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("far_u0.xml", "<conf>\n<camera>\n<u0>-2e6</u0>\n</camera>\n</conf>\n", 3, "<camera><u0>");
   refused("width.xml", "<conf>\n<camera>\n<width>wide</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
   refused("angle.xml", "<conf>\n<face>\n<angle_appear>200</angle_appear>\n</face>\n</conf>\n", 3, "<face><angle_appear>");
   refused("far.xml", "<conf>\n<face>\n<near_clipping>0.5</near_clipping>\n<far_clipping>0.2</far_clipping>\n</face>\n</conf>\n",
@@ -172,9 +175,29 @@ void bad_values() {
        !missing.ok() && missing.error().file == std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", true);
 }
 
+/// apply_visp_config_text reads a configuration held in memory as the file reader reads it.
+void from_memory() {
+  const std::string path = std::string(EDGETRACK_VISP_IMAGES) + "/mbt/cube.xml";
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  TrackerConfig from_file, from_text;
+  auto file = apply_visp_config(path, from_file);
+  auto memory = apply_visp_config_text(text, "cube.xml in memory", from_text);
+  TEST("cube.xml reads from memory", file.ok() && memory.ok(), true);
+  TEST("with the file's settings", from_text.params.me.range == from_file.params.me.range &&
+                                       from_text.params.me.sample_step == from_file.params.me.sample_step &&
+                                       from_text.camera.px == from_file.camera.px &&
+                                       from_text.params.faces.angle_appear == from_file.params.faces.angle_appear, true);
+  TrackerConfig bad;
+  auto refused_text = apply_visp_config_text("<conf>\n<ecm><range><tracking>0</tracking></range></ecm></conf>", "buffer", bad);
+  TEST("a bad value in memory is refused naming the buffer's name and line",
+       !refused_text.ok() && refused_text.error().file == "buffer" && refused_text.error().line == 2, true);
+}
+
 }  // namespace
 
 static void test_visp_config() {
+  from_memory();
   cube_xml();
   blocks();
   precedence();

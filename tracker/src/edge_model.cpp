@@ -8,6 +8,8 @@
 #include <map>
 #include <utility>
 
+#include "edgetrack/angles.h"
+
 namespace edgetrack {
 namespace {
 
@@ -116,7 +118,7 @@ Vec3 perpendicular(const Vec3& n) {
 /// Checks the cylinders, tessellates their sides (inscribed, kCylinderSides facets) and adds them.
 Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, EdgeModel& model) {
   const int vertex_count = static_cast<int>(model.vertices.size());
-  const real pi = real(3.14159265358979323846);
+  const real pi = real(kPi);
   for (size_t c = 0; c < polygons.cylinders.size(); ++c) {
     const CylinderRecord& record = polygons.cylinders[c];
     const std::string label = "cylinder " + std::to_string(c);
@@ -151,7 +153,7 @@ Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, 
 Result<bool> add_circles(const Polygons& polygons, const std::string& source, EdgeModel& model) {
   using std::fabs;
   const int vertex_count = static_cast<int>(model.vertices.size());
-  const real pi = real(3.14159265358979323846);
+  const real pi = real(kPi);
   for (size_t k = 0; k < polygons.circles.size(); ++k) {
     const CircleRecord& record = polygons.circles[k];
     const std::string label = "circle " + std::to_string(k);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "edgetrack/angles.h"
 #include "edgetrack/contrast_memory.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
@@ -320,7 +321,7 @@ void Tracker::State::judge(const Se3& start, unsigned range, std::uint64_t satur
   m.correction_px = largest_normal_shift(visible_, camera_, solved);
   const Se3 change = solved * start.inverse();
   m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
-  m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
+  m.rotation_change_deg = real(kDegreesPerRadian) * norm(rotation_log(change.rotation()));
   m.range = range;
   const real sigma = std::max(m.residual_scale, params_.status.edge_location_px);
   m.pose_uncertainty_px =

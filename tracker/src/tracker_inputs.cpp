@@ -27,7 +27,7 @@ std::string text(double value) {
 
 }  // namespace
 
-std::optional<Error> check_camera(const PinholeCamera& camera) {
+std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
   const auto refuse = [](const std::string& message) { return Error{"", 0, "the camera's " + message}; };
   const struct {
     const char* name;
@@ -47,6 +47,12 @@ std::optional<Error> check_camera(const PinholeCamera& camera) {
       return refuse(std::string(c.name) + " must be within +-" + text(kMaxPrincipalPointPx) + " pixels, not " +
                     text(static_cast<double>(c.value)));
   }
+  return std::nullopt;
+}
+
+std::optional<Error> check_camera(const PinholeCamera& camera) {
+  if (auto problem = check_intrinsics(camera)) return problem;
+  const auto refuse = [](const std::string& message) { return Error{"", 0, "the camera's " + message}; };
   if (camera.width == 0 && camera.height == 0) return std::nullopt;  // the first frame's size
   if (camera.width <= 0 || camera.height <= 0)
     return refuse("image size " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +

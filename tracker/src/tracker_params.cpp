@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "edgetrack/angles.h"
+
 namespace edgetrack {
 namespace {
 
@@ -91,11 +93,10 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
   if (me.sample_step < real(kMinSampleStep))
     return problem("ecm/sample/step", "at least " + number(kMinSampleStep) + " pixel", static_cast<double>(me.sample_step));
   const FaceVisibilityParams& faces = params.faces;
-  const double degrees = 180 / 3.14159265358979323846;
-  if (faces.angle_appear < real(0) || faces.angle_appear > real(3.14159265358979323846))
-    return problem("face/angle_appear", "0..180 degrees", static_cast<double>(faces.angle_appear) * degrees);
-  if (faces.angle_disappear < real(0) || faces.angle_disappear > real(3.14159265358979323846))
-    return problem("face/angle_disappear", "0..180 degrees", static_cast<double>(faces.angle_disappear) * degrees);
+  if (faces.angle_appear < real(0) || faces.angle_appear > real(kPi))
+    return problem("face/angle_appear", "0..180 degrees", static_cast<double>(faces.angle_appear) * kDegreesPerRadian);
+  if (faces.angle_disappear < real(0) || faces.angle_disappear > real(kPi))
+    return problem("face/angle_disappear", "0..180 degrees", static_cast<double>(faces.angle_disappear) * kDegreesPerRadian);
   if (faces.near_clipping && faces.near_distance < real(0))
     return problem("face/near_clipping", "at least 0 metres", static_cast<double>(faces.near_distance));
   if (faces.far_clipping && !(faces.far_distance > real(0)))

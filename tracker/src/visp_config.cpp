@@ -11,13 +11,13 @@
 #include <cstdlib>
 #include <string>
 
+#include "edgetrack/angles.h"
+#include "edgetrack/tracker_inputs.h"
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/xml_document.h"
 
 namespace edgetrack {
 namespace {
-
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180;
 
 /// Reads one file's elements onto a copy of the configuration.
 class Reading {
@@ -107,8 +107,8 @@ class Reading {
       if (value) {
         auto got = number(e, where);
         if (!got.ok()) return got.error();
-        if ((e.name == "px" || e.name == "py") && !(got.value() > 0)) return bad(e, where, "must be positive, not " + e.text);
         *value = real(got.value());  // set-up time conversion
+        if (auto refused = check_intrinsics(config_.camera)) return Error{path_, e.line, where + ": " + refused->message};
       } else if (size) {
         auto got = whole(e, where);
         if (!got.ok()) return got.error();

@@ -25,7 +25,9 @@ constexpr double kMaxPrincipalPointPx = 1e6;
 /// Model coordinates lie within +-kMaxModelCoordinate metres, as the model readers accept them.
 constexpr double kMaxModelCoordinate = 1e6;
 
-/// Why `camera` cannot be tracked with, naming the value, or nothing. An image size of 0x0 is
+/// Why the focal lengths or the principal point of `camera` are out of range, or nothing.
+std::optional<Error> check_intrinsics(const PinholeCamera& camera);
+/// Why `camera` cannot be tracked with (check_intrinsics, then the image size), or nothing. An image size of 0x0 is
 /// taken from the first frame (Tracker::track).
 std::optional<Error> check_camera(const PinholeCamera& camera);
 /// Why `model` cannot be tracked (no primitive, too many for Edge-ID, a point not finite or

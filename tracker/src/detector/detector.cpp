@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "edgetrack/angles.h"
 #include "edgetrack/detector/template_io.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/motion_model.h"
@@ -266,7 +267,7 @@ void Detector::settle(const FrameView& frame, RefinedCandidate& candidate) {
 }
 
 void Detector::suppress_neighbours() {
-  const real cos_half = cos(real(0.5) * params_.suppress_deg * real(0.017453292519943295));
+  const real cos_half = cos(real(0.5) * params_.suppress_deg * real(kRadiansPerDegree));
   const real reach = params_.suppress_radii * templates_.extent.radius;
   std::vector<Se3> kept_poses;
   size_t kept = 0;
@@ -321,7 +322,7 @@ void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
   const RefinedCandidate base = *from;  // detection.refined grows below
   const Vec3& centre_in_model = templates_.extent.centre;
   const Vec3 centre = base.camera_from_model * centre_in_model;
-  const real t = params_.restart_tilt_deg * real(0.017453292519943295), o(0);
+  const real t = params_.restart_tilt_deg * real(kRadiansPerDegree), o(0);
   const Vec3 tilts[4] = {Vec3{t, o, o}, Vec3{-t, o, o}, Vec3{o, t, o}, Vec3{o, -t, o}};
   for (const Vec3& tilt : tilts) {
     // Turned about the camera's axis through the model's centre: the centre stays where it was.
