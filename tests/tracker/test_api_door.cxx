@@ -174,6 +174,27 @@ static void test_api_door() {
   TEST("set_params refuses what create refuses", tracker.value().set_params(bad_mu).has_value(), true);
   TEST("and keeps the settings it had", tracker.value().params().me.mu1 == defaults.me.mu1, true);
 
+  TrackerParams wider = defaults;
+  wider.me.range = 9;
+  TEST("set_params takes valid settings between frames", tracker.value().set_params(wider).has_value(), false);
+  const Result<FrameResult> after = tracker.value().track(good);
+  TEST("and the next frame searches with them", after.ok() && after.value().measures.range >= 9u, true);
+
+  // A camera without an image size takes the first frame's: the same poses as a sized one.
+  PinholeCamera unsized = camera;
+  unsized.width = unsized.height = 0;
+  Result<Tracker> from_frame = Tracker::create(model.value(), unsized, start, defaults);
+  Result<Tracker> sized = Tracker::create(model.value(), camera, start, defaults);
+  TEST("a 0x0 camera is taken", from_frame.ok() && sized.ok(), true);
+  if (from_frame.ok() && sized.ok()) {
+    const Result<FrameResult> a = from_frame.value().track(good), b = sized.value().track(good);
+    TEST("and tracks its first frame as a camera of that size",
+         a.ok() && b.ok() && bit_identical(a.value().camera_from_model, b.value().camera_from_model), true);
+    FrameView smaller = good;
+    smaller.width -= 2;
+    TEST("then refuses a frame of another size", from_frame.value().track(smaller).ok(), false);
+  }
+
   // Random settings: each real setting given an extreme value, each count a random one.
   Draw draw;
   Outcomes outcomes;
