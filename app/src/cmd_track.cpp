@@ -277,6 +277,10 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
   if (auto refused = edgetrack::check_camera(full_camera)) return report("track", {a.text("--camera"), 0, refused->message});
   in.camera = downscaled(full_camera, request.factor);
+  if (in.camera.width == 0 || in.camera.height == 0)
+    return report("track", {"--downscale " + std::to_string(request.factor), 0,
+                            "leaves no pixel of a " + std::to_string(in.full_width) + "x" +
+                                std::to_string(in.full_height) + " frame"});
   if (auto refused = edgetrack::check_camera(in.camera))
     return report("track", {"--downscale " + std::to_string(request.factor), 0, refused->message});
   if (auto refused = edgetrack::check_tracked_model(in.model))
