@@ -238,8 +238,10 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
        {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error(), &hypotheses.error()})
     if (!bad->message.empty()) return report("track", *bad) + 1;
   if (factor.value() < 1 || factor.value() > 8) return report("track", {"", 0, "--downscale must be 1..8"}) + 1;
-  if (hypotheses.value() < 1 || hypotheses.value() > edgetrack::kMaxHypotheses)
-    return report("track", {"", 0, "--hypotheses must be 1.." + std::to_string(edgetrack::kMaxHypotheses)}) + 1;
+  edgetrack::TrackerParams with_hypotheses;
+  with_hypotheses.hypotheses = hypotheses.value();
+  if (auto refused = edgetrack::check_tracker_params(with_hypotheses))
+    return report("track", {"--hypotheses", 0, refused->message}) + 1;
   source.first = first.value();
   source.last = last.value();
   source.camera_device = device.value();
@@ -286,6 +288,8 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   auto status = apply_status_option(a.text("--status"), params.status);
   if (!status.ok()) return report("track", status.error()) + 1;
   downscale_settings(params, request.factor);  // in pixels of the input frames
+  if (auto refused = edgetrack::check_tracker_params(params))
+    return report("track", {"--downscale " + std::to_string(request.factor), 0, refused->message});
   auto source = open_frame_source(request.source);
   if (!source.ok()) return report("track", source.error());
   in.source = std::move(source).value();
@@ -301,7 +305,16 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
                             "image size " + std::to_string(in.full_width) + "x" + std::to_string(in.full_height) +
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
+  if (auto refused = edgetrack::check_camera(full_camera)) return report("track", {a.text("--camera"), 0, refused->message});
   in.camera = downscaled(full_camera, request.factor);
+  if (in.camera.width == 0 || in.camera.height == 0)
+    return report("track", {"--downscale " + std::to_string(request.factor), 0,
+                            "leaves no pixel of a " + std::to_string(in.full_width) + "x" +
+                                std::to_string(in.full_height) + " frame"});
+  if (auto refused = edgetrack::check_camera(in.camera))
+    return report("track", {"--downscale " + std::to_string(request.factor), 0, refused->message});
+  if (auto refused = edgetrack::check_tracked_model(in.model))
+    return report("track", {a.text("--model"), 0, refused->message});
   if (request.automatic) {
     auto made = auto_init_tracker(a, in.model, in.camera, params);
     if (!made.ok()) return report("track", made.error());
@@ -310,11 +323,13 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   auto initial = initial_pose(request, in, full_camera);
   if (!initial.ok()) return report("track", initial.error());
   in.initial = initial.value();
+  if (auto refused = edgetrack::check_start_pose(in.initial))
+    return report("track", {init_source(request), 0, "the initial pose " + *refused});
   auto edge_ids = make_edge_id_source(a.text("--visibility", "soft"), in.camera);
   if (!edge_ids.ok()) return report("track", edge_ids.error()) + 1;
   in.edge_ids = std::move(edge_ids).value();
   auto tracker = edgetrack::Tracker::create(in.model, in.camera, in.initial, params);
-  if (!tracker.ok()) return report("track", {init_source(request), 0, tracker.error().message});
+  if (!tracker.ok()) return report("track", tracker.error());
   in.tracker.emplace(std::move(tracker).value());
   in.tracker->set_edge_id_source(in.edge_ids.get());
   if (in.auto_tracker) in.auto_tracker->tracker().set_edge_id_source(in.edge_ids.get());

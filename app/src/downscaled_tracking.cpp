@@ -16,8 +16,8 @@ edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int 
 void downscale_settings(edgetrack::TrackerParams& params, int factor) {
   if (factor <= 1) return;
   const real f(factor);
-  params.me.setSampleStep(params.me.getSampleStep() / f);
-  params.me.setRange(std::max(1u, params.me.getRange() / static_cast<unsigned>(factor)));
+  params.me.sample_step = params.me.sample_step / f;
+  params.me.range = std::max(1u, params.me.range / static_cast<unsigned>(factor));
   params.faces.min_line_length = params.faces.min_line_length / f;
   params.faces.min_polygon_area = params.faces.min_polygon_area / (f * f);
 }

@@ -35,10 +35,10 @@ int main(int argc, char** argv) {
   edgetrack::TrackerConfig config;  // the camera and settings of a ViSP XML, as loadConfigFile reads it
   auto read = edgetrack::apply_visp_config(argv[2], config);
   auto initial = edgetrack::read_pos(argv[3]);
-  for (const edgetrack::Error* e : {&model.error(), &read.error(), &initial.error()})
-    if (!e->message.empty()) return std::fprintf(stderr, "minimal: %s\n", e->text().c_str()), 1;
-  if (config.camera.width == 0) config.camera.width = width;
-  if (config.camera.height == 0) config.camera.height = height;
+  for (const edgetrack::Error* e : {model.ok() ? nullptr : &model.error(), read.ok() ? nullptr : &read.error(),
+                                    initial.ok() ? nullptr : &initial.error()})
+    if (e) return std::fprintf(stderr, "minimal: %s\n", e->text().c_str()), 1;
+  // A camera without an image size (as cube.xml's) takes the first frame's.
   auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
   if (!tracker.ok()) return std::fprintf(stderr, "minimal: %s\n", tracker.error().text().c_str()), 1;
 

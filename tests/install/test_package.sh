@@ -41,10 +41,10 @@ case $mode in
   *) fail "unknown mode $mode" ;;
 esac
 
-# What the package holds, and where: drop-in headers only under include/edgetrack/ports.
+# What the package holds, and where: drop-in headers only under include/edgetrack/ports/<port>.
 for file in bin/edgetrack share/edgetrack/models/cube60.cao include/edgetrack/tracker.h \
-            include/edgetrack/ports/vnl/vnl_vector.h include/edgetrack/ports/visp3/me/vpMe.h \
-            include/edgetrack/ports/real/real_config.h lib/libedgetrack_tracker.a lib/pkgconfig/edgetrack.pc \
+            include/edgetrack/ports/vnl/vnl/vnl_vector.h include/edgetrack/ports/visp/visp3/me/vpMe.h \
+            include/edgetrack/ports/real/real/real_config.h lib/libedgetrack_tracker.a lib/pkgconfig/edgetrack.pc \
             lib/cmake/edgetrack/edgetrack-config.cmake lib/cmake/edgetrack/edgetrack-config-version.cmake; do
   [ -e "$prefix/$file" ] || fail "$prefix/$file is not installed"
 done
@@ -124,6 +124,46 @@ if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
   [ "$(ls "$work"/overlay/overlay*.png | wc -l)" -eq $((last + 1)) ] || fail "ar_overlay did not write $((last + 1)) overlay images"
 fi
 
+# Host: a ViSP program (Debian's ViSP: vpImageIo, vpImage, vpHomogeneousMatrix) tracking with
+# edgetrack in one translation unit, built with find_package and with pkg-config, gets the
+# installed command line's poses.
+if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
+  beside_last=24
+  configure "$source/tests/install/visp_beside" "$work/visp_beside" >"$work/visp_beside.log" 2>&1 &&
+    cmake --build "$work/visp_beside" >>"$work/visp_beside.log" 2>&1 ||
+    { cat "$work/visp_beside.log"; fail "the ViSP program with edgetrack does not build with find_package"; }
+  visp_pc=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs edgetrack visp)
+  # shellcheck disable=SC2086
+  ${EDGETRACK_CONSUMER_LAUNCHER:-} $cxx $flags "$source/tests/install/visp_beside/visp_beside.cpp" $visp_pc \
+    -o "$work/visp_beside_pc" || fail "the ViSP program with edgetrack does not build with pkg-config's flags"
+  run "$prefix/bin/edgetrack" track --model "$mbt/cube.cao" --camera "$camera" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --last $beside_last --quiet --poses "$work/beside.csv" >/dev/null ||
+    fail "edgetrack track failed"
+  # pkg-config links every ViSP library, visp_me included, after edgetrack's: a port class that
+  # kept upstream's symbol names would be linked in place of ViSP's (or ViSP's in place of ours).
+  shared=$(comm -12 <(nm --defined-only "$prefix"/lib/libedgetrack_*.a 2>/dev/null | awk 'NF == 3 { print $3 }' | sort -u) \
+                    <(for so in $(pkg-config --libs-only-l visp | sed 's/-l//g'); do
+                        f=$(ls /usr/lib/*/lib"$so".so 2>/dev/null | head -1); [ -n "$f" ] && nm -D --defined-only "$f"
+                      done | awk 'NF == 3 { print $3 }' | sort -u) | wc -l)
+  echo "symbols defined both by the installed edgetrack libraries and by ViSP's: $shared"
+  for program in "$work/visp_beside/visp_beside" "$work/visp_beside_pc"; do
+    "$program" "$mbt/cube.cao" "$camera" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" 0 $beside_last >"$program.out" ||
+      fail "$program failed ($shared symbols of the ports have the same names as ViSP's)"
+    awk -v frames=$((beside_last + 1)) '
+      FNR == NR { if (FNR > 1) { for (i = 2; i <= 7; i++) pose[$1, i] = $i } ; next }
+      {
+        n++
+        if ($1 != "frame" || $2 != n - 1) { print "line " n ": not frame " n - 1 ": " $0; bad++; next }
+        for (i = 2; i <= 7; i++) {
+          d = $(i + 1) - pose[$2, i]
+          if (d > 1e-6 || d < -1e-6) { print "frame " $2 ": coordinate " i - 1 " is " $(i + 1) ", edgetrack track says " pose[$2, i]; bad++ }
+        }
+      }
+      END { if (n != frames) { print n " frames printed, expected " frames; bad++ } ; exit bad > 0 }
+    ' FS=, "$work/beside.csv" FS=' ' "$program.out" || fail "$program disagrees with edgetrack track"
+  done
+fi
+
 # Programs written for upstream VXL and ViSP build unchanged on edgetrack::vnl_algo / visp_me.
 if [ "$mode" = prefix ]; then
   configure "$source/tests/install/upstream_api" "$work/upstream_api" >"$work/upstream_api.log" 2>&1 &&
@@ -148,4 +188,4 @@ fi
 # CMake wraps the message: compare it with the lines joined.
 tr -s ' \n' ' ' <"$work/needs_other.log" | grep -q "needs real = $other, but the edgetrack in .* was built with real = $real" ||
   { cat "$work/needs_other.log"; fail "no clear message for the wrong real"; }
-echo "package (prefix) in $prefix: minimal built with find_package and pkg-config, agrees with edgetrack track on $((last + 1)) frames; ar_overlay (host) and the upstream-API programs build and run; the real component is checked"
+echo "package (prefix) in $prefix: minimal built with find_package and pkg-config, agrees with edgetrack track on $((last + 1)) frames; ar_overlay and a ViSP program tracking with edgetrack (host) and the upstream-API programs build and run; the real component is checked"

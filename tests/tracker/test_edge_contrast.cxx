@@ -53,11 +53,11 @@ double found_column(const std::vector<EdgeMatch>& matches) {
 
 static void test_edge_contrast() {
   const vpImage<unsigned char> image = drawn_image();
-  vpMe me;
-  me.setRange(6);
+  const vpMe me;
+  const unsigned range = 6;
   const std::vector<ControlPoint> points = {point_on_edge(0, real(59.5), real(24))};
 
-  const std::vector<EdgeMatch> strongest = search_moving_edges(image, points, me);
+  const std::vector<EdgeMatch> strongest = search_moving_edges(image, points, me, range);
   TEST_EQUAL("without a reference the site matches", strongest.size(), size_t(1));
   TEST("and takes the dark line's stronger side, 3 pixels off the edge",
        std::fabs(found_column(strongest) - (kLineColumn + 2 - 0.5)) < 1.0, true);
@@ -65,21 +65,21 @@ static void test_edge_contrast() {
   std::vector<real> reference;
   contrasts_at_points(image, points, me, reference);
   TEST("the edge's own contrast is the reference", reference.size() == 1 && reference[0] != real(0), true);
-  const std::vector<EdgeMatch> tested = search_moving_edges(image, points, me, 1, &reference);
+  const std::vector<EdgeMatch> tested = search_moving_edges(image, points, me, range, 1, &reference);
   TEST_EQUAL("with it the site matches", tested.size(), size_t(1));
   TEST_NEAR("and finds the edge", found_column(tested), kEdgeColumn - 0.5, 0.5);
   TEST("the match carries the edge's contrast and polarity",
        !tested.empty() && (tested[0].contrast > real(0)) == (reference[0] > real(0)), true);
 
   std::vector<real> unmatched = {real(-10) * reference[0]};
-  const std::vector<EdgeMatch> fallback = search_moving_edges(image, points, me, 1, &unmatched);
+  const std::vector<EdgeMatch> fallback = search_moving_edges(image, points, me, range, 1, &unmatched);
   TEST_EQUAL("a reference no edge passes: the site still matches", fallback.size(), size_t(1));
   TEST_NEAR("the strongest edge, as without one", found_column(fallback), found_column(strongest), 1e-9);
   const std::vector<unsigned char> strict = {1};
   TEST_EQUAL("a strict (borrowed) reference no edge passes: no match",
-             search_moving_edges(image, points, me, 1, &unmatched, &strict).size(), size_t(0));
+             search_moving_edges(image, points, me, range, 1, &unmatched, &strict).size(), size_t(0));
   TEST_EQUAL("a strict one an edge passes: matched as by its own",
-             search_moving_edges(image, points, me, 1, &reference, &strict).size(), size_t(1));
+             search_moving_edges(image, points, me, range, 1, &reference, &strict).size(), size_t(1));
 
   // The memory: matches at the identity pose, a camera whose pixels are millimetres at 1 m.
   const PinholeCamera camera{real(1000), real(1000), real(0), real(0), 128, 48};

@@ -28,6 +28,7 @@ DECLARE(test_back_and_forth);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
 DECLARE(test_normal_mask);
+DECLARE(test_api_door);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -56,6 +57,7 @@ void register_tests() {
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);
   REGISTER(test_normal_mask);
+  REGISTER(test_api_door);
 }
 
 DEFINE_MAIN

@@ -5,6 +5,7 @@
 /// unknown elements and other trackers' blocks passed over, and bad values refused at their line.
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "edgetrack/visp_config.h"
@@ -31,19 +32,19 @@ void cube_xml() {
   TEST_NEAR("<camera><px>", config.camera.px, 547.7367575, 1e-4);
   TEST_NEAR("<camera><v0>", config.camera.v0, 234.5083345, 1e-4);
   TEST_EQUAL("no image size in cube.xml", config.camera.width, 0);
-  TEST_EQUAL("<ecm><mask><size>", p.me.getMaskSize(), 5u);
-  TEST_EQUAL("<ecm><mask><nb_mask>", p.me.getMaskNumber(), 180u);
-  TEST_EQUAL("<ecm><range><tracking> 7", p.me.getRange(), 7u);
-  TEST_NEAR("<ecm><contrast><edge_threshold> 5000", p.me.getThreshold(), 5000, 0);
-  TEST_NEAR("<ecm><sample><step> 4 spaces the control points", p.me.getSampleStep(), 4, 0);
+  TEST_EQUAL("<ecm><mask><size>", p.me.mask_size, 5u);
+  TEST_EQUAL("<ecm><mask><nb_mask>", p.me.mask_number, 180u);
+  TEST_EQUAL("<ecm><range><tracking> 7", p.me.range, 7u);
+  TEST_NEAR("<ecm><contrast><edge_threshold> 5000", p.me.threshold, 5000, 0);
+  TEST_NEAR("<ecm><sample><step> 4 spaces the control points", p.me.sample_step, 4, 0);
   TEST_NEAR("<face><angle_appear> 65 degrees", p.faces.angle_appear, 65 * kDegree, 1e-5);
   TEST_NEAR("<face><angle_disappear> 75 degrees", p.faces.angle_disappear, 75 * kDegree, 1e-5);
   TEST("<face><near_clipping> 0.1 m", p.faces.near_clipping && std::abs(static_cast<double>(p.faces.near_distance) - 0.1) < 1e-5, true);
   TEST("<face><far_clipping> 0.9 m", p.faces.far_clipping && std::abs(static_cast<double>(p.faces.far_distance) - 0.9) < 1e-5, true);
   TEST("<face><fov_clipping> 1", p.faces.fov_clipping, true);
   TEST("no <lod>: level of detail off, as ViSP", p.faces.use_lod, false);
-  TEST_NEAR("<ecm><contrast><mu1> 0.5", p.me.getMu1(), 0.5, 1e-6);
-  TEST_NEAR("<ecm><contrast><mu2> 0.5", p.me.getMu2(), 0.5, 1e-6);
+  TEST_NEAR("<ecm><contrast><mu1> 0.5", p.me.mu1, 0.5, 1e-6);
+  TEST_NEAR("<ecm><contrast><mu2> 0.5", p.me.mu2, 0.5, 1e-6);
   TEST_EQUAL("nothing is named as not applied: <klt> is another tracker's, passed over as ViSP's edge tracker does",
              read.value().not_applied.size(), size_t(0));
 }
@@ -68,17 +69,17 @@ void blocks() {
   TrackerConfig outside;
   read = apply_visp_config(write("old_sample.xml", "<conf>\n<!-- older files -->\n<sample><step>6</step></sample>\n"
                                                    "<ecm><range><tracking>5</tracking></range></ecm></conf>"), outside);
-  TEST("<sample> beside <ecm> (older files) sets the step", read.ok() && outside.params.me.getSampleStep() == real(6), true);
+  TEST("<sample> beside <ecm> (older files) sets the step", read.ok() && outside.params.me.sample_step == real(6), true);
   TrackerConfig both;
   read = apply_visp_config(write("both_samples.xml", "<conf><ecm><sample><step>3</step></sample></ecm>"
                                                      "<sample><step>8</step></sample></conf>"), both);
-  TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.getSampleStep() == real(8), true);
+  TEST("with both, the later in the file wins (ViSP reads in order)", read.ok() && both.params.me.sample_step == real(8), true);
 
   TrackerConfig cut;
   read = apply_visp_config(write("fraction.xml", "<conf><ecm><sample><step>4.5</step></sample>"
                                                  "<range><tracking>7.9</tracking></range></ecm></conf>"), cut);
   TEST("a decimal fraction where ViSP reads an integer is cut to its whole part, as ViSP does",
-       read.ok() && cut.params.me.getSampleStep() == real(4) && cut.params.me.getRange() == 7u, true);
+       read.ok() && cut.params.me.sample_step == real(4) && cut.params.me.range == 7u, true);
   TEST("and each is named in the notes", read.ok() && read.value().cut_to_whole.size() == 2 &&
                                              read.value().cut_to_whole[0].find("<ecm><sample><step> '4.5' is read as 4") == 0,
        true);
@@ -103,9 +104,9 @@ void blocks() {
   read = apply_visp_config(write("camera_only.xml", "<conf><camera><px>300</px><py>300</py><u0>160</u0><v0>120</v0>"
                                                     "</camera><unknown><x>1</x></unknown><ecm><bogus>2</bogus></ecm></conf>"), bare);
   TEST("a camera-only file (with unknown elements) reads", read.ok(), true);
-  TEST_EQUAL("missing <ecm>: ViSP's range 4", bare.params.me.getRange(), defaults.params.me.getRange());
-  TEST_NEAR("ViSP's threshold 1500", bare.params.me.getThreshold(), 1500, 0);
-  TEST_NEAR("ViSP's sample step 10", bare.params.me.getSampleStep(), 10, 0);
+  TEST_EQUAL("missing <ecm>: ViSP's range 4", bare.params.me.range, defaults.params.me.range);
+  TEST_NEAR("ViSP's threshold 1500", bare.params.me.threshold, 1500, 0);
+  TEST_NEAR("ViSP's sample step 10", bare.params.me.sample_step, 10, 0);
   TEST_NEAR("missing <face>: vpMbTracker's 89 degrees", bare.params.faces.angle_appear, 89 * kDegree, 1e-5);
   TEST("and no clipping", !bare.params.faces.near_clipping && !bare.params.faces.far_clipping && !bare.params.faces.fov_clipping, true);
   TEST("nothing to note", read.ok() && read.value().not_applied.empty() && read.value().camera_block, true);
@@ -124,8 +125,8 @@ void precedence() {
   auto second = apply_visp_config(write("override.xml", "<conf><ecm><range><tracking>3</tracking></range></ecm>"
                                                         "<face><fov_clipping>0</fov_clipping></face></conf>"), config);
   TEST("a second file applies over the first", first.ok() && second.ok(), true);
-  TEST_EQUAL("its range replaces cube.xml's", config.params.me.getRange(), 3u);
-  TEST_NEAR("cube.xml's step stays", config.params.me.getSampleStep(), 4, 0);
+  TEST_EQUAL("its range replaces cube.xml's", config.params.me.range, 3u);
+  TEST_NEAR("cube.xml's step stays", config.params.me.sample_step, 4, 0);
   TEST_NEAR("cube.xml's camera stays", config.camera.px, 547.7367575, 1e-4);
   TEST("its fov_clipping 0 replaces cube.xml's 1", config.params.faces.fov_clipping, false);
   TEST("cube.xml's near clipping stays", config.params.faces.near_clipping, true);
@@ -143,7 +144,7 @@ void status_block() {
   TEST_NEAR("  the tracked scale", config.params.status.tracked_scale_px, 1.5, 1e-6);
   TEST_EQUAL("  the learning frames", config.params.status.learn_frames, 8);
   TEST_NEAR("  the least inlier share", config.params.status.least_inlier_share, 0.3, 1e-6);
-  TEST_EQUAL("  and ViSP's range beside them", config.params.me.getRange(), 6u);
+  TEST_EQUAL("  and ViSP's range beside them", config.params.me.range, 6u);
 }
 
 void refused(const std::string& name, const std::string& xml, int line, const std::string& element) {
@@ -156,7 +157,7 @@ void refused(const std::string& name, const std::string& xml, int line, const st
   TEST_EQUAL(("  at line " + std::to_string(line)).c_str(), read.error().line, line);
   TEST(("  naming the file and " + element).c_str(),
        read.error().file == path && read.error().message.find(element) != std::string::npos, true);
-  TEST("  nothing applied", config.params.me.getRange() == before.params.me.getRange(), true);
+  TEST("  nothing applied", config.params.me.range == before.params.me.range, true);
 }
 
 void bad_values() {
@@ -173,6 +174,8 @@ void bad_values() {
           "<ecm><contrast><edge_threshold>");
   refused("mu.xml", "<conf><ecm><contrast>\n\n<mu1>1.5</mu1></contrast></ecm></conf>", 3, "<ecm><contrast><mu1>");
   refused("px.xml", "<conf>\n<camera>\n<px>0</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("huge_px.xml", "<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
+  refused("far_u0.xml", "<conf>\n<camera>\n<u0>-2e6</u0>\n</camera>\n</conf>\n", 3, "<camera><u0>");
   refused("width.xml", "<conf>\n<camera>\n<width>wide</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
   // Intrinsics and sizes inside the bounds every other input has: a focal length or principal
   // point beyond a million pixels, a side beyond an image file's 16384, more than 64 M pixels.
@@ -204,9 +207,29 @@ void bad_values() {
        !missing.ok() && missing.error().file == std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", true);
 }
 
+/// apply_visp_config_text reads a configuration held in memory as the file reader reads it.
+void from_memory() {
+  const std::string path = std::string(EDGETRACK_VISP_IMAGES) + "/mbt/cube.xml";
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  TrackerConfig from_file, from_text;
+  auto file = apply_visp_config(path, from_file);
+  auto memory = apply_visp_config_text(text, "cube.xml in memory", from_text);
+  TEST("cube.xml reads from memory", file.ok() && memory.ok(), true);
+  TEST("with the file's settings", from_text.params.me.range == from_file.params.me.range &&
+                                       from_text.params.me.sample_step == from_file.params.me.sample_step &&
+                                       from_text.camera.px == from_file.camera.px &&
+                                       from_text.params.faces.angle_appear == from_file.params.faces.angle_appear, true);
+  TrackerConfig bad;
+  auto refused_text = apply_visp_config_text("<conf>\n<ecm><range><tracking>0</tracking></range></ecm></conf>", "buffer", bad);
+  TEST("a bad value in memory is refused naming the buffer's name and line",
+       !refused_text.ok() && refused_text.error().file == "buffer" && refused_text.error().line == 2, true);
+}
+
 }  // namespace
 
 static void test_visp_config() {
+  from_memory();
   cube_xml();
   blocks();
   precedence();

@@ -2,9 +2,11 @@
 # `cmake --install`: the libraries of ports/ and tracker/ as the CMake package `edgetrack`
 # (exported targets edgetrack::<name>, a config file that reports and checks the build's
 # `real`, a version file) and a pkg-config file; the command line; the shipped models.
-# Drop-in headers (vnl/, vcl/, visp3/, real/ ...) go under include/edgetrack/ports, which only
-# the edgetrack:: targets put on the include path, so a real VXL or ViSP on the same machine
-# keeps its own. Library files get an edgetrack_ prefix for the same reason.
+# Drop-in headers (vnl/, vcl/, visp3/, real/ ...) go under include/edgetrack/ports/<port>, one
+# folder per ports/ directory, and each exported target puts only its own folder on the include
+# path: edgetrack::tracker carries include/ and the `real` folder its public headers need, so a
+# real VXL or ViSP in the same program keeps its own headers. Library files get an edgetrack_
+# prefix for the same reason.
 # The folders are set in edgetrack_install_dirs.cmake.
 include(CMakePackageConfigHelpers)
 
@@ -24,9 +26,13 @@ endforeach()
 set_target_properties(edgetrack_all PROPERTIES EXPORT_NAME edgetrack)
 add_library(edgetrack::edgetrack ALIAS edgetrack_all)
 
-install(TARGETS ${edgetrack_port_targets} EXPORT edgetrack-targets COMPONENT dev
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        INCLUDES DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR})
+foreach(target IN LISTS edgetrack_port_targets)
+  get_target_property(edgetrack_port_dir ${target} SOURCE_DIR)
+  get_filename_component(edgetrack_port ${edgetrack_port_dir} NAME)
+  install(TARGETS ${target} EXPORT edgetrack-targets COMPONENT dev
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/${edgetrack_port})
+endforeach()
 install(TARGETS tracker edgetrack_all EXPORT edgetrack-targets COMPONENT dev
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
@@ -35,9 +41,11 @@ install(TARGETS tracker edgetrack_all EXPORT edgetrack-targets COMPONENT dev
 # a list to update.
 file(GLOB edgetrack_port_include_dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/ports/*/include)
 foreach(dir IN LISTS edgetrack_port_include_dirs)
-  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR} COMPONENT dev)
+  get_filename_component(edgetrack_port_dir ${dir} DIRECTORY)
+  get_filename_component(edgetrack_port ${edgetrack_port_dir} NAME)
+  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/${edgetrack_port} COMPONENT dev)
 endforeach()
-install(DIRECTORY ${PROJECT_BINARY_DIR}/ports/real/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}
+install(DIRECTORY ${PROJECT_BINARY_DIR}/ports/real/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/real
         COMPONENT dev)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/tracker/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
 

@@ -8,6 +8,8 @@
 #include <map>
 #include <utility>
 
+#include "edgetrack/angles.h"
+
 namespace edgetrack {
 namespace {
 
@@ -116,7 +118,7 @@ Vec3 perpendicular(const Vec3& n) {
 /// Checks the cylinders, tessellates their sides (inscribed, kCylinderSides facets) and adds them.
 Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, EdgeModel& model) {
   const int vertex_count = static_cast<int>(model.vertices.size());
-  const real pi = real(3.14159265358979323846);
+  const real pi = real(kPi);
   for (size_t c = 0; c < polygons.cylinders.size(); ++c) {
     const CylinderRecord& record = polygons.cylinders[c];
     const std::string label = "cylinder " + std::to_string(c);
@@ -151,7 +153,7 @@ Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, 
 Result<bool> add_circles(const Polygons& polygons, const std::string& source, EdgeModel& model) {
   using std::fabs;
   const int vertex_count = static_cast<int>(model.vertices.size());
-  const real pi = real(3.14159265358979323846);
+  const real pi = real(kPi);
   for (size_t k = 0; k < polygons.circles.size(); ++k) {
     const CircleRecord& record = polygons.circles[k];
     const std::string label = "circle " + std::to_string(k);
@@ -310,9 +312,18 @@ void add_crease_edges(const EdgeUses& uses, const EdgeRules& rules, EdgeModel& m
 }  // namespace
 
 Result<EdgeModel> build_edge_model(const Polygons& polygons, const EdgeRules& rules, const std::string& source) {
+  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
+  const auto finite = [](const real& v) { return std::isfinite(static_cast<double>(v)); };
+  for (size_t v = 0; v < polygons.vertices.size(); ++v) {
+    const Vec3& p = polygons.vertices[v];
+    if (!finite(p.x) || !finite(p.y) || !finite(p.z)) return fail("point " + std::to_string(v) + " is not a finite number");
+  }
+  for (const CylinderRecord& c : polygons.cylinders)
+    if (!finite(c.radius)) return fail("a cylinder's radius is not a finite number");
+  for (const CircleRecord& c : polygons.circles)
+    if (!finite(c.radius)) return fail("a circle's radius is not a finite number");
   EdgeModel model;
   model.vertices = polygons.vertices;
-  auto fail = [&](const std::string& message) { return Error{source, 0, message}; };
   EdgeUses uses;
   for (size_t f = 0; f < polygons.faces.size(); ++f) {
     const Result<bool> face = add_face(polygons, f, source, uses, model);

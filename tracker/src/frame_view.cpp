@@ -42,6 +42,9 @@ std::string frame_named(const FrameView& frame) { return std::string("the ") + l
 }  // namespace
 
 std::optional<Error> check_frame(const FrameView& frame, int width, int height) {
+  if (layout_name(frame.layout)[0] == '?')
+    return Error{"", 0, "the frame's pixel layout (" + std::to_string(static_cast<int>(frame.layout)) +
+                            ") is none of PixelLayout's values"};
   if (frame.pixels == nullptr) return Error{"", 0, frame_named(frame) + " has no pixels (a null pointer)"};
   if (frame.width != width || frame.height != height)
     return Error{"", 0, frame_named(frame) + " is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +

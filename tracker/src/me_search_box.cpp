@@ -8,7 +8,7 @@
 
 namespace edgetrack {
 
-PixelBox me_search_box(const ControlPoint& point, const vpMe& me) {
+PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int search_range) {
   using std::fabs;
   // The site (moving_edges.cpp) puts its candidates at pixel + k normal, |k| <= range, truncated
   // to whole pixels, and convolves a mask_size mask whose top-left is half a mask before each.
@@ -16,7 +16,7 @@ PixelBox me_search_box(const ControlPoint& point, const vpMe& me) {
   // they may differ by rounding, a few units in the last place of `real`, far below kRounding:
   // pushing each end out by range * kRounding keeps every candidate inside.
   constexpr real kRounding = real(1.0 / 1024);
-  const int range = static_cast<int>(me.getRange());
+  const int range = static_cast<int>(search_range);
   const int size = static_cast<int>(me.getMaskSize());
   const int half = (size - 1) >> 1;
   const real di = range * (fabs(point.normal.y) + kRounding), dj = range * (fabs(point.normal.x) + kRounding);

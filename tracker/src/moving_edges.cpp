@@ -169,8 +169,8 @@ int likelihood_floor(const real& threshold) {
 
 /// What every site's search takes from vpMe, converted once per frame.
 struct SiteLimits {
-  explicit SiteLimits(const vpMe& me)
-      : range(static_cast<int>(me.getRange())),
+  SiteLimits(const vpMe& me, unsigned int search_range)
+      : range(static_cast<int>(search_range)),
         threshold(likelihood_floor(me.getThreshold())),
         least(real(1) - me.getMu1()),
         most(real(1) + me.getMu2()) {}
@@ -349,6 +349,17 @@ void add_alternatives(const vpMeResponse& response, const PathSearch& found, int
 
 }  // namespace
 
+vpMe moving_edge_masks(const MovingEdgeParams& params) {
+  vpMe me;
+  me.setThreshold(params.threshold);
+  me.setMu1(params.mu1);
+  me.setMu2(params.mu2);
+  me.setSampleStep(params.sample_step);
+  me.setMaskSize(params.mask_size);
+  me.setMaskNumber(params.mask_number);
+  return me;
+}
+
 void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
                          std::vector<real>& out) {
   out.assign(points.size(), real(0));
@@ -361,19 +372,20 @@ void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<C
 }
 
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses, const std::vector<real>* references,
+                                           const vpMe& me, unsigned int range, int hypotheses,
+                                           const std::vector<real>* references,
                                            const std::vector<unsigned char>* strict) {
   std::vector<EdgeMatch> matches;
-  search_moving_edges(grey, points, me, hypotheses, matches, references, strict);
+  search_moving_edges(grey, points, me, range, hypotheses, matches, references, strict);
   return matches;
 }
 
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
+                         unsigned int range, int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
                          const std::vector<unsigned char>* strict) {
   matches.clear();
   matches.reserve(points.size());
-  const SiteLimits limits(me);
+  const SiteLimits limits(me, range);
   // The points of one straight edge share its normal, so its mask is looked up once per run.
   Vec2 mask_normal{real(0), real(0)};
   std::optional<vpMeResponse> mask_response;

@@ -5,13 +5,14 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "edgetrack/angles.h"
+
 namespace edgetrack {
 
 namespace {
 
 /// 2^30: the integer scale of unit vectors here (products of two fit in 62 bits).
 constexpr double kUnit = 1073741824.0;
-constexpr double kPi = 3.14159265358979323846;
 
 /// sin x or cos x for x in [0, pi] by their series, at compile time only: the table below holds
 /// integers, so no floating point runs on a core without an FPU.

@@ -21,18 +21,6 @@
 namespace edgetrack {
 namespace {
 
-/// The left Jacobian of SO(3), J(w) = I + b hat(w) + c hat(w)^2: d(exp(hat(w)) y)/dw is
-/// -hat(exp(hat(w)) y) J(w).
-Mat33 so3_left_jacobian(const Vec3& w) {
-  const vnl_rotation_coefficients<real> k = vnl_rotation_exp_coefficients(vnl_vector_fixed<real, 3>(w.x, w.y, w.z));
-  const Mat33 h = hat(w);
-  const Mat33 h2 = h * h;
-  Mat33 j = Mat33::identity();
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) j.m[r][c] = j.m[r][c] + k.b * h.m[r][c] + k.c * h2.m[r][c];
-  return j;
-}
-
 /// r y with each row's sum of products rounded once (sum_of_products.h): each solve's start
 /// rotation for every match.
 __attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y) {
@@ -417,7 +405,7 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
                   std::vector<real>& scratch, std::vector<real>& other, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(1.4826) * median_of(distances, scratch, other);
+  real c = params.tukey_c * real(kMadToSigma) * median_of(distances, scratch, other);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
@@ -485,7 +473,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes, workspace.selection);
+    solution.residual_scale = real(kMadToSigma) * median_of(distances, workspace.magnitudes, workspace.selection);
     return solution;
   }
 
@@ -515,7 +503,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(1.4826) * median_of(distances, workspace.magnitudes, workspace.selection);
+  solution.residual_scale = real(kMadToSigma) * median_of(distances, workspace.magnitudes, workspace.selection);
   return solution;
 }
 

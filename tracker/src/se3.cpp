@@ -23,17 +23,6 @@ vnl_matrix_fixed<real, 3, 3> to_vnl(const Mat33& m) {
   return r;
 }
 
-/// V(w) = I + b hat(w) + c hat(w)^2, the map from v to the translation in exp.
-Mat33 left_jacobian(const Vec3& w) {
-  const vnl_rotation_coefficients<real> k = vnl_rotation_exp_coefficients(to_vnl(w));
-  const Mat33 h = hat(w);
-  const Mat33 h2 = h * h;
-  Mat33 v = Mat33::identity();
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) v.m[i][j] = v.m[i][j] + k.b * h.m[i][j] + k.c * h2.m[i][j];
-  return v;
-}
-
 /// Solves m * x = b by Cramer's rule; m is V(w), well conditioned for |w| < 2 pi.
 Vec3 solve(const Mat33& m, const Vec3& b) {
   const Vec3 c0{m.m[0][0], m.m[1][0], m.m[2][0]};
@@ -44,6 +33,16 @@ Vec3 solve(const Mat33& m, const Vec3& b) {
 }
 
 }  // namespace
+
+Mat33 so3_left_jacobian(const Vec3& w) {
+  const vnl_rotation_coefficients<real> k = vnl_rotation_exp_coefficients(to_vnl(w));
+  const Mat33 h = hat(w);
+  const Mat33 h2 = h * h;
+  Mat33 v = Mat33::identity();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) v.m[i][j] = v.m[i][j] + k.b * h.m[i][j] + k.c * h2.m[i][j];
+  return v;
+}
 
 Mat33 hat(const Vec3& w) { return from_vnl(vnl_rotation_hat(to_vnl(w))); }
 
@@ -59,14 +58,14 @@ Vec3 rotation_log(const Mat33& rotation) {
   return {w[0], w[1], w[2]};
 }
 
-Se3 Se3::exp(const Twist& twist) { return Se3(rotation_exp(twist.w), left_jacobian(twist.w) * twist.v); }
+Se3 Se3::exp(const Twist& twist) { return Se3(rotation_exp(twist.w), so3_left_jacobian(twist.w) * twist.v); }
 
 Se3 Se3::from_theta_u(const Vec3& translation, const Vec3& theta_u) { return Se3(rotation_exp(theta_u), translation); }
 
 Twist Se3::log() const {
   Twist t;
   t.w = rotation_log(rotation_);
-  t.v = solve(left_jacobian(t.w), translation_);
+  t.v = solve(so3_left_jacobian(t.w), translation_);
   return t;
 }
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "edgetrack/angles.h"
+
 namespace edgetrack {
 namespace {
 
@@ -12,7 +14,6 @@ Se3 pose_from(const double w[3], const double t[3]) {
   return Se3(rotation_exp({real(w[0]), real(w[1]), real(w[2])}), {real(t[0]), real(t[1]), real(t[2])});
 }
 
-const double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -7,12 +7,19 @@
 #include <cmath>
 #include <string>
 
+#include "edgetrack/angles.h"
+#include "edgetrack/contrast_memory.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
 #include "edgetrack/millimetres.h"
+#include "edgetrack/motion_model.h"
+#include "edgetrack/moving_edges.h"
 #include "edgetrack/pose_uncertainty.h"
-#include "edgetrack/tracker_params.h"
+#include "edgetrack/status_statistics.h"
+#include "edgetrack/tracker_inputs.h"
 #include "real/sum_of_products.h"
+#include "visp3/core/vpImage.h"
+#include "visp3/me/vpMe.h"
 
 namespace edgetrack {
 namespace {
@@ -60,6 +67,66 @@ void carry_costs(const FrameResult& from, FrameResult& to) {
 
 }  // namespace
 
+/// Everything a Tracker holds; the frame loop runs on it unchanged, one pointer away.
+class Tracker::State {
+ public:
+  State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
+
+  Result<FrameResult> track(const FrameView& frame);
+  bool reset(const Se3& camera_from_model, StartPose start);
+  void set_params(const TrackerParams& params);
+
+  EdgeModel model_;
+  PinholeCamera camera_;
+  TrackerParams params_;
+  vpMe me_;  ///< the masks of params_.me, built once per settings
+  FaceVisibility face_visibility_;
+  FaceVisibility faces_before_;  ///< face_visibility_ before this frame, for a retry
+  Se3 camera_from_model_;
+  MotionModel motion_;
+  EdgeIdBuffer edge_ids_;
+  EdgeIdSource* edge_id_source_ = nullptr;
+  StepObserver* step_observer_ = nullptr;
+  /// The grey frame; on demand, only the current frame's search boxes are up to date.
+  vpImage<unsigned char> grey_;
+  BoxGreyScaler grey_boxes_;
+  /// Borrows the frame's own grey bytes (grey_in_place) during track only.
+  vpImage<unsigned char> grey_in_place_;
+  // Each frame's points, matches and pose buffers, kept so that a frame allocates nothing once
+  // they have grown to the largest frame seen.
+  std::vector<ControlPoint> sampled_;
+  std::vector<ControlPoint> visible_;
+  std::vector<EdgeMatch> matches_;
+  PoseWorkspace pose_workspace_;
+  ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
+  std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
+  std::vector<unsigned char> borrowed_;  ///< per visible point, nonzero: its reference is its primitive's
+  bool started_ = false;            ///< a frame has been trusted since the start or the last reset
+  bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
+  StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
+
+ private:
+  /// The grey step: converts what the moving edges searching `range` will read and returns the
+  /// image they read.
+  const vpImage<unsigned char>& grey_scale(const FrameView& frame, unsigned range, unsigned int& converted);
+  void begin(Step step) {
+    if (step_observer_) step_observer_->begin(step);
+  }
+  void end(Step step) {
+    if (step_observer_) step_observer_->end(step);
+  }
+  /// The four steps from `start` with the moving edges searching `range`, guessing when `start`
+  /// is a guess (no contrasts, no weights at the start), then the status of what they found.
+  void attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result);
+  /// The status measures of the attempt from `start` searching `range` and the rule's judgement.
+  void judge(const Se3& start, unsigned range, std::uint64_t saturations, FrameResult& result) const;
+  /// The motion model and the contrast memory take the frame's result; the next frame's start.
+  void conclude(FrameResult& result);
+  /// A camera created without an image size takes the first frame's: the camera is checked
+  /// with it and the image buffers sized (the one frame that allocates them).
+  std::optional<Error> take_frame_size(const FrameView& frame);
+};
+
 const char* step_name(Step step) {
   switch (step) {
     case Step::kVisibleEdges: return "visible edges detection";
@@ -72,21 +139,45 @@ const char* step_name(Step step) {
 
 Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params) {
-  if (camera.width <= 0 || camera.height <= 0) return Error{"", 0, "the camera has no image size"};
-  if (primitive_count(model) == 0) return Error{"", 0, "the model has no edge, cylinder or circle to track"};
-  if (primitive_count(model) > kMaxEdges) return Error{"", 0, "the model has too many primitives for Edge-ID"};
-  const auto problem = check_tracker_params(params);
-  if (problem) return Error{"", 0, problem->message};
-  if (initial.translation().z <= real(0)) return Error{"", 0, "the initial pose puts the model behind the camera"};
-  return Tracker(model, camera, initial, params);
+  if (auto problem = check_camera(camera)) return *std::move(problem);
+  if (auto problem = check_tracked_model(model)) return *std::move(problem);
+  if (auto problem = check_tracker_params(params)) return Error{"", 0, problem->message};
+  if (auto problem = check_start_pose(initial)) return Error{"", 0, "the initial pose " + *problem};
+  return Tracker(std::make_unique<State>(model, camera, initial, params));
 }
 
-Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params)
+Tracker::Tracker(std::unique_ptr<State> state) : state_(std::move(state)) {}
+Tracker::Tracker(const Tracker& other) : state_(std::make_unique<State>(*other.state_)) {}
+Tracker& Tracker::operator=(const Tracker& other) {
+  if (this != &other) state_ = std::make_unique<State>(*other.state_);
+  return *this;
+}
+Tracker::Tracker(Tracker&& other) noexcept = default;
+Tracker& Tracker::operator=(Tracker&& other) noexcept = default;
+Tracker::~Tracker() = default;
+
+Result<FrameResult> Tracker::track(const FrameView& frame) { return state_->track(frame); }
+bool Tracker::reset(const Se3& camera_from_model, StartPose start) { return state_->reset(camera_from_model, start); }
+std::optional<Error> Tracker::set_params(const TrackerParams& params) {
+  if (auto problem = check_tracker_params(params)) return Error{"", 0, problem->message};
+  state_->set_params(params);
+  return std::nullopt;
+}
+const TrackerParams& Tracker::params() const { return state_->params_; }
+void Tracker::set_edge_id_source(EdgeIdSource* source) { state_->edge_id_source_ = source; }
+void Tracker::set_step_observer(StepObserver* observer) { state_->step_observer_ = observer; }
+const Se3& Tracker::camera_from_model() const { return state_->camera_from_model_; }
+const std::vector<ControlPoint>& Tracker::control_points() const { return state_->visible_; }
+const std::vector<EdgeMatch>& Tracker::matches() const { return state_->matches_; }
+const EdgeIdBuffer& Tracker::edge_ids() const { return state_->edge_ids_; }
+const FaceVisibility& Tracker::face_visibility() const { return state_->face_visibility_; }
+
+Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                      const TrackerParams& params)
     : model_(model),
       camera_(camera),
       params_(params),
-      me_(params.me),
-      sampling_(sampling_params(params)),
+      me_(moving_edge_masks(params.me)),
       face_visibility_(model),
       faces_before_(model),
       camera_from_model_(initial),
@@ -94,7 +185,26 @@ Tracker::Tracker(const EdgeModel& model, const PinholeCamera& camera, const Se3&
       edge_ids_(camera),
       grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
 
-const vpImage<unsigned char>& Tracker::grey_scale(const FrameView& frame, unsigned int& converted) {
+std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
+  if (auto problem = check_frame(frame, frame.width, frame.height)) return problem;
+  PinholeCamera sized = camera_;
+  sized.width = frame.width;
+  sized.height = frame.height;
+  if (auto problem = check_camera(sized)) return problem;
+  camera_ = sized;
+  edge_ids_ = EdgeIdBuffer(camera_);
+  grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
+  return std::nullopt;
+}
+
+void Tracker::State::set_params(const TrackerParams& params) {
+  params_ = params;
+  me_ = moving_edge_masks(params.me);
+  motion_.set_params(params.motion);
+}
+
+const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned range,
+                                                         unsigned int& converted) {
   converted = 0;
   if (grey_in_place(frame)) {
     // Only read through const references: the moving edges never write the grey image.
@@ -108,13 +218,13 @@ const vpImage<unsigned char>& Tracker::grey_scale(const FrameView& frame, unsign
   // The points' read boxes (vpGreyOnDemand's 8x8 tiles, measured on the cube sequence,
   // converted twice the pixels at twice the guest instructions).
   grey_boxes_.clear();
-  for (const ControlPoint& point : visible_) grey_boxes_.add(me_search_box(point, me_));
+  for (const ControlPoint& point : visible_) grey_boxes_.add(me_search_box(point, me_, range));
   converted = grey_boxes_.convert(frame, grey_);
   return grey_;
 }
 
-bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
-  if (camera_from_model.translation().z <= real(0)) return false;
+bool Tracker::State::reset(const Se3& camera_from_model, StartPose start) {
+  if (check_start_pose(camera_from_model)) return false;
   start_is_guess_ = start == StartPose::kGuess;
   camera_from_model_ = camera_from_model;
   face_visibility_.reset();
@@ -125,14 +235,17 @@ bool Tracker::reset(const Se3& camera_from_model, StartPose start) {
   return true;
 }
 
-Result<FrameResult> Tracker::track(const FrameView& frame) {
+Result<FrameResult> Tracker::State::track(const FrameView& frame) {
+  if (camera_.width == 0 && camera_.height == 0) {
+    if (auto problem = take_frame_size(frame)) return *std::move(problem);
+  }
   if (auto problem = check_frame(frame, camera_.width, camera_.height)) return *std::move(problem);
   FrameResult result;
   // After a loss, or from a guessed start, the pose is a guess: the contrasts it would assign are
   // not the edges' there, nor do the distances to it tell the good matches from the bad.
   const bool guessing = motion_.lost_last_frame() || (!started_ && start_is_guess_);
   faces_before_ = face_visibility_;
-  attempt(frame, camera_from_model_, motion_.search_range(params_.me.getRange()), guessing, result);
+  attempt(frame, camera_from_model_, motion_.search_range(params_.me.range), guessing, result);
   // A lost frame, or an uncertain one that started from a pose the velocity moved on: the last
   // trusted pose at rest is another start. (From the trusted pose itself, a wider search on
   // clutter only finds more of it.) It is no guess once a frame was trusted: its contrasts were
@@ -143,7 +256,7 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
     FrameResult retry;
     carry_costs(result, retry);
     face_visibility_ = faces_before_;
-    attempt(frame, motion_.trusted(), motion_.retry_range(params_.me.getRange()), !started_, retry);
+    attempt(frame, motion_.trusted(), motion_.retry_range(params_.me.range), !started_, retry);
     if (retry.status == TrackingStatus::kTracked &&
         (result.status == TrackingStatus::kLost || retry.pose.residual_scale < result.pose.residual_scale))
       result = retry;
@@ -154,34 +267,33 @@ Result<FrameResult> Tracker::track(const FrameView& frame) {
   return result;
 }
 
-void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result) {
+void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result) {
   const std::uint64_t saturations = fixedpoint::saturation_count();
-  me_.setRange(range);
   StepClock clock;
   begin(Step::kVisibleEdges);
   if (edge_id_source_) edge_id_source_->draw(model_, start, edge_ids_);
   else edge_ids_.render(model_, start);
   face_visibility_.update(model_, camera_, start, params_.faces);
-  sample_control_points(model_, camera_, start, sampling_, face_visibility_, sampled_);
+  sample_control_points(model_, camera_, start, sampling_params(params_), face_visibility_, sampled_);
   keep_visible(sampled_, edge_ids_, visible_);
   if (guessing) {
     references_.assign(visible_.size(), real(0));
     borrowed_.assign(visible_.size(), 0);
   } else {
-    contrast_memory_.references(visible_, camera_, start, sampling_.step, references_, borrowed_);
+    contrast_memory_.references(visible_, camera_, start, params_.me.sample_step, references_, borrowed_);
   }
   end(Step::kVisibleEdges);
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
   unsigned int converted = 0;
-  const vpImage<unsigned char>& grey = grey_scale(frame, converted);
+  const vpImage<unsigned char>& grey = grey_scale(frame, range, converted);
   result.grey_pixels += converted;
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
   begin(Step::kMovingEdges);
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
-  search_moving_edges(grey, visible_, me_, params_.hypotheses, matches_, &references_, &borrowed_);
+  search_moving_edges(grey, visible_, me_, range, params_.hypotheses, matches_, &references_, &borrowed_);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
@@ -196,10 +308,10 @@ void Tracker::attempt(const FrameView& frame, const Se3& start, unsigned range, 
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
   result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
-  judge(start, saturations, result);
+  judge(start, range, saturations, result);
 }
 
-void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& result) const {
+void Tracker::State::judge(const Se3& start, unsigned range, std::uint64_t saturations, FrameResult& result) const {
   FrameMeasures& m = result.measures;
   m.visible = result.points_sampled;
   m.matched = static_cast<int>(matches_.size());
@@ -212,8 +324,8 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
   m.correction_px = largest_normal_shift(visible_, camera_, solved);
   const Se3 change = solved * start.inverse();
   m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
-  m.rotation_change_deg = real(57.29577951308232) * norm(rotation_log(change.rotation()));
-  m.range = me_.getRange();
+  m.rotation_change_deg = real(kDegreesPerRadian) * norm(rotation_log(change.rotation()));
+  m.range = range;
   const real sigma = std::max(m.residual_scale, params_.status.edge_location_px);
   m.pose_uncertainty_px =
       pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
@@ -225,14 +337,14 @@ void Tracker::judge(const Se3& start, std::uint64_t saturations, FrameResult& re
   result.reason = judged.reason;
 }
 
-void Tracker::conclude(FrameResult& result) {
+void Tracker::State::conclude(FrameResult& result) {
   if (result.status == TrackingStatus::kLost) {
     result.camera_from_model = camera_from_model_;
     motion_.lose(model_, camera_);
   } else {
     const Se3& solved = result.pose.camera_from_model;
     result.camera_from_model = solved;
-    motion_.trust(solved, model_, camera_, params_.me.getRange());
+    motion_.trust(solved, model_, camera_, params_.me.range);
     contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
     started_ = true;
   }

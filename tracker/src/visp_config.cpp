@@ -12,16 +12,13 @@
 #include <string>
 
 #include "edgetrack/image_limits.h"
+#include "edgetrack/angles.h"
+#include "edgetrack/tracker_inputs.h"
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/xml_document.h"
 
 namespace edgetrack {
 namespace {
-
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180;
-/// The focal lengths' bound and the principal point's distance from the origin (pixels): a
-/// million pixels is a field of view under a degree on the widest image, so larger is a typo.
-constexpr double kMaxCameraPixels = 1e6;
 
 /// Reads one file's elements onto a copy of the configuration.
 class Reading {
@@ -113,12 +110,8 @@ class Reading {
       if (value) {
         auto got = number(e, where);
         if (!got.ok()) return got.error();
-        const bool focal = e.name == "px" || e.name == "py";
-        if (focal && !(got.value() > 0 && got.value() <= kMaxCameraPixels))
-          return bad(e, where, "must be in (0, " + std::to_string(static_cast<long>(kMaxCameraPixels)) + "] pixels, not " + e.text);
-        if (!focal && std::fabs(got.value()) > kMaxCameraPixels)
-          return bad(e, where, "must be within " + std::to_string(static_cast<long>(kMaxCameraPixels)) + " pixels of 0, not " + e.text);
         *value = real(got.value());  // set-up time conversion
+        if (auto refused = check_intrinsics(config_.camera)) return Error{path_, e.line, where + ": " + refused->message};
       } else if (size) {
         auto got = whole(e, where);
         if (!got.ok()) return got.error();
@@ -133,7 +126,7 @@ class Reading {
   }
 
   Result<bool> ecm(const XmlElement& block) {
-    vpMe& me = config_.params.me;
+    MovingEdgeParams& me = config_.params.me;
     for (const XmlElement& group : block.children) {
       if (group.name == "sample") {
         auto read = sample(group, "ecm><sample");
@@ -145,21 +138,16 @@ class Reading {
         if (group.name == "mask" && (e.name == "size" || e.name == "nb_mask")) {
           auto got = count(e, where);
           if (!got.ok()) return got.error();
-          const bool size = e.name == "size";
-          const auto masks = check_masks(size ? got.value() : me.getMaskSize(), size ? me.getMaskNumber() : got.value());
-          if (masks) return Error{path_, e.line, masks->message};
-          if (size) me.setMaskSize(got.value());
-          else me.setMaskNumber(got.value());
+          (e.name == "size" ? me.mask_size : me.mask_number) = got.value();
         } else if (group.name == "range" && e.name == "tracking") {
           auto got = count(e, where);
           if (!got.ok()) return got.error();
-          me.setRange(got.value());
+          me.range = got.value();
         } else if (group.name == "contrast" && (e.name == "edge_threshold" || e.name == "mu1" || e.name == "mu2")) {
           auto got = number(e, where);
           if (!got.ok()) return got.error();
-          if (e.name == "edge_threshold") me.setThreshold(got.value());
-          else if (e.name == "mu1") me.setMu1(got.value());
-          else me.setMu2(got.value());
+          (e.name == "edge_threshold" ? me.threshold : e.name == "mu1" ? me.mu1 : me.mu2) =
+              real(got.value());  // set-up time conversion
         } else {
           continue;
         }
@@ -176,8 +164,9 @@ class Reading {
       if (e.name != "step") continue;
       auto got = whole(e, "<" + where + "><step>");
       if (!got.ok()) return got.error();
-      if (got.value() < 1) return bad(e, "<" + where + "><step>", "must be at least 1 pixel, not " + e.text);
-      config_.params.me.setSampleStep(static_cast<double>(got.value()));
+      config_.params.me.sample_step = real(static_cast<double>(got.value()));  // set-up time conversion
+      auto checked = check(e);
+      if (!checked.ok()) return checked;
     }
     return true;
   }
@@ -265,14 +254,25 @@ class Reading {
 
 }  // namespace
 
-Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config) {
-  auto document = read_xml_file(path);
+namespace {
+
+Result<ConfigNotes> apply_document(const Result<XmlElement>& document, const std::string& path, TrackerConfig& config) {
   if (!document.ok()) return document.error();
   Reading reading(path, config);
   auto read = reading.root(document.value());
   if (!read.ok()) return read.error();
   config = reading.config();
   return reading.notes();
+}
+
+}  // namespace
+
+Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config) {
+  return apply_document(read_xml_file(path), path, config);
+}
+
+Result<ConfigNotes> apply_visp_config_text(const std::string& xml, const std::string& name, TrackerConfig& config) {
+  return apply_document(parse_xml(xml, name), name, config);
 }
 
 }  // namespace edgetrack

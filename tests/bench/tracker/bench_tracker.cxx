@@ -88,7 +88,7 @@ int main(int argc, char* argv[]) {
               per_step ? "4 per frame (visible edges, grey, ME, pose)" : "1 per frame", camera.width, camera.height,
               static_cast<double>(camera.px), static_cast<double>(camera.py), params.pose.robust_rounds,
               params.pose.robust_evaluations, params.hypotheses, solver.c_str(),
-              static_cast<double>(params.me.getSampleStep()), params.me.getRange());
+              static_cast<double>(params.me.sample_step), params.me.range);
   std::printf(
       "# frame visible_ns grey_ns me_ns pose_ns sampled matched outliers end_rms_px evaluations error_mm grey_pixels jacobians\n");
   for (int k = 0; k < frames; ++k) {

@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
   for (const Vec3& v : model.vertices) centre = centre + v;
   centre = (real(1) / real(static_cast<int>(model.vertices.size()))) * centre;
   Result<Tracker> tracker = Tracker::create(model, config.camera, truth[0], config.params);
-  const vpMe& me = config.params.me;
+  const vpMe me = moving_edge_masks(config.params.me);
+  const unsigned range = config.params.me.range;
   vpImage<unsigned char> grey(static_cast<unsigned>(config.camera.height), static_cast<unsigned>(config.camera.width));
   std::vector<real> references;
   std::vector<EdgeMatch> matches;
@@ -92,7 +93,7 @@ int main(int argc, char** argv) {
   const double clutter_mm = argc == 4 ? std::atof(argv[3]) : 0;
   const std::vector<Segment3> clutter =
       clutter_mm > 0 ? parallel_clutter(model, real(clutter_mm / 1000)) : std::vector<Segment3>{};
-  const double mask_reach = static_cast<int>(me.getMaskSize()) / 2 + 1;
+  const double mask_reach = static_cast<int>(config.params.me.mask_size) / 2 + 1;
   LineTally lines;
   for (size_t k = 0; k < truth.size(); ++k) {
     const auto pixels = sequence.frame(k);
@@ -112,7 +113,7 @@ int main(int argc, char** argv) {
     }
     for (int test = 0; test < 2; ++test) {
       if (test) contrasts_at_points(grey, points, me, references);
-      search_moving_edges(grey, points, me, kMaxHypotheses, matches, test ? &references : nullptr);
+      search_moving_edges(grey, points, me, range, kMaxHypotheses, matches, test ? &references : nullptr);
       for (const EdgeMatch& m : matches) {
         const real outwards = dot(m.point.normal, m.point.pixel - middle) < real(0) ? real(-1) : real(1);
         const double found = static_cast<double>(outwards * dot(m.point.normal, m.found - m.point.pixel));
@@ -127,7 +128,7 @@ int main(int argc, char** argv) {
     }
   }
   std::printf("%s, %zu frames at the true pose, range %d, mask %d px\n", sequence.directory.c_str(), truth.size(),
-              static_cast<int>(me.getRange()), static_cast<int>(me.getMaskSize()));
+              static_cast<int>(range), static_cast<int>(config.params.me.mask_size));
   strongest[0].print("strongest edge, no contrast test");
   strongest[1].print("strongest passing the contrast test (the single hypothesis)");
   nearest[0].print("nearest of 4 hypotheses, no contrast test");

@@ -89,6 +89,15 @@ case $name in
     expect_error "$work/behind.pos: the pose puts the model behind the camera" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$work/behind.pos" \
       --images "$mbt/cube/image%04d.pgm" ;;
+  error_setting_origins)
+    # Each refused setting is named with the option or file it came from.
+    expect_error "--hypotheses: the number of edge hypotheses must be 1 to 4, not 9" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --hypotheses 9
+    printf '<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n' >"$work/huge_px.xml"
+    expect_error "$work/huge_px.xml:3: <camera><px>: the camera's px must be in (0, 1e+06] pixels" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$work/huge_px.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" ;;
   error_empty_sequence)
     mkdir -p "$work/empty"
     expect_error "$work/empty/frame%04d.pgm: empty sequence" \

@@ -15,5 +15,6 @@
 #include "edgetrack/pose_io.h"
 #include "edgetrack/result.h"
 #include "edgetrack/tracker.h"
+#include "edgetrack/tracker_inputs.h"
 #include "edgetrack/tracking_status.h"
 #include "edgetrack/visp_config.h"

@@ -43,7 +43,8 @@ struct FrameView {
 /// A frame whose rows follow one another without padding.
 FrameView packed_frame(const void* pixels, int width, int height, PixelLayout layout);
 
-/// Why `frame` cannot be tracked by a camera of width x height pixels, or nothing: no pixels,
+/// Why `frame` cannot be tracked by a camera of width x height pixels, or nothing: a layout
+/// that is none of PixelLayout's values, no pixels,
 /// a size that is not the camera's, rows shorter than a row of pixels, RGB565 rows not on
 /// 2-byte boundaries.
 std::optional<Error> check_frame(const FrameView& frame, int width, int height);

@@ -17,9 +17,9 @@ struct PixelBox {
 };
 
 /// A box holding every pixel search_moving_edges reads for `point`: the masks of all candidates
-/// within +-me.getRange() along the normal (vpMeSite::getSearchBox's box) and of the sub-pixel
+/// within +-range along the normal (vpMeSite::getSearchBox's box) and of the sub-pixel
 /// refinement's two neighbours of the found pixel. Computed from the unit normal without
 /// trigonometry; see the .cpp for why the margin covers the site's own sine and cosine.
-PixelBox me_search_box(const ControlPoint& point, const vpMe& me);
+PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int range);
 
 }  // namespace edgetrack

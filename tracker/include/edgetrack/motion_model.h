@@ -45,6 +45,8 @@ class MotionModel {
  public:
   MotionModel(const Se3& trusted, const MotionParams& params)
       : params_(params), trusted_(trusted), prediction_(trusted), wide_left_(params.start_frames) {}
+  /// Later frames follow `params`; the motion so far is kept.
+  void set_params(const MotionParams& params) { params_ = params; }
 
   /// The pose to start the next frame from: the last trusted pose moved on by the velocity
   /// once per frame since it (the velocity's share shrinks by `lost_damping` per lost frame).

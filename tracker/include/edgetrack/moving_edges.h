@@ -7,10 +7,15 @@
 
 #include "edgetrack/control_points.h"
 #include "edgetrack/edge_match.h"
+#include "edgetrack/tracker_params.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
 
 namespace edgetrack {
+
+/// vpMe holding `params` (its range is not read: each search takes its own), with its masks
+/// built; the tracker builds it once per settings.
+vpMe moving_edge_masks(const MovingEdgeParams& params);
 
 /// How far the sub-pixel refinement reads from the site's pixel, in whole pixels, besides the
 /// mask around each read: along the image axis nearest to the normal (a climb of up to 2 pixels
@@ -21,7 +26,7 @@ constexpr int kRefinementReachAcross = 1;
 
 /// Runs vpMeSite::track's search at every control point: a site at the point's pixel with the
 /// normal angle alpha = atan2(n_y, n_x) (its mask from the normal itself, normal_mask.h; its
-/// path along the unit normal) keeps the strongest edge within +-me.getRange() pixels that
+/// path along the unit normal) keeps the strongest edge within +-range pixels that
 /// passes the likelihood threshold, or with a reference contrast (below) the edge that passes
 /// the contrast test. The match is then refined to
 /// sub-pixel precision (not in ViSP, which keeps whole pixels): on the line of the image axis
@@ -49,12 +54,12 @@ constexpr int kRefinementReachAcross = 1;
 /// itself was not seen in the last trusted frame (ContrastMemory::references), and the point
 /// then gets no match.
 std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                                           const vpMe& me, int hypotheses = 1,
+                                           const vpMe& me, unsigned int range, int hypotheses = 1,
                                            const std::vector<real>* references = nullptr,
                                            const std::vector<unsigned char>* strict = nullptr);
 /// The same into `matches` (emptied first, memory reused).
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr,
+                         unsigned int range, int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr,
                          const std::vector<unsigned char>* strict = nullptr);
 
 /// The mask response at each point's own pixel, oriented along its normal (EdgeMatch::contrast):

@@ -20,6 +20,9 @@ enum class PoseSolver {
   kNormalEquations,  ///< LM on the 6 x 6 normal equations (normal_equations_lm.h): fewer instructions
 };
 
+/// The median absolute deviation of normal residuals times this is their standard deviation.
+constexpr double kMadToSigma = 1.4826;
+
 struct PoseParams {
   PoseSolver solver = PoseSolver::kLmder;
   int max_evaluations = 30;  ///< residual evaluations in the first (unweighted) solve, at most

@@ -17,7 +17,12 @@ struct Error {
   std::string text() const;
 };
 
-/// Either a value or an Error. `ok()` tells which; `value()` may only be read when ok().
+/// Prints "edgetrack: value() of a failed result: <the error's text>" on stderr and aborts: what
+/// Result::value() does on an error, in every build (with or without exceptions, NDEBUG or not).
+[[noreturn]] void stop_on_error_value(const Error& error);
+
+/// Either a value or an Error. `ok()` tells which; `value()` on an error stops the program with
+/// the error's text (stop_on_error_value), never hands back an unspecified value.
 template <class T>
 class Result {
  public:
@@ -25,12 +30,15 @@ class Result {
   Result(Error error) : error_(std::move(error)) {}  // NOLINT
 
   bool ok() const { return value_.has_value(); }
-  const T& value() const& { return *value_; }
-  T& value() & { return *value_; }
-  T&& value() && { return std::move(*value_); }
+  const T& value() const& { return checked(), *value_; }
+  T& value() & { return checked(), *value_; }
+  T&& value() && { return checked(), std::move(*value_); }
   const Error& error() const { return error_; }
 
  private:
+  void checked() const {
+    if (!value_) stop_on_error_value(error_);
+  }
   std::optional<T> value_;
   Error error_;
 };

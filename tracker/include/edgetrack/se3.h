@@ -20,6 +20,9 @@ Mat33 hat(const Vec3& w);
 Vec3 vee(const Mat33& m);
 /// Rodrigues' formula: the rotation exp(hat(w)).
 Mat33 rotation_exp(const Vec3& w);
+/// The left Jacobian of SO(3), J(w) = I + b hat(w) + c hat(w)^2: the map from v to the
+/// translation in Se3::exp, and d(exp(hat(w)) y)/dw = -hat(exp(hat(w)) y) J(w) for the pose step.
+Mat33 so3_left_jacobian(const Vec3& w);
 /// The rotation vector theta * u, theta in [0, pi], of a rotation matrix (its logarithm).
 Vec3 rotation_log(const Mat33& rotation);
 

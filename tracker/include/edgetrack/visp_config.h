@@ -12,7 +12,7 @@
 
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
-#include "edgetrack/tracker.h"
+#include "edgetrack/tracker_params.h"
 
 namespace edgetrack {
 
@@ -40,5 +40,8 @@ struct ConfigNotes {
 /// ViSP's other trackers (<klt>, <depth_normal>, <depth_dense>) are passed over, as ViSP's edge
 /// tracker does.
 Result<ConfigNotes> apply_visp_config(const std::string& path, TrackerConfig& config);
+/// The same for a configuration held in memory (`xml`, the file's text); `name` stands for the
+/// file in errors.
+Result<ConfigNotes> apply_visp_config_text(const std::string& xml, const std::string& name, TrackerConfig& config);
 
 }  // namespace edgetrack

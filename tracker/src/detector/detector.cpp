@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "edgetrack/angles.h"
 #include "edgetrack/detector/template_io.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/motion_model.h"
@@ -102,15 +103,15 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   screening.motion.velocity_share = refining.motion.velocity_share = real(0);
   // A candidate is no trusted start: each is judged by the fixed status bounds, learning nothing.
   screening.status.learn_frames = refining.status.learn_frames = 0;
-  screening.me.setSampleStep(params.screen_sample_step);
+  screening.me.sample_step = params.screen_sample_step;
   screening.pose.robust_rounds = params.screen_robust_rounds;
-  refining.me.setSampleStep(params.refine_sample_step);
+  refining.me.sample_step = params.refine_sample_step;
   refining.pose.robust_rounds = params.refine_robust_rounds;
   refining.pose.rounds_settled_px = params.refine_rounds_settled_px;
   screening.pose.solver = refining.pose.solver = params.solver;
   TrackerParams wide_tracking = refining, fine_tracking = refining;
-  wide_tracking.me.setRange(params.wide_range);
-  fine_tracking.me.setRange(params.fine_range);
+  wide_tracking.me.range = params.wide_range;
+  fine_tracking.me.range = params.fine_range;
   Result<Tracker> screen = Tracker::create(model, camera, start, screening);
   if (!screen.ok()) return screen.error();
   Result<Tracker> tracker = Tracker::create(model, camera, start, refining);
@@ -122,7 +123,7 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   Detector detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
                     std::move(tracker).value(), std::move(fine).value());
   detector.model_ = model;
-  detector.tracking_range_ = tracking.me.getRange();
+  detector.tracking_range_ = tracking.me.range;
   return detector;
 }
 
@@ -137,15 +138,16 @@ Detector::Detector(TemplateSet templates, const DetectorParams& params, Tracker 
 
 void Detector::match(const FrameView& frame) {
   const PinholeCamera& camera = templates_.camera;
-  grey_.resize(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
+  grey_.resize(static_cast<size_t>(camera.height) * static_cast<size_t>(camera.width));
+  vpImage<unsigned char> grey(grey_.data(), static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width));
   PixelBox whole;
   whole.bottom = camera.height;
   whole.right = camera.width;
-  convert_to_grey(frame, whole, grey_);
+  convert_to_grey(frame, whole, grey);
   const int factor = templates_.params.downscale;
-  const uint8_t* image = grey_.bitmap;
+  const uint8_t* image = grey_.data();
   if (factor > 1) {
-    downscale_grey(grey_.bitmap, camera.width, camera.height, factor, small_);
+    downscale_grey(grey_.data(), camera.width, camera.height, factor, small_);
     image = small_.data();
   }
   quantise_orientations(image, camera.width / factor, camera.height / factor, params_.orientations, scratch_,
@@ -267,7 +269,7 @@ void Detector::settle(const FrameView& frame, RefinedCandidate& candidate) {
 }
 
 void Detector::suppress_neighbours() {
-  const real cos_half = cos(real(0.5) * params_.suppress_deg * real(0.017453292519943295));
+  const real cos_half = cos(real(0.5) * params_.suppress_deg * real(kRadiansPerDegree));
   const real reach = params_.suppress_radii * templates_.extent.radius;
   std::vector<Se3> kept_poses;
   size_t kept = 0;
@@ -322,7 +324,7 @@ void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
   const RefinedCandidate base = *from;  // detection.refined grows below
   const Vec3& centre_in_model = templates_.extent.centre;
   const Vec3 centre = base.camera_from_model * centre_in_model;
-  const real t = params_.restart_tilt_deg * real(0.017453292519943295), o(0);
+  const real t = params_.restart_tilt_deg * real(kRadiansPerDegree), o(0);
   const Vec3 tilts[4] = {Vec3{t, o, o}, Vec3{-t, o, o}, Vec3{o, t, o}, Vec3{o, -t, o}};
   for (const Vec3& tilt : tilts) {
     // Turned about the camera's axis through the model's centre: the centre stays where it was.
@@ -337,7 +339,7 @@ Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3
     return *refused;
   match(frame);
   points_searched_ = 0;
-  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   return refine(grey, TemplateMatch{}, start);
 }
@@ -349,7 +351,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   points_searched_ = 0;
   match(frame);
   // The trackers read the grey image matching made, in place: no frame is converted again.
-  const FrameView grey = packed_frame(grey_.bitmap, templates_.camera.width, templates_.camera.height,
+  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
                                       PixelLayout::kGrey8);
   for (const TemplateMatch& m : screen(grey)) {
     detection.refined.push_back(refine(grey, m, detection.refined));

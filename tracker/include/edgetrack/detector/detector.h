@@ -223,7 +223,7 @@ class Detector {
   Tracker fine_;     ///< refining: the range narrowed
   EdgeModel model_;             ///< for same_as_earlier's image shift
   unsigned tracking_range_ = 0;  ///< the tracking settings' moving-edges range, px
-  vpImage<unsigned char> grey_;
+  std::vector<uint8_t> grey_;  ///< the frame in grey, row after row
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;
   OrientationImage orientations_;
