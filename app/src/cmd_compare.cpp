@@ -29,8 +29,8 @@ namespace edgetrack_app {
 namespace {
 
 const char* const kSynopsis =
-    "--model M.cao --camera C.xml --init-pose P.pos --images PATTERN|DIR [--first N] [--last N] [--truth truth.csv] "
-    "[--repeat N] [--csv OUT.csv] [--downscale N]";
+    "--model FILE --camera FILE --init-pose FILE --images PATTERN|DIR [--first N] [--last N] [--truth FILE] "
+    "[--repeat N] [--csv FILE] [--downscale N]";
 
 /// One tracker's frames: its poses (with points, ms and lost) in frame order.
 struct Run {
@@ -254,32 +254,29 @@ Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor)
 }
 
 int compare_main(int argc, char** argv) {
-  const std::vector<OptionSpec> specs = {
-      {"--model", true, "model, ViSP .cao (both trackers load it)"},
-      {"--camera", true, "ViSP XML: ViSP's loadConfigFile reads it, ours its <camera> and <ecm>"},
-      {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
-      {"--images", true, "printf pattern (seq/frame%04d.pgm) or directory"},
-      {"--first", true, "first frame number"},
-      {"--last", true, "last frame number (inclusive)"},
-      {"--truth", true, "ground truth CSV (edgetrack synth's truth.csv): errors of each tracker"},
-      {"--repeat", true, "run the sequence N times for the timings (default 1); poses from the last run"},
-      {"--csv", true, "write per-frame times, points, lost flags, corner difference and both poses"},
-      {"--downscale", true, "track frames N times smaller (640x480 -> QVGA with 2), both trackers"},
-      {"--help", false, "this text"},
+  const CommandLine line = {
+      "compare",
+      kSynopsis,
+      {
+          {"--model", "FILE", "model, ViSP .cao (both trackers load it)", ""},
+          {"--camera", "FILE", "ViSP XML: ViSP's loadConfigFile reads it, ours its <camera> and <ecm>", ""},
+          {"--init-pose", "FILE", "initial camera_from_model, a ViSP .pos file", ""},
+          {"--images", "PATTERN|DIR", "printf pattern (seq/frame%04d.pgm) or directory", ""},
+          {"--first", "N", "first frame number (default: 0, or 1 when a pattern has no frame 0)", ""},
+          {"--last", "N", "last frame number, inclusive (default: the last frame)", ""},
+          {"--truth", "FILE", "ground truth CSV (edgetrack synth's truth.csv): errors of each tracker", ""},
+          {"--repeat", "N", "run the sequence N times for the timings; poses from the last run", "1"},
+          {"--csv", "FILE", "write per-frame times, points, lost flags, corner difference and both poses", ""},
+          {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2), both trackers", "1"},
+      },
+      {"--model", "--camera", "--init-pose", "--images"},
+      {},
+      {},
   };
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("compare", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("compare", kSynopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--model") || !a.has("--camera") || !a.has("--init-pose") || !a.has("--images")) {
-    std::fprintf(stderr, "%s", usage("compare", kSynopsis, specs).c_str());
-    return 2;
-  }
-  auto first = a.integer("--first", -1), last = a.integer("--last", -1);
-  auto repeat = a.integer("--repeat", 1), factor = a.integer("--downscale", 1);
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
+  auto first = a.frame_number("--first"), last = a.frame_number("--last");
+  auto repeat = a.integer("--repeat"), factor = a.integer("--downscale");
   for (const Error* bad : {&first.error(), &last.error(), &repeat.error(), &factor.error()})
     if (!bad->message.empty()) return report("compare", *bad) + 1;
   if (repeat.value() < 1) return report("compare", {"", 0, "--repeat must be positive"}) + 1;

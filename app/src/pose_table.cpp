@@ -5,6 +5,7 @@
 #include "edgetrack/input_file.h"
 #include "edgetrack/number_text.h"
 #include "edgetrack/pose_io.h"
+#include "edgetrack/tracking_status.h"
 
 #include <cstdio>
 #include <sstream>
@@ -40,6 +41,13 @@ const edgetrack::FieldRange kColumns[9] = {
     {"column 9", 0, 1e9}};
 
 std::string partial_path(const std::string& path) { return path + ".partial"; }
+
+/// The status column, spelled as the library's status_name spells it.
+const char* status_of(const PoseRow& row) {
+  return edgetrack::status_name(row.lost        ? edgetrack::TrackingStatus::kLost
+                                : row.uncertain ? edgetrack::TrackingStatus::kUncertain
+                                                : edgetrack::TrackingStatus::kTracked);
+}
 
 }  // namespace
 
@@ -83,8 +91,9 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
       if (!points.ok()) return points.error();
       row.points = static_cast<int>(points.value());
       row.ms = values[8];
-      if (cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
-        return Error{path, number, "status is '" + cells[9] + "', expected ok, uncertain or lost"};
+      // `ok` is how files written before the status took the library's names say `tracked`.
+      if (cells[9] != "tracked" && cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
+        return Error{path, number, "status is '" + cells[9] + "', expected tracked, uncertain or lost"};
       row.lost = cells[9] == "lost";
       row.uncertain = cells[9] == "uncertain";
     }
@@ -116,7 +125,7 @@ void PoseTableWriter::write(const PoseRow& row) {
   int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
                        row.tu[1], row.tu[2]);
   if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms,
-                                           row.lost ? "lost" : row.uncertain ? "uncertain" : "ok");
+                                           status_of(row));
   if (n >= 0) n = std::fprintf(file_, "\n");
   if (n < 0) failed_ = true;
 }

@@ -23,7 +23,7 @@ struct PoseRow {
   int points = 0;            ///< poses file only
   double ms = 0;
   bool lost = false;       ///< status `lost`
-  bool uncertain = false;  ///< status `uncertain`; neither: `ok` (the tracker's status tracked)
+  bool uncertain = false;  ///< status `uncertain`; neither: `tracked` (older files: `ok`)
 };
 
 /// Reads a poses or truth file; `header` is the header it must start with (extra columns after

@@ -95,7 +95,7 @@ case $name in
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$work/empty/frame%04d.pgm" ;;
   error_bad_truth_header)
-    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.15,0,0,0,50,1.0,ok\n' >"$work/poses.csv"
+    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.15,0,0,0,50,1.0,tracked\n' >"$work/poses.csv"
     printf 'frame,x,y,z\n0,0,0,0.15\n' >"$work/truth.csv"
     expect_error "$work/truth.csv:1: header is 'frame,x,y,z'" \
       "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth.csv" ;;
@@ -103,6 +103,41 @@ case $name in
     expect_error "option --last needs an integer, not 'ten'" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --last ten ;;
+  error_missing_options_named)
+    expect_usage_error "edgetrack track: --camera is required" \
+      "$edgetrack" track --model "$mbt/cube.cao" --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: one of --init-pose, --init, --init-click or --init-auto is required" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --init needs --init-points" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init "$mbt/cube.init" \
+      --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --init-pose and --init-auto cannot be given together: give one" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" --init-auto \
+      --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --save-pose needs --init-click" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --save-pose "$work/p.pos"
+    expect_usage_error "$(printf 'edgetrack track: --model is required\nedgetrack track: --camera is required\nedgetrack track: one of --init-pose, --init, --init-click or --init-auto is required\nedgetrack track: one of --images or --camera-device is required')" \
+      "$edgetrack" track
+    expect_usage_error "edgetrack eval: --truth is required" "$edgetrack" eval --poses "$work/poses.csv"
+    expect_usage_error "edgetrack detect: --image is required" \
+      "$edgetrack" detect --model "$mbt/cube.cao" --camera "$mbt/cube.xml"
+    expect_usage_error "edgetrack templates: --out is required" \
+      "$edgetrack" templates --model "$mbt/cube.cao" --camera "$mbt/cube.xml" ;;
+  help_says_what_options_take)
+    # Every option that takes a value says what (no bare V), and the defaults are shown.
+    for command in track eval detect templates; do
+      "$edgetrack" $command --help >"$work/$command.txt" 2>"$work/stderr" || fail "$command --help failed"
+      [ ! -s "$work/stderr" ] || fail "$command --help wrote to stderr"
+      ! grep -qE '^  --[a-z-]+ V ' "$work/$command.txt" || fail "$command --help has a V placeholder"
+    done
+    cat "$work/track.txt"
+    for line in "--first N .*(default: 0, or 1 when a pattern has no frame 0)" "--downscale N .*(default: 1)$" \
+                "--init-distance MIN:MAX .*(default: from the camera and the model's size)" "--hypotheses N .*(default: 1)$" \
+                "--visibility soft|gl .*(default: soft)$" "--images PATTERN|DIR|VIDEO " "--overlay DIR " "--model FILE "; do
+      grep -qE -- "^  $(sed 's/[|()]/\\&/g' <<<"$line")" "$work/track.txt" || fail "track --help lacks '$line'"
+    done
+    grep -qE -- "^  --in-plane N .*\(default: 18\)$" "$work/templates.txt" || fail "templates --help lacks the --in-plane default" ;;
   mbt_cube_40_frames_640x480)
     track_cube --init-pose "$mbt/cube.0.pos" --poses "$work/poses.csv" || fail "track failed"
     check_poses "$work/poses.csv" 40 40 ;;
