@@ -29,7 +29,7 @@ namespace edgetrack_app {
 namespace {
 
 const char* const kSynopsis =
-    "--model FILE --camera FILE --init-pose FILE --images PATTERN|DIR [--first N] [--last N] [--truth FILE] "
+    "--model FILE --camera FILE --init-pose FILE --images PATTERN|DIR [--first N] [--last N] [--truth FILE|DIR] "
     "[--repeat N] [--csv FILE] [--downscale N]";
 
 /// One tracker's frames: its poses (with points, ms and lost) in frame order.
@@ -184,7 +184,7 @@ Result<bool> print_results(const Setup& setup, const Run& ours, const Run& visp,
   const char* keys[2] = {"ours", "visp"};
   Evaluation e[2];
   if (!truth_path.empty()) {
-    auto truth = read_pose_table(truth_path, kTruthHeader);
+    auto truth = read_truth(truth_path);
     if (!truth.ok()) return truth.error();
     for (int i = 0; i < 2; ++i) {
       auto evaluated = evaluate(i == 0 ? ours.rows : visp.rows, truth.value(), truth_path);
@@ -260,11 +260,11 @@ int compare_main(int argc, char** argv) {
       {
           {"--model", "FILE", "model, ViSP .cao (both trackers load it)", ""},
           {"--camera", "FILE", "ViSP XML: ViSP's loadConfigFile reads it, ours its <camera> and <ecm>", ""},
-          {"--init-pose", "FILE", "initial camera_from_model, a ViSP .pos file", ""},
+          {"--init-pose", "FILE", "initial camera_from_model, a ViSP pose file: .pos (6 numbers) or a 4x4 homogeneous matrix", ""},
           {"--images", "PATTERN|DIR", "printf pattern (seq/frame%04d.pgm) or directory", ""},
           {"--first", "N", "first frame number (default: 0, or 1 when a pattern has no frame 0)", ""},
           {"--last", "N", "last frame number, inclusive (default: the last frame)", ""},
-          {"--truth", "FILE", "ground truth CSV (edgetrack synth's truth.csv): errors of each tracker", ""},
+          {"--truth", "FILE|DIR", "ground truth as eval --truth reads it: errors of each tracker", ""},
           {"--repeat", "N", "run the sequence N times for the timings; poses from the last run", "1"},
           {"--csv", "FILE", "write per-frame times, points, lost flags, corner difference and both poses", ""},
           {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2), both trackers", "1"},

@@ -14,10 +14,11 @@ namespace edgetrack_app {
 int eval_main(int argc, char** argv) {
   const CommandLine line = {
       "eval",
-      "--poses FILE --truth FILE [--plots DIR] [--coverage]",
+      "--poses FILE --truth FILE|DIR [--plots DIR] [--coverage]",
       {
           {"--poses", "FILE", "tracked poses CSV (edgetrack track --poses)", ""},
-          {"--truth", "FILE", "ground truth CSV (edgetrack synth writes truth.csv)", ""},
+          {"--truth", "FILE|DIR", "ground truth: a CSV (edgetrack synth writes truth.csv), or a directory of one ViSP pose "
+                                "file per frame, .pos or 4x4 matrix, numbered by name (Camera_001.txt: frame 1)", ""},
           {"--plots", "DIR", "directory for fig4_time_per_frame.png and fig5_camera_position.png", ""},
           {"--coverage", "", "evaluate a poses file that covers only part of the truth, and say how much", ""},
       },
@@ -29,7 +30,7 @@ int eval_main(int argc, char** argv) {
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   auto poses = read_pose_table(a.text("--poses"), kPosesHeader);
   if (!poses.ok()) return report("eval", poses.error());
-  auto truth = read_pose_table(a.text("--truth"), kTruthHeader);
+  auto truth = read_truth(a.text("--truth"));
   if (!truth.ok()) return report("eval", truth.error());
   auto evaluation = evaluate(poses.value(), truth.value(), a.text("--truth"));
   if (!evaluation.ok()) return report("eval", evaluation.error());

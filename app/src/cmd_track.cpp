@@ -156,7 +156,7 @@ const CommandLine& track_command_line() {
       {
           {"--model", "FILE", "model, ViSP .cao or Wavefront .obj (metres)", ""},
           {"--camera", "FILE", "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)", ""},
-          {"--init-pose", "FILE", "initial camera_from_model, a ViSP .pos file", ""},
+          {"--init-pose", "FILE", "initial camera_from_model, a ViSP pose file: .pos (6 numbers) or a 4x4 homogeneous matrix", ""},
           {"--init", "FILE", "ViSP .init file of 3D points, with --init-points: initial pose from points", ""},
           {"--init-points", "FILE", "image positions of the .init points, one 'u v' line each (pixels)", ""},
           {"--init-click", "FILE", "ViSP .init file whose points are clicked on the first frame in a window (host, display)", ""},

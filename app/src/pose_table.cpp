@@ -6,8 +6,12 @@
 #include "edgetrack/number_text.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/tracking_status.h"
+#include "frame_source.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 using edgetrack::Error;
@@ -101,6 +105,48 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
   }
   if (rows.empty()) return Error{path, 0, "no rows after the header"};
   return rows;
+}
+
+namespace {
+
+/// The regular files of `dir` in name order, or an Error naming it.
+Result<std::vector<std::string>> regular_files(const std::string& dir) {
+  std::error_code error;
+  std::vector<std::string> paths;
+  std::filesystem::directory_iterator it(dir, error), end;
+  for (; !error && it != end; it.increment(error)) {
+    std::error_code type_error;
+    if (it->is_regular_file(type_error) && !type_error) paths.push_back(it->path().string());
+  }
+  if (error) return Error{dir, 0, "cannot list the directory: " + error.message()};
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+Result<std::vector<PoseRow>> read_pose_directory(const std::string& dir) {
+  auto paths = regular_files(dir);
+  if (!paths.ok()) return paths.error();
+  std::map<int, PoseRow> by_frame;
+  for (const std::string& path : paths.value()) {
+    const int frame = number_in_name(path);
+    if (frame < 0) return Error{path, 0, "a pose file of a truth directory must end its name with the frame number"};
+    auto pose = edgetrack::read_pos(path);
+    if (!pose.ok()) return pose.error();
+    if (!by_frame.emplace(frame, pose_row(frame, pose.value())).second)
+      return Error{path, 0, "a second pose file for frame " + std::to_string(frame)};
+  }
+  if (by_frame.empty()) return Error{dir, 0, "no pose files in the directory"};
+  std::vector<PoseRow> rows;
+  for (const auto& entry : by_frame) rows.push_back(entry.second);
+  return rows;
+}
+
+}  // namespace
+
+Result<std::vector<PoseRow>> read_truth(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return read_pose_directory(path);
+  return read_pose_table(path, kTruthHeader);
 }
 
 Result<PoseTableWriter> PoseTableWriter::open(const std::string& path, bool with_tracking) {

@@ -31,6 +31,13 @@ struct PoseRow {
 /// value is finite. Errors name the file and the line.
 edgetrack::Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header);
 
+/// The ground truth of a sequence: a truth CSV (kTruthHeader), or a directory of one ViSP pose
+/// file per frame (read_pos: a .pos vector or a 4x4 homogeneous matrix), each numbered by the
+/// number its name ends with (Castle-simu's CameraPose/Camera_001.txt is frame 1). In a
+/// directory every regular file is a pose file; a name without a number, or two with one
+/// number, is an error naming the file.
+edgetrack::Result<std::vector<PoseRow>> read_truth(const std::string& path);
+
 /// Writes rows as they come, into `<path>.partial`; close() renames it to `path`, so a run that
 /// fails or is killed never leaves a partial file under the name of a complete one. Poses files
 /// carry the tracking columns, truth files do not.

@@ -22,6 +22,7 @@ DECLARE(test_line_in_triangle);
 DECLARE(test_detector_core);
 DECLARE(test_template_files);
 DECLARE(test_order_statistic);
+DECLARE(test_pose_files);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -44,6 +45,7 @@ void register_tests() {
   REGISTER(test_detector_core);
   REGISTER(test_template_files);
   REGISTER(test_order_statistic);
+  REGISTER(test_pose_files);
 }
 
 DEFINE_MAIN

@@ -124,6 +124,33 @@ case $name in
       "$edgetrack" detect --model "$mbt/cube.cao" --camera "$mbt/cube.xml"
     expect_usage_error "edgetrack templates: --out is required" \
       "$edgetrack" templates --model "$mbt/cube.cao" --camera "$mbt/cube.xml" ;;
+  castle_simu_matrix_poses)
+    # ViSP's Castle-simu: initialised from its first 4x4 camera pose file, evaluated against the
+    # directory of them (Camera_001.txt ... Camera_040.txt are frames 1-40, as Image_0001.pgm ...).
+    castle=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+    "$edgetrack" track --model "$castle/Models/chateau.cao" --camera "$castle/Config/chateau.xml" \
+      --init-pose "$castle/CameraPose/Camera_001.txt" --images "$castle/Images" --quiet --poses "$work/poses.csv" \
+      >/dev/null || fail "track failed"
+    "$edgetrack" eval --poses "$work/poses.csv" --truth "$castle/CameraPose" >"$work/eval.txt" || fail "eval failed"
+    cat "$work/eval.txt"
+    [ "$(field frames)" = 40 ] && [ "$(field lost)" = 0 ] || fail "expected 40 frames, none lost"
+    [ "$(head -n 2 "$work/poses.csv" | tail -n 1 | cut -d, -f1)" = 1 ] || fail "the first frame is not frame 1"
+    less "$(field distance_mm)" 3 || fail "mean distance to the truth not under 3 mm" ;;
+  error_bad_pose_matrix)
+    printf '1 0 0 0\n0 0.9 0 0\n0 0 1 0.5\n0 0 0 1\n' >"$work/stretched.txt"
+    expect_error "$work/stretched.txt:1: the upper-left 3x3 is not a rotation" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$work/stretched.txt" \
+      --images "$mbt/cube/image%04d.pgm"
+    mkdir -p "$work/truth"
+    printf '1 0 0 0\n0 1 0 0\n0 0 1 0.5\n0 0 0 1\n' >"$work/truth/Camera_000.txt"
+    printf '1 0 0 0\n0 1 0 0\n0 0 1 nan\n0 0 0 1\n' >"$work/truth/Camera_001.txt"
+    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.5,0,0,0,50,1.0,tracked\n' >"$work/poses.csv"
+    expect_error "$work/truth/Camera_001.txt:3: tz (m) is not a finite number" \
+      "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth"
+    printf '0 0 0.5 0 0 0\n' >"$work/truth/notes.txt"
+    rm "$work/truth/Camera_001.txt"
+    expect_error "$work/truth/notes.txt: a pose file of a truth directory must end its name with the frame number" \
+      "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth" ;;
   help_says_what_options_take)
     # Every option that takes a value says what (no bare V), and the defaults are shown.
     for command in track eval detect templates; do
