@@ -287,10 +287,12 @@ int compare_main(int argc, char** argv) {
   source.last = last.value();
   auto setup = read_setup(a, source, factor.value());
   if (!setup.ok()) return report("compare", setup.error());
+  auto worker = find_visp_worker();
+  if (!worker.ok()) return report("compare", worker.error());
   Run ours, visp;
   std::vector<double> ours_ms, visp_ms;
   for (int r = 0; r < repeat.value(); ++r) {
-    auto ran = run_once(setup.value(), EDGETRACK_VISP_WORKER, ours, visp);
+    auto ran = run_once(setup.value(), worker.value(), ours, visp);
     if (!ran.ok()) return report("compare", ran.error());
     for (const PoseRow& row : ours.rows) ours_ms.push_back(row.ms);
     for (const PoseRow& row : visp.rows) visp_ms.push_back(row.ms);

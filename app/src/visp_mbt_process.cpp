@@ -7,12 +7,24 @@
 
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <vector>
 
 using edgetrack::Error;
 using edgetrack::Result;
 
 namespace edgetrack_app {
+
+Result<std::string> find_visp_worker() {
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return Error{"/proc/self/exe", 0, "cannot tell where edgetrack runs from: " + error.message()};
+  const std::string worker =
+      (executable.parent_path() / EDGETRACK_VISP_WORKER_FROM_BINDIR).lexically_normal().string();
+  if (access(worker.c_str(), X_OK) != 0)
+    return Error{worker, 0, "ViSP's tracker program is missing (it is installed with edgetrack compare, beside it)"};
+  return worker;
+}
 
 Result<std::unique_ptr<VispMbtProcess>> VispMbtProcess::start(const std::string& worker, const std::string& xml,
                                                                 const std::string& model,

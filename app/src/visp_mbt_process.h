@@ -16,6 +16,10 @@
 
 namespace edgetrack_app {
 
+/// The child's program: edgetrack-visp-mbt where the installation (and the build tree) puts it,
+/// relative to the running executable; an Error naming that path when it is not there.
+edgetrack::Result<std::string> find_visp_worker();
+
 class VispMbtProcess {
  public:
   /// Starts `worker` on the XML and the model from camera_from_model; frames will be `downscale`

@@ -35,7 +35,8 @@ install(TARGETS tracker edgetrack_all EXPORT edgetrack-targets COMPONENT dev
 # a list to update.
 file(GLOB edgetrack_port_include_dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/ports/*/include)
 foreach(dir IN LISTS edgetrack_port_include_dirs)
-  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR} COMPONENT dev)
+  # Not the templates CMake fills in (*.in): their filled copies are what a build uses.
+  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR} COMPONENT dev PATTERN "*.in" EXCLUDE)
 endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/ports/real/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}
         COMPONENT dev)
@@ -59,4 +60,8 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/edgetrack.pc.in ${PROJECT_BINARY_DIR}/p
 install(FILES ${PROJECT_BINARY_DIR}/package/edgetrack.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
 
 install(TARGETS edgetrack RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+if(TARGET edgetrack-visp-mbt)
+  install(TARGETS edgetrack-visp-mbt RUNTIME DESTINATION ${EDGETRACK_INSTALL_LIBEXECDIR} COMPONENT tools)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/models DESTINATION ${EDGETRACK_INSTALL_DATADIR} COMPONENT tools)
+include(${CMAKE_CURRENT_LIST_DIR}/edgetrack_package_identity.cmake)
