@@ -46,6 +46,7 @@ struct Setup {
   Se3 initial;
   SourceOptions source;
   int factor = 1;
+  VispChildLimits limits;
 };
 
 /// Our tracker's camera and settings from the XML that ViSP's loadConfigFile reads (the same
@@ -91,7 +92,7 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
   if (!source.ok()) return source.error();
   auto tracker = edgetrack::Tracker::create(setup.model, setup.camera, setup.initial, setup.params);
   if (!tracker.ok()) return tracker.error();
-  auto child = VispMbtProcess::start(worker, setup.xml, setup.model_path, setup.initial, setup.factor);
+  auto child = VispMbtProcess::start(worker, setup.xml, setup.model_path, setup.initial, setup.factor, setup.limits);
   if (!child.ok()) return child.error();
   ours.rows.clear();
   visp.rows.clear();
@@ -109,7 +110,8 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
     for (int turn = 0; turn < 2; ++turn) {
       if ((turn + k) % 2 == 0) {
         auto answered = child.value()->track(view);
-        if (!answered.ok()) return answered.error();
+        if (!answered.ok())
+          return Error{answered.error().file, 0, frame.name + ": " + answered.error().message};
         reply = answered.value();
       } else {
         const auto begin = std::chrono::steady_clock::now();
@@ -224,8 +226,9 @@ Result<bool> print_results(const Setup& setup, const Run& ours, const Run& visp,
 }
 
 /// Reads and checks the inputs: the model, the initial pose, the first frame's size, the XML.
-Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor) {
+Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor, const VispChildLimits& limits) {
   Setup setup;
+  setup.limits = limits;
   setup.source = source;
   setup.xml = a.text("--camera");
   setup.model_path = a.text("--model");
@@ -268,6 +271,9 @@ int compare_main(int argc, char** argv) {
           {"--repeat", "N", "run the sequence N times for the timings; poses from the last run", "1"},
           {"--csv", "FILE", "write per-frame times, points, lost flags, corner difference and both poses", ""},
           {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2), both trackers", "1"},
+          {"--visp-frame-limit", "SECONDS", "the longest ViSP's tracker may take on one frame before compare stops it", "30"},
+          {"--visp-run-limit", "SECONDS", "the longest ViSP's tracker may take on a whole run before compare stops it",
+           "3600"},
       },
       {"--model", "--camera", "--init-pose", "--images"},
       {},
@@ -277,15 +283,19 @@ int compare_main(int argc, char** argv) {
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   auto first = a.frame_number("--first"), last = a.frame_number("--last");
   auto repeat = a.integer("--repeat"), factor = a.integer("--downscale");
-  for (const Error* bad : {&first.error(), &last.error(), &repeat.error(), &factor.error()})
+  auto frame_limit = a.number("--visp-frame-limit"), run_limit = a.number("--visp-run-limit");
+  for (const Error* bad : {&first.error(), &last.error(), &repeat.error(), &factor.error(), &frame_limit.error(),
+                           &run_limit.error()})
     if (!bad->message.empty()) return report("compare", *bad) + 1;
+  if (!(frame_limit.value() > 0) || !(run_limit.value() > 0))
+    return report("compare", {"", 0, "--visp-frame-limit and --visp-run-limit must be positive"}) + 1;
   if (repeat.value() < 1) return report("compare", {"", 0, "--repeat must be positive"}) + 1;
   if (factor.value() < 1 || factor.value() > 8) return report("compare", {"", 0, "--downscale must be 1..8"}) + 1;
   SourceOptions source;
   source.images = a.text("--images");
   source.first = first.value();
   source.last = last.value();
-  auto setup = read_setup(a, source, factor.value());
+  auto setup = read_setup(a, source, factor.value(), {frame_limit.value(), run_limit.value()});
   if (!setup.ok()) return report("compare", setup.error());
   auto worker = find_visp_worker();
   if (!worker.ok()) return report("compare", worker.error());
