@@ -17,7 +17,6 @@ for needed in Models/chateau.cao Config/chateau.xml CameraPose/Camera_001.txt Im
   [ -e "$castle/$needed" ] || { echo "castle: $castle/$needed is missing (Debian's visp-images-data)" >&2; exit 1; }
 done
 host_double=$(bench_tree host double edgetrack)/app/edgetrack
-host_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
 inputs=(--model "$castle/Models/chateau.cao" --camera "$castle/Config/chateau.xml"
         --init-pose "$castle/CameraPose/Camera_001.txt" --images "$castle/Images")
 
@@ -49,7 +48,6 @@ echo
 echo "| tracker | frames | lost | points per frame | mean distance mm | largest mm | rotation deg |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
 row "edgetrack track, host, double" "$host_double"
-row "edgetrack track, host, S40.23" "$host_s40"
 if "$host_double" compare --help >/dev/null 2>&1; then
   "$host_double" compare "${inputs[@]}" --truth "$castle/CameraPose" >"$work/compare.txt"
   printf '| ViSP vpMbGenericTracker (edge), same XML, model and first pose | %s | %s | %.1f | %.2f | %.2f | %.3f |\n' \
