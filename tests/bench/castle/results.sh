@@ -54,6 +54,10 @@ if "$host_double" compare --help >/dev/null 2>&1; then
     "$(value frames "$work/compare.txt")" "$(value visp_lost "$work/compare.txt")" \
     "$(value visp_points "$work/compare.txt")" "$(value visp_distance_mm "$work/compare.txt")" \
     "$(value visp_max_distance_mm "$work/compare.txt")" "$(value visp_rotation_deg "$work/compare.txt")"
+  echo
+  echo "ViSP's row is its edge tracker as \`edgetrack compare\` runs it (\`loadConfigFile\` on the same XML,"
+  echo "\`initFromPose\` from the same first pose); its lost frames are the ones whose \`track()\` threw. Why it"
+  echo "loses the castle there was not looked into."
 else
   echo
   echo "(This build has no \`edgetrack compare\`: ViSP's mbt module was not found at configure time.)"
