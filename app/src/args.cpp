@@ -2,8 +2,9 @@
 /// Option parsing for the subcommands.
 #include "args.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 
@@ -16,14 +17,16 @@ namespace edgetrack_app {
 
 Result<Args> Args::parse(int argc, char** argv, int first, const std::vector<OptionSpec>& specs) {
   Args args;
+  for (const OptionSpec& s : specs)
+    if (!s.fallback.empty()) args.defaults_[s.name] = s.fallback;
   for (int i = first; i < argc; ++i) {
     const std::string arg = argv[i];
     const OptionSpec* spec = nullptr;
     for (const OptionSpec& s : specs)
       if (arg == s.name) spec = &s;
     if (!spec) return Error{"", 0, "unknown option '" + arg + "'"};
-    if (spec->takes_value) {
-      if (i + 1 >= argc) return Error{"", 0, "option " + arg + " needs a value"};
+    if (!spec->value.empty()) {
+      if (i + 1 >= argc) return Error{"", 0, "option " + arg + " needs a value (" + spec->value + ")"};
       args.values_[arg] = argv[++i];
     } else {
       args.values_[arg] = "";
@@ -32,14 +35,26 @@ Result<Args> Args::parse(int argc, char** argv, int first, const std::vector<Opt
   return args;
 }
 
-std::string Args::text(const std::string& name, const std::string& fallback) const {
-  const auto found = values_.find(name);
-  return found == values_.end() ? fallback : found->second;
+bool Args::value_of(const std::string& name, std::string& value) const {
+  for (const auto* source : {&values_, &defaults_}) {
+    const auto found = source->find(name);
+    if (found != source->end()) {
+      value = found->second;
+      return true;
+    }
+  }
+  return false;
 }
 
-Result<int> Args::integer(const std::string& name, int fallback) const {
-  if (!has(name)) return fallback;
-  const std::string& value = values_.at(name);
+std::string Args::text(const std::string& name) const {
+  std::string value;
+  value_of(name, value);
+  return value;
+}
+
+Result<int> Args::integer(const std::string& name) const {
+  std::string value;
+  if (!value_of(name, value)) return Error{"", 0, "option " + name + " was not given and has no default"};
   char* end = nullptr;
   const long parsed = std::strtol(value.c_str(), &end, 10);
   if (value.empty() || *end != '\0' || parsed < -1000000000L || parsed > 1000000000L)
@@ -47,9 +62,9 @@ Result<int> Args::integer(const std::string& name, int fallback) const {
   return static_cast<int>(parsed);
 }
 
-Result<double> Args::number(const std::string& name, double fallback) const {
-  if (!has(name)) return fallback;
-  const std::string& value = values_.at(name);
+Result<double> Args::number(const std::string& name) const {
+  std::string value;
+  if (!value_of(name, value)) return Error{"", 0, "option " + name + " was not given and has no default"};
   char* end = nullptr;
   const double parsed = std::strtod(value.c_str(), &end);
   if (value.empty() || *end != '\0' || !std::isfinite(parsed))
@@ -58,9 +73,10 @@ Result<double> Args::number(const std::string& name, double fallback) const {
 }
 
 Result<int> Args::frame_number(const std::string& name) const {
-  auto value = integer(name, -1);
+  if (!has(name)) return -1;
+  auto value = integer(name);
   if (!value.ok()) return value;
-  if (has(name) && value.value() < 0)
+  if (value.value() < 0)
     return Error{"", 0, "option " + name + " needs a frame number (0 or more), not '" + values_.at(name) + "'"};
   return value;
 }
@@ -85,14 +101,70 @@ Result<bool> Args::size(const std::string& name, int& width, int& height) const 
   return true;
 }
 
-std::string usage(const std::string& command, const std::string& synopsis, const std::vector<OptionSpec>& specs) {
-  std::string text = "usage: edgetrack " + command + " " + synopsis + "\n";
-  for (const OptionSpec& s : specs) {
-    std::string left = std::string("  ") + s.name + (s.takes_value ? " V" : "");
-    if (left.size() < 24) left.resize(24, ' ');
-    text += left + " " + s.help + "\n";
+namespace {
+
+const OptionSpec kHelp = {"--help", "", "this text", ""};
+
+/// "a, b or c" with `last` = "or".
+std::string listed(const std::vector<std::string>& names, const std::string& last) {
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : i + 1 == names.size() ? " " + last + " " : ", ") + names[i];
+  return text;
+}
+
+std::string left_column(const OptionSpec& spec) { return "  " + spec.name + (spec.value.empty() ? "" : " " + spec.value); }
+
+}  // namespace
+
+std::string usage(const CommandLine& line) {
+  std::string text = "usage: edgetrack " + line.command + " " + line.synopsis + "\n";
+  std::vector<OptionSpec> options = line.options;
+  options.push_back(kHelp);
+  size_t width = 0;
+  for (const OptionSpec& s : options) width = std::max(width, left_column(s).size() + 2);
+  for (const OptionSpec& s : options) {
+    std::string left = left_column(s);
+    left.resize(width, ' ');
+    text += left + s.help + (s.fallback.empty() ? "" : " (default: " + s.fallback + ")") + "\n";
   }
   return text;
+}
+
+std::vector<std::string> missing_or_conflicting(const CommandLine& line, const Args& args) {
+  std::vector<std::string> problems;
+  for (const std::string& name : line.required)
+    if (!args.has(name)) problems.push_back(name + " is required");
+  for (const std::vector<std::string>& group : line.one_of) {
+    std::vector<std::string> given;
+    for (const std::string& name : group)
+      if (args.has(name)) given.push_back(name);
+    if (given.empty()) problems.push_back("one of " + listed(group, "or") + " is required");
+    if (given.size() > 1) problems.push_back(listed(given, "and") + " cannot be given together: give one");
+  }
+  for (const auto& [option, needed] : line.needs)
+    if (args.has(option) && !args.has(needed)) problems.push_back(option + " needs " + needed);
+  return problems;
+}
+
+std::optional<int> parse_command_line(const CommandLine& line, int argc, char** argv, Args& args) {
+  std::vector<OptionSpec> options = line.options;
+  options.push_back(kHelp);
+  auto parsed = Args::parse(argc, argv, 1, options);
+  if (!parsed.ok()) {
+    std::fprintf(stderr, "edgetrack %s: %s\n", line.command.c_str(), parsed.error().text().c_str());
+    return 2;
+  }
+  args = std::move(parsed).value();
+  if (args.has("--help")) {
+    std::printf("%s", usage(line).c_str());
+    return 0;
+  }
+  const std::vector<std::string> problems = missing_or_conflicting(line, args);
+  if (problems.empty()) return std::nullopt;
+  for (const std::string& problem : problems) std::fprintf(stderr, "edgetrack %s: %s\n", line.command.c_str(), problem.c_str());
+  std::fprintf(stderr, "usage: edgetrack %s %s\n(edgetrack %s --help lists every option)\n", line.command.c_str(),
+               line.synopsis.c_str(), line.command.c_str());
+  return 2;
 }
 
 }  // namespace edgetrack_app

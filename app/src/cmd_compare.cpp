@@ -29,8 +29,8 @@ namespace edgetrack_app {
 namespace {
 
 const char* const kSynopsis =
-    "--model M.cao --camera C.xml --init-pose P.pos --images PATTERN|DIR [--first N] [--last N] [--truth truth.csv] "
-    "[--repeat N] [--csv OUT.csv] [--downscale N]";
+    "--model FILE --camera FILE --init-pose FILE --images PATTERN|DIR [--first N] [--last N] [--truth FILE|DIR] "
+    "[--repeat N] [--csv FILE] [--downscale N]";
 
 /// One tracker's frames: its poses (with points, ms and lost) in frame order.
 struct Run {
@@ -46,6 +46,7 @@ struct Setup {
   Se3 initial;
   SourceOptions source;
   int factor = 1;
+  VispChildLimits limits;
 };
 
 /// Our tracker's camera and settings from the XML that ViSP's loadConfigFile reads (the same
@@ -91,7 +92,7 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
   if (!source.ok()) return source.error();
   auto tracker = edgetrack::Tracker::create(setup.model, setup.camera, setup.initial, setup.params);
   if (!tracker.ok()) return tracker.error();
-  auto child = VispMbtProcess::start(worker, setup.xml, setup.model_path, setup.initial, setup.factor);
+  auto child = VispMbtProcess::start(worker, setup.xml, setup.model_path, setup.initial, setup.factor, setup.limits);
   if (!child.ok()) return child.error();
   ours.rows.clear();
   visp.rows.clear();
@@ -109,7 +110,8 @@ Result<bool> run_once(const Setup& setup, const std::string& worker, Run& ours, 
     for (int turn = 0; turn < 2; ++turn) {
       if ((turn + k) % 2 == 0) {
         auto answered = child.value()->track(view);
-        if (!answered.ok()) return answered.error();
+        if (!answered.ok())
+          return Error{answered.error().file, 0, frame.name + ": " + answered.error().message};
         reply = answered.value();
       } else {
         const auto begin = std::chrono::steady_clock::now();
@@ -184,7 +186,7 @@ Result<bool> print_results(const Setup& setup, const Run& ours, const Run& visp,
   const char* keys[2] = {"ours", "visp"};
   Evaluation e[2];
   if (!truth_path.empty()) {
-    auto truth = read_pose_table(truth_path, kTruthHeader);
+    auto truth = read_truth(truth_path);
     if (!truth.ok()) return truth.error();
     for (int i = 0; i < 2; ++i) {
       auto evaluated = evaluate(i == 0 ? ours.rows : visp.rows, truth.value(), truth_path);
@@ -224,8 +226,9 @@ Result<bool> print_results(const Setup& setup, const Run& ours, const Run& visp,
 }
 
 /// Reads and checks the inputs: the model, the initial pose, the first frame's size, the XML.
-Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor) {
+Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor, const VispChildLimits& limits) {
   Setup setup;
+  setup.limits = limits;
   setup.source = source;
   setup.xml = a.text("--camera");
   setup.model_path = a.text("--model");
@@ -254,46 +257,52 @@ Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor)
 }
 
 int compare_main(int argc, char** argv) {
-  const std::vector<OptionSpec> specs = {
-      {"--model", true, "model, ViSP .cao (both trackers load it)"},
-      {"--camera", true, "ViSP XML: ViSP's loadConfigFile reads it, ours its <camera> and <ecm>"},
-      {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
-      {"--images", true, "printf pattern (seq/frame%04d.pgm) or directory"},
-      {"--first", true, "first frame number"},
-      {"--last", true, "last frame number (inclusive)"},
-      {"--truth", true, "ground truth CSV (edgetrack synth's truth.csv): errors of each tracker"},
-      {"--repeat", true, "run the sequence N times for the timings (default 1); poses from the last run"},
-      {"--csv", true, "write per-frame times, points, lost flags, corner difference and both poses"},
-      {"--downscale", true, "track frames N times smaller (640x480 -> QVGA with 2), both trackers"},
-      {"--help", false, "this text"},
+  const CommandLine line = {
+      "compare",
+      kSynopsis,
+      {
+          {"--model", "FILE", "model, ViSP .cao (both trackers load it)", ""},
+          {"--camera", "FILE", "ViSP XML: ViSP's loadConfigFile reads it, ours its <camera> and <ecm>", ""},
+          {"--init-pose", "FILE", "initial camera_from_model, a ViSP pose file: .pos (6 numbers) or a 4x4 homogeneous matrix", ""},
+          {"--images", "PATTERN|DIR", "printf pattern (seq/frame%04d.pgm) or directory", ""},
+          {"--first", "N", "first frame number (default: 0, or 1 when a pattern has no frame 0)", ""},
+          {"--last", "N", "last frame number, inclusive (default: the last frame)", ""},
+          {"--truth", "FILE|DIR", "ground truth as eval --truth reads it: errors of each tracker", ""},
+          {"--repeat", "N", "run the sequence N times for the timings; poses from the last run", "1"},
+          {"--csv", "FILE", "write per-frame times, points, lost flags, corner difference and both poses", ""},
+          {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2), both trackers", "1"},
+          {"--visp-frame-limit", "SECONDS", "the longest ViSP's tracker may take on one frame before compare stops it", "30"},
+          {"--visp-run-limit", "SECONDS", "the longest ViSP's tracker may take on a whole run before compare stops it",
+           "3600"},
+      },
+      {"--model", "--camera", "--init-pose", "--images"},
+      {},
+      {},
   };
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("compare", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("compare", kSynopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--model") || !a.has("--camera") || !a.has("--init-pose") || !a.has("--images")) {
-    std::fprintf(stderr, "%s", usage("compare", kSynopsis, specs).c_str());
-    return 2;
-  }
-  auto first = a.integer("--first", -1), last = a.integer("--last", -1);
-  auto repeat = a.integer("--repeat", 1), factor = a.integer("--downscale", 1);
-  for (const Error* bad : {&first.error(), &last.error(), &repeat.error(), &factor.error()})
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
+  auto first = a.frame_number("--first"), last = a.frame_number("--last");
+  auto repeat = a.integer("--repeat"), factor = a.integer("--downscale");
+  auto frame_limit = a.number("--visp-frame-limit"), run_limit = a.number("--visp-run-limit");
+  for (const Error* bad : {&first.error(), &last.error(), &repeat.error(), &factor.error(), &frame_limit.error(),
+                           &run_limit.error()})
     if (!bad->message.empty()) return report("compare", *bad) + 1;
+  if (!(frame_limit.value() > 0) || !(run_limit.value() > 0))
+    return report("compare", {"", 0, "--visp-frame-limit and --visp-run-limit must be positive"}) + 1;
   if (repeat.value() < 1) return report("compare", {"", 0, "--repeat must be positive"}) + 1;
   if (factor.value() < 1 || factor.value() > 8) return report("compare", {"", 0, "--downscale must be 1..8"}) + 1;
   SourceOptions source;
   source.images = a.text("--images");
   source.first = first.value();
   source.last = last.value();
-  auto setup = read_setup(a, source, factor.value());
+  auto setup = read_setup(a, source, factor.value(), {frame_limit.value(), run_limit.value()});
   if (!setup.ok()) return report("compare", setup.error());
+  auto worker = find_visp_worker();
+  if (!worker.ok()) return report("compare", worker.error());
   Run ours, visp;
   std::vector<double> ours_ms, visp_ms;
   for (int r = 0; r < repeat.value(); ++r) {
-    auto ran = run_once(setup.value(), EDGETRACK_VISP_WORKER, ours, visp);
+    auto ran = run_once(setup.value(), worker.value(), ours, visp);
     if (!ran.ok()) return report("compare", ran.error());
     for (const PoseRow& row : ours.rows) ours_ms.push_back(row.ms);
     for (const PoseRow& row : visp.rows) visp_ms.push_back(row.ms);

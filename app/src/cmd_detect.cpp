@@ -36,29 +36,25 @@ void print_detection(const edgetrack::Detection& d, double ms) {
 }  // namespace
 
 int detect_main(int argc, char** argv) {
-  const char* synopsis = "--model M --camera C.xml --image I [--out P.pos] [--templates T | range options]";
-  std::vector<OptionSpec> specs = {
-      {"--model", true, "model, .cao or .obj"},
-      {"--camera", true, "ViSP camera XML"},
-      {"--config", true, "a second ViSP XML whose values override those of --camera (the refining tracker's settings)"},
-      {"--image", true, "the image: PGM/PPM, raw RGB565 with --raw-size, or any format OpenCV reads (host)"},
-      {"--raw-size", true, "WIDTHxHEIGHT of a raw RGB565 image"},
-      {"--templates", true, "templates made by `edgetrack templates` for this model and camera"},
-      {"--out", true, "write the pose found as a .pos file"},
-      {"--help", false, "this text"},
+  CommandLine line = {
+      "detect",
+      "--model FILE --camera FILE --image FILE [--out FILE] [--templates FILE | range options]",
+      {
+          {"--model", "FILE", "model, .cao or .obj", ""},
+          {"--camera", "FILE", "ViSP camera XML", ""},
+          {"--config", "FILE", "a second ViSP XML whose values override those of --camera (the refining tracker's settings)", ""},
+          {"--image", "FILE", "the image: PGM/PPM, raw RGB565 with --raw-size, or any format OpenCV reads (host)", ""},
+          {"--raw-size", "WIDTHxHEIGHT", "size of a raw RGB565 image", ""},
+          {"--templates", "FILE", "templates made by `edgetrack templates` for this model and camera", ""},
+          {"--out", "FILE", "write the pose found as a .pos file", ""},
+      },
+      {"--model", "--camera", "--image"},
+      {},
+      {},
   };
-  for (const OptionSpec& spec : template_range_specs()) specs.push_back(spec);
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("detect", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("detect", synopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--model") || !a.has("--camera") || !a.has("--image")) {
-    std::fprintf(stderr, "%s", usage("detect", synopsis, specs).c_str());
-    return 2;
-  }
+  for (const OptionSpec& spec : template_range_specs()) line.options.push_back(spec);
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   int raw_width = 0, raw_height = 0;
   auto raw = a.size("--raw-size", raw_width, raw_height);
   if (!raw.ok()) return report("detect", raw.error()) + 1;

@@ -20,25 +20,21 @@ using edgetrack::Result;
 namespace edgetrack_app {
 
 int edgeid_main(int argc, char** argv) {
-  const char* synopsis = "--model M --camera C.xml [--size WxH] --poses FILE.csv";
-  const std::vector<OptionSpec> specs = {
-      {"--model", true, "model, .cao or .obj"},
-      {"--camera", true, "ViSP camera XML"},
-      {"--size", true, "image size WIDTHxHEIGHT when the XML has none"},
-      {"--poses", true, "poses (edgetrack track) or ground truth (edgetrack synth) CSV"},
-      {"--help", false, "this text"},
+  const CommandLine line = {
+      "edgeid",
+      "--model FILE --camera FILE [--size WIDTHxHEIGHT] --poses FILE",
+      {
+          {"--model", "FILE", "model, .cao or .obj", ""},
+          {"--camera", "FILE", "ViSP camera XML", ""},
+          {"--size", "WIDTHxHEIGHT", "image size when the XML has none", ""},
+          {"--poses", "FILE", "poses (edgetrack track) or ground truth (edgetrack synth) CSV", ""},
+      },
+      {"--model", "--camera", "--poses"},
+      {},
+      {},
   };
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("edgeid", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("edgeid", synopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--model") || !a.has("--camera") || !a.has("--poses")) {
-    std::fprintf(stderr, "%s", usage("edgeid", synopsis, specs).c_str());
-    return 2;
-  }
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   int width = 0, height = 0;
   auto size = a.size("--size", width, height);
   if (!size.ok()) return report("edgeid", size.error()) + 1;

@@ -12,27 +12,25 @@
 namespace edgetrack_app {
 
 int eval_main(int argc, char** argv) {
-  const std::vector<OptionSpec> specs = {
-      {"--poses", true, "tracked poses CSV (edgetrack track --poses)"},
-      {"--truth", true, "ground truth CSV (edgetrack synth writes truth.csv)"},
-      {"--plots", true, "directory for fig4_time_per_frame.png and fig5_camera_position.png"},
-      {"--coverage", false, "evaluate a poses file that covers only part of the truth, and say how much"},
-      {"--help", false, "this text"},
+  const CommandLine line = {
+      "eval",
+      "--poses FILE --truth FILE|DIR [--plots DIR] [--coverage]",
+      {
+          {"--poses", "FILE", "tracked poses CSV (edgetrack track --poses)", ""},
+          {"--truth", "FILE|DIR", "ground truth: a CSV (edgetrack synth writes truth.csv), or a directory of one ViSP pose "
+                                "file per frame, .pos or 4x4 matrix, numbered by name (Camera_001.txt: frame 1)", ""},
+          {"--plots", "DIR", "directory for fig4_time_per_frame.png and fig5_camera_position.png", ""},
+          {"--coverage", "", "evaluate a poses file that covers only part of the truth, and say how much", ""},
+      },
+      {"--poses", "--truth"},
+      {},
+      {},
   };
-  auto args = Args::parse(argc, argv, 1, specs);
-  if (!args.ok()) return report("eval", args.error()) + 1;
-  if (args.value().has("--help")) {
-    std::printf("%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR] [--coverage]", specs).c_str());
-    return 0;
-  }
-  const Args& a = args.value();
-  if (!a.has("--poses") || !a.has("--truth")) {
-    std::fprintf(stderr, "%s", usage("eval", "--poses OUT.csv --truth truth.csv [--plots DIR] [--coverage]", specs).c_str());
-    return 2;
-  }
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   auto poses = read_pose_table(a.text("--poses"), kPosesHeader);
   if (!poses.ok()) return report("eval", poses.error());
-  auto truth = read_pose_table(a.text("--truth"), kTruthHeader);
+  auto truth = read_truth(a.text("--truth"));
   if (!truth.ok()) return report("eval", truth.error());
   auto evaluation = evaluate(poses.value(), truth.value(), a.text("--truth"));
   if (!evaluation.ok()) return report("eval", evaluation.error());

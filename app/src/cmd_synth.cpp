@@ -94,16 +94,16 @@ struct SynthOptions {
 Result<SynthOptions> read_options(const Args& a) {
   SynthOptions o;
   o.out = a.text("--out");
-  o.model_path = a.text("--model", data_dir() + "/models/cube60.cao");
-  o.trajectory = a.text("--trajectory", "paper");
+  o.model_path = a.text("--model");
+  o.trajectory = a.text("--trajectory");
   o.occluder = a.has("--occluder");
   o.reverse = a.has("--reverse");
   o.rgb565 = a.has("--rgb565");
   o.pgm = a.has("--pgm");
   if (o.rgb565 && o.pgm) return Error{"", 0, "--rgb565 and --pgm name two frame formats: give one"};
-  auto frames = a.integer("--frames", 60), supersample = a.integer("--supersample", 4), seed = a.integer("--seed", 1);
-  auto speed = a.number("--speed", 1.0), noise = a.number("--noise", 2.0), blur = a.number("--blur", 0.6);
-  auto cover = a.number("--cover", 0.0), clutter_mm = a.number("--clutter", 0.0);
+  auto frames = a.integer("--frames"), supersample = a.integer("--supersample"), seed = a.integer("--seed");
+  auto speed = a.number("--speed"), noise = a.number("--noise"), blur = a.number("--blur");
+  auto cover = a.number("--cover"), clutter_mm = a.number("--clutter");
   for (const auto* bad : {&frames.error(), &noise.error(), &blur.error(), &supersample.error(), &seed.error(),
                           &speed.error(), &cover.error(), &clutter_mm.error()})
     if (!bad->message.empty()) return *bad;
@@ -228,42 +228,39 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
 }
 
 int synth_main(int argc, char** argv) {
-  const std::string synopsis =
-      "--out DIR [--model M.cao|.obj] [--camera C.xml --size WxH] [--trajectory paper|FILE] [--frames N] "
-      "[--speed K] [--reverse] [--noise S] [--blur S] [--occluder] [--cover SHARE] [--hide FIRST:LAST] [--clutter MM] [--rgb565 | --pgm]";
-  const std::vector<OptionSpec> specs = {
-      {"--out", true, "output directory (frames/, truth.csv, first.pos, camera.xml)"},
-      {"--model", true, "model (default data/models/cube60.cao, the paper's 60 mm cube)"},
-      {"--camera", true, "ViSP camera XML (default: QVGA, px = py = 220, centre 160,120)"},
-      {"--size", true, "image size for --camera, WIDTHxHEIGHT (default 320x240)"},
-      {"--trajectory", true, "paper (default) or a CSV with the header of truth.csv"},
-      {"--frames", true, "number of frames (default 60)"},
-      {"--speed", true, "the same path K times faster: frame k shows trajectory pose K k, interpolated (default 1)"},
-      {"--reverse", false, "the path runs forwards for the first half of the frames and back over the same poses "
-                           "for the rest: the motion reverses at once"},
-      {"--noise", true, "Gaussian noise, grey levels sigma (default 2)"},
-      {"--blur", true, "Gaussian blur, pixels sigma (default 0.6)"},
-      {"--occluder", false, "a dark bar crossing the view in front of the model"},
-      {"--cover", true, "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping across it"},
-      {"--hide", true, "FIRST:LAST: on these frames the board covers the whole object (it leaves the view and comes back)"},
-      {"--clutter", true, "dark lines parallel to every model edge, this many mm beside it, away from the model's centre"},
-      {"--rgb565", false, "write raw RGB565 frames (.rgb565) instead of PPM"},
-      {"--pgm", false, "write 8-bit grey PGM frames (.pgm, the luma of vpImageConvert's rule) instead of PPM"},
-      {"--supersample", true, "samples per pixel along each axis (default 4)"},
-      {"--seed", true, "seed of the backdrop and the noise (default 1)"},
-      {"--help", false, "this text"},
+  const CommandLine line = {
+      "synth",
+      "--out DIR [--model FILE] [--camera FILE --size WIDTHxHEIGHT] [--trajectory paper|FILE] [--frames N] "
+      "[--speed K] [--reverse] [--noise SIGMA] [--blur SIGMA] [--occluder] [--cover SHARE] [--hide FIRST:LAST] "
+      "[--clutter MM] [--rgb565 | --pgm]",
+      {
+          {"--out", "DIR", "output directory (frames/, truth.csv, first.pos, camera.xml)", ""},
+          {"--model", "FILE", "model, .cao or .obj (the default is the paper's 60 mm cube)", data_dir() + "/models/cube60.cao"},
+          {"--camera", "FILE", "ViSP camera XML (default: QVGA, px = py = 220, centre 160,120)", ""},
+          {"--size", "WIDTHxHEIGHT", "image size for --camera (default: 320x240)", ""},
+          {"--trajectory", "paper|FILE", "paper or a CSV with the header of truth.csv", "paper"},
+          {"--frames", "N", "number of frames", "60"},
+          {"--speed", "K", "the same path K times faster: frame k shows trajectory pose K k, interpolated", "1"},
+          {"--reverse", "", "the path runs forwards for the first half of the frames and back over the same poses "
+                            "for the rest: the motion reverses at once", ""},
+          {"--noise", "SIGMA", "Gaussian noise, grey levels sigma", "2"},
+          {"--blur", "SIGMA", "Gaussian blur, pixels sigma", "0.6"},
+          {"--occluder", "", "a dark bar crossing the view in front of the model", ""},
+          {"--cover", "SHARE", "a dark board in front covering this share of the object's image (0.3: 30 %), sweeping "
+                               "across it", "0"},
+          {"--hide", "FIRST:LAST", "on these frames the board covers the whole object (it leaves the view and comes back)", ""},
+          {"--clutter", "MM", "dark lines parallel to every model edge, this many mm beside it, away from the model's centre", "0"},
+          {"--rgb565", "", "write raw RGB565 frames (.rgb565) instead of PPM", ""},
+          {"--pgm", "", "write 8-bit grey PGM frames (.pgm, the luma of vpImageConvert's rule) instead of PPM", ""},
+          {"--supersample", "N", "samples per pixel along each axis", "4"},
+          {"--seed", "N", "seed of the backdrop and the noise", "1"},
+      },
+      {"--out"},
+      {},
+      {},
   };
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("synth", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("synth", synopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--out")) {
-    std::fprintf(stderr, "%s", usage("synth", synopsis, specs).c_str());
-    return 2;
-  }
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   auto options = read_options(a);
   if (!options.ok()) return report("synth", options.error()) + (options.error().file.empty() ? 1 : 0);
   const SynthOptions& o = options.value();

@@ -17,26 +17,22 @@ using edgetrack::Error;
 namespace edgetrack_app {
 
 int templates_main(int argc, char** argv) {
-  const char* synopsis = "--model M --camera C.xml [--size WxH] --out T [range options]";
-  std::vector<OptionSpec> specs = {
-      {"--model", true, "model, .cao or .obj"},
-      {"--camera", true, "ViSP camera XML (with the image size, or give --size)"},
-      {"--size", true, "image size WIDTHxHEIGHT when the XML has none"},
-      {"--out", true, "the template file to write"},
-      {"--help", false, "this text"},
+  CommandLine line = {
+      "templates",
+      "--model FILE --camera FILE [--size WIDTHxHEIGHT] --out FILE [range options]",
+      {
+          {"--model", "FILE", "model, .cao or .obj", ""},
+          {"--camera", "FILE", "ViSP camera XML (with the image size, or give --size)", ""},
+          {"--size", "WIDTHxHEIGHT", "image size when the XML has none", ""},
+          {"--out", "FILE", "the template file to write", ""},
+      },
+      {"--model", "--camera", "--out"},
+      {},
+      {},
   };
-  for (const OptionSpec& spec : template_range_specs()) specs.push_back(spec);
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("templates", parsed.error()) + 1;
-  const Args& a = parsed.value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("templates", synopsis, specs).c_str());
-    return 0;
-  }
-  if (!a.has("--model") || !a.has("--camera") || !a.has("--out")) {
-    std::fprintf(stderr, "%s", usage("templates", synopsis, specs).c_str());
-    return 2;
-  }
+  for (const OptionSpec& spec : template_range_specs()) line.options.push_back(spec);
+  Args a;
+  if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   if (auto empty = check_output_names({{"--out", a.text("--out")}})) return report("templates", *empty) + 1;
   int width = 0, height = 0;
   auto size = a.size("--size", width, height);

@@ -37,9 +37,9 @@ namespace edgetrack_app {
 namespace {
 
 const char* const kSynopsis =
-    "--model M.cao|.obj --camera C.xml (--init-pose P.pos | --init I.init --init-points P.txt | --init-click I.init "
-    "[--save-clicks P.txt] [--save-pose P.pos] | --init-auto [--init-distance MIN:MAX] [--templates T]) [--visibility soft|gl] --images PATTERN|DIR|VIDEO [--first N] [--last N] "
-    "[--poses OUT.csv] [--overlay DIR] [--video OUT.mp4] [--config X.xml]";
+    "--model FILE --camera FILE (--init-pose FILE | --init FILE --init-points FILE | --init-click FILE "
+    "[--save-clicks FILE] [--save-pose FILE] | --init-auto [--init-distance MIN:MAX] [--templates FILE]) "
+    "(--images PATTERN|DIR|VIDEO | --camera-device N) [options]";
 
 /// Per-step totals over a run, for the Table 1 summary.
 struct RunTotals {
@@ -171,69 +171,64 @@ struct TrackOutputs {
   Cone cone;
 };
 
-const std::vector<OptionSpec>& track_options() {
-  static const std::vector<OptionSpec> specs = {
-      {"--model", true, "model, ViSP .cao or Wavefront .obj (metres)"},
-      {"--camera", true, "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)"},
-      {"--init-pose", true, "initial camera_from_model, a ViSP .pos file"},
-      {"--init", true, "ViSP .init file of 3D points, with --init-points: initial pose from points"},
-      {"--init-points", true, "image positions of the .init points, one 'u v' line each (pixels)"},
-      {"--init-click", true, "ViSP .init file whose points are clicked on the first frame in a window (host, display)"},
-      {"--init-auto", false, "no initial pose: detect the model on the first frame and after each lost one"},
-      {"--init-distance", true, "with --init-auto: MIN:MAX camera distances (metres) its templates cover"},
-      {"--templates", true, "with --init-auto: templates made by `edgetrack templates` for this model and camera"},
-      {"--save-clicks", true, "with --init-click: write the clicked positions (an --init-points file)"},
-      {"--save-pose", true, "with --init-click: write the accepted initial pose (a .pos file for --init-pose)"},
-      {"--visibility", true, "Edge-ID renderer: soft (portable, the default) or gl (OSMesa, host)"},
-      {"--images", true, "printf pattern (seq/frame%04d.pgm), directory, or video file (host)"},
-      {"--camera-device", true, "track a live camera (host) instead of --images"},
-      {"--first", true, "first frame number"},
-      {"--last", true, "last frame number (inclusive)"},
-      {"--raw-size", true, "WIDTHxHEIGHT of raw RGB565 frames (.rgb565, .raw)"},
-      {"--downscale", true, "track frames N times smaller (640x480 -> QVGA with 2); the camera, sample step and range follow"},
-      {"--poses", true, "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status)"},
-      {"--overlay", true, "write overlay frames (wireframe and cone) into this directory"},
-      {"--video", true, "write the overlay as a video (host)"},
-      {"--config", true, "a second ViSP XML whose values override those of --camera, element by element"},
-      {"--hypotheses", true, "edge hypotheses per control point, 1 to 4 (default 1): the strongest edge along the "
-                             "normal and the next local maxima; the pose step uses the nearest (docs/ME.md)"},
-      {"--status", true, "NAME=VALUE[,NAME=VALUE...]: status rule settings over the configuration's, named as in its "
-                         "<status> block (docs/APP.md)"},
-      {"--quiet", false, "no progress line"},
-      {"--help", false, "this text"},
+const CommandLine& track_command_line() {
+  static const CommandLine line = {
+      "track",
+      kSynopsis,
+      {
+          {"--model", "FILE", "model, ViSP .cao or Wavefront .obj (metres)", ""},
+          {"--camera", "FILE", "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)", ""},
+          {"--init-pose", "FILE", "initial camera_from_model, a ViSP pose file: .pos (6 numbers) or a 4x4 homogeneous matrix", ""},
+          {"--init", "FILE", "ViSP .init file of 3D points, with --init-points: initial pose from points", ""},
+          {"--init-points", "FILE", "image positions of the .init points, one 'u v' line each (pixels)", ""},
+          {"--init-click", "FILE", "ViSP .init file whose points are clicked on the first frame in a window (host, display)", ""},
+          {"--init-auto", "", "no initial pose: detect the model on the first frame and after each lost one", ""},
+          {"--init-distance", "MIN:MAX", "with --init-auto: camera distances (metres) its templates cover (default: from "
+                                        "the camera and the model's size)", ""},
+          {"--templates", "FILE", "with --init-auto: templates made by `edgetrack templates` for this model and camera", ""},
+          {"--save-clicks", "FILE", "with --init-click: write the clicked positions (an --init-points file)", ""},
+          {"--save-pose", "FILE", "with --init-click: write the accepted initial pose (a .pos file for --init-pose)", ""},
+          {"--visibility", "soft|gl", "Edge-ID renderer: soft (portable) or gl (OSMesa, host)", "soft"},
+          {"--images", "PATTERN|DIR|VIDEO", "printf pattern (seq/frame%04d.pgm), directory, or video file (host)", ""},
+          {"--camera-device", "N", "track a live camera (host) instead of --images", ""},
+          {"--first", "N", "first frame number (default: 0, or 1 when a pattern has no frame 0)", ""},
+          {"--last", "N", "last frame number, inclusive (default: the last frame)", ""},
+          {"--raw-size", "WIDTHxHEIGHT", "size of raw RGB565 frames (.rgb565, .raw)", ""},
+          {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2); the camera, sample step and range follow", "1"},
+          {"--poses", "FILE", "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status)", ""},
+          {"--overlay", "DIR", "write overlay frames (wireframe and cone) into this directory", ""},
+          {"--video", "FILE", "write the overlay as a video (host)", ""},
+          {"--config", "FILE", "a second ViSP XML whose values override those of --camera, element by element", ""},
+          {"--hypotheses", "N", "edge hypotheses per control point, 1 to 4: the strongest edge along the normal and the next "
+                                "local maxima; the pose step uses the nearest (docs/ME.md)",
+           std::to_string(edgetrack::TrackerParams{}.hypotheses)},
+          {"--quiet", "", "no progress line", ""},
+      },
+      {"--model", "--camera"},
+      {{"--init-pose", "--init", "--init-click", "--init-auto"}, {"--images", "--camera-device"}},
+      {{"--init", "--init-points"}, {"--init-points", "--init"}, {"--save-clicks", "--init-click"},
+       {"--save-pose", "--init-click"}, {"--init-distance", "--init-auto"}, {"--templates", "--init-auto"}},
   };
-  return specs;
+  return line;
 }
 
 /// Step 1: the options, checked. Returns the exit status when the run stops here.
 std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
-  const std::vector<OptionSpec>& specs = track_options();
-  auto parsed = Args::parse(argc, argv, 1, specs);
-  if (!parsed.ok()) return report("track", parsed.error()) + 1;
-  const Args& a = request.args = std::move(parsed).value();
-  if (a.has("--help")) {
-    std::printf("%s", usage("track", kSynopsis, specs).c_str());
-    return 0;
-  }
-  request.from_points = a.has("--init") && a.has("--init-points");
+  if (auto stop = parse_command_line(track_command_line(), argc, argv, request.args)) return stop;
+  const Args& a = request.args;
+  request.from_points = a.has("--init");
   request.clicked = a.has("--init-click");
   request.automatic = a.has("--init-auto");
-  const bool saves = a.has("--save-clicks") || a.has("--save-pose");
-  if (!a.has("--model") || !a.has("--camera") || (a.has("--init-pose") + request.from_points + request.clicked + request.automatic != 1) ||
-      (saves && !request.clicked) || (!a.has("--images") && !a.has("--camera-device"))) {
-    std::fprintf(stderr, "%s", usage("track", kSynopsis, specs).c_str());
-    return 2;
-  }
   std::vector<std::pair<std::string, std::string>> outputs;
   for (const char* option : {"--poses", "--video", "--overlay", "--save-clicks", "--save-pose"})
     if (a.has(option)) outputs.emplace_back(option, a.text(option));
   if (auto clash = check_output_names(outputs)) return report("track", *clash) + 1;
   SourceOptions& source = request.source;
   source.images = a.text("--images");
-  auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.integer("--camera-device", -1);
-  auto factor = a.integer("--downscale", 1);
+  auto first = a.frame_number("--first"), last = a.frame_number("--last"), device = a.has("--camera-device") ? a.integer("--camera-device") : Result<int>(-1);
+  auto factor = a.integer("--downscale");
   auto raw = a.size("--raw-size", source.raw_width, source.raw_height);
-  auto hypotheses = a.integer("--hypotheses", edgetrack::TrackerParams{}.hypotheses);
+  auto hypotheses = a.integer("--hypotheses");
   for (const Error* bad :
        {&first.error(), &last.error(), &device.error(), &factor.error(), &raw.error(), &hypotheses.error()})
     if (!bad->message.empty()) return report("track", *bad) + 1;
@@ -325,7 +320,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   in.initial = initial.value();
   if (auto refused = edgetrack::check_start_pose(in.initial))
     return report("track", {init_source(request), 0, "the initial pose " + *refused});
-  auto edge_ids = make_edge_id_source(a.text("--visibility", "soft"), in.camera);
+  auto edge_ids = make_edge_id_source(a.text("--visibility"), in.camera);
   if (!edge_ids.ok()) return report("track", edge_ids.error()) + 1;
   in.edge_ids = std::move(edge_ids).value();
   auto tracker = edgetrack::Tracker::create(in.model, in.camera, in.initial, params);

@@ -41,12 +41,16 @@ Result<bool> view_axis(const std::string& text, TemplateParams& params) {
 }  // namespace
 
 std::vector<OptionSpec> template_range_specs() {
+  const edgetrack::ViewRange views;
   return {
-      {"--distance", true, "MIN:MAX camera distances to the model's centre, metres (default: from the camera and the model's size)"},
-      {"--axis", true, "X,Y,Z the direction (model frame) the view cone is about, from the model towards the camera (default 0,0,1)"},
-      {"--cone", true, "half-angle of the view cone, degrees (default 180: the whole sphere)"},
-      {"--subdivisions", true, "icosahedron subdivisions for the view directions, 0-4 (default 2: 162 directions)"},
-      {"--in-plane", true, "rotations about the optical axis per direction (default 18)"},
+      {"--distance", "MIN:MAX", "camera distances to the model's centre, metres (default: from the camera and the "
+                                "model's size)", ""},
+      {"--axis", "X,Y,Z", "the direction (model frame) the view cone is about, from the model towards the camera",
+       "0,0,1"},
+      {"--cone", "DEGREES", "half-angle of the view cone (180: the whole sphere)", "180"},
+      {"--subdivisions", "N", "icosahedron subdivisions for the view directions, 0-4 (2: 162 directions)",
+       std::to_string(views.subdivisions)},
+      {"--in-plane", "N", "rotations about the optical axis per direction", std::to_string(views.in_plane_steps)},
   };
 }
 
@@ -60,14 +64,14 @@ Result<TemplateParams> template_params_from(const Args& args) {
     auto axis = view_axis(args.text("--axis"), params);
     if (!axis.ok()) return axis.error();
   }
-  auto cone = args.number("--cone", 180);
+  auto cone = args.number("--cone");
   if (!cone.ok()) return cone.error();
   if (cone.value() <= 0 || cone.value() > 180) return Error{"", 0, "--cone must be over 0 and at most 180 degrees"};
   params.views.max_angle = real(cone.value() * 3.141592653589793 / 180);
-  auto subdivisions = args.integer("--subdivisions", params.views.subdivisions);
+  auto subdivisions = args.integer("--subdivisions");
   if (!subdivisions.ok()) return subdivisions.error();
   params.views.subdivisions = subdivisions.value();
-  auto in_plane = args.integer("--in-plane", params.views.in_plane_steps);
+  auto in_plane = args.integer("--in-plane");
   if (!in_plane.ok()) return in_plane.error();
   params.views.in_plane_steps = in_plane.value();
   auto checked = edgetrack::check_template_params(params);

@@ -37,16 +37,6 @@ Result<bool> path_exists(const std::string& path) {
   return found;
 }
 
-/// The number a frame's file name ends with ("image0042.pgm" -> 42), or -1 when its stem does
-/// not end in digits (or in more than 9).
-int number_in_name(const std::string& path) {
-  const std::string stem = std::filesystem::path(path).stem().string();
-  size_t digits = 0;
-  while (digits < stem.size() && std::isdigit(static_cast<unsigned char>(stem[stem.size() - 1 - digits]))) ++digits;
-  if (digits == 0 || digits > 9) return -1;
-  return std::stoi(stem.substr(stem.size() - digits));
-}
-
 /// Where the one integer conversion of a printf pattern is: [begin, end) of "%...d", or begin = npos.
 bool find_conversion(const std::string& pattern, size_t& begin, size_t& end) {
   for (size_t i = 0; i < pattern.size(); ++i) {
@@ -220,6 +210,14 @@ Result<std::unique_ptr<FrameSource>> non_empty(std::unique_ptr<FrameSource> sour
 }
 
 }  // namespace
+
+int number_in_name(const std::string& path) {
+  const std::string stem = std::filesystem::path(path).stem().string();
+  size_t digits = 0;
+  while (digits < stem.size() && std::isdigit(static_cast<unsigned char>(stem[stem.size() - 1 - digits]))) ++digits;
+  if (digits == 0 || digits > 9) return -1;
+  return std::stoi(stem.substr(stem.size() - digits));
+}
 
 std::string expand_pattern(const std::string& pattern, int index) {
   size_t begin = 0, end = 0;

@@ -41,6 +41,10 @@ edgetrack::Result<std::unique_ptr<FrameSource>> open_frame_source(const SourceOp
 /// Reads one image file by its extension: PGM/PPM/PNM and raw RGB565 everywhere, the rest on the host.
 edgetrack::Result<FramePixels> read_frame_file(const std::string& path, int raw_width, int raw_height);
 
+/// The number a file name ends with, before its extension ("image0042.pgm" -> 42, as ViSP
+/// numbers its sequences), or -1 when its stem does not end in digits (or in more than 9).
+int number_in_name(const std::string& path);
+
 /// Expands a printf pattern with one integer conversion (%d, %04d, ...) for `index`.
 std::string expand_pattern(const std::string& pattern, int index);
 

@@ -5,8 +5,13 @@
 #include "edgetrack/input_file.h"
 #include "edgetrack/number_text.h"
 #include "edgetrack/pose_io.h"
+#include "edgetrack/tracking_status.h"
+#include "frame_source.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <map>
 #include <sstream>
 
 using edgetrack::Error;
@@ -40,6 +45,13 @@ const edgetrack::FieldRange kColumns[9] = {
     {"column 9", 0, 1e9}};
 
 std::string partial_path(const std::string& path) { return path + ".partial"; }
+
+/// The status column, spelled as the library's status_name spells it.
+const char* status_of(const PoseRow& row) {
+  return edgetrack::status_name(row.lost        ? edgetrack::TrackingStatus::kLost
+                                : row.uncertain ? edgetrack::TrackingStatus::kUncertain
+                                                : edgetrack::TrackingStatus::kTracked);
+}
 
 }  // namespace
 
@@ -83,8 +95,9 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
       if (!points.ok()) return points.error();
       row.points = static_cast<int>(points.value());
       row.ms = values[8];
-      if (cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
-        return Error{path, number, "status is '" + cells[9] + "', expected ok, uncertain or lost"};
+      // `ok` is how files written before the status took the library's names say `tracked`.
+      if (cells[9] != "tracked" && cells[9] != "ok" && cells[9] != "uncertain" && cells[9] != "lost")
+        return Error{path, number, "status is '" + cells[9] + "', expected tracked, uncertain or lost"};
       row.lost = cells[9] == "lost";
       row.uncertain = cells[9] == "uncertain";
     }
@@ -92,6 +105,48 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
   }
   if (rows.empty()) return Error{path, 0, "no rows after the header"};
   return rows;
+}
+
+namespace {
+
+/// The regular files of `dir` in name order, or an Error naming it.
+Result<std::vector<std::string>> regular_files(const std::string& dir) {
+  std::error_code error;
+  std::vector<std::string> paths;
+  std::filesystem::directory_iterator it(dir, error), end;
+  for (; !error && it != end; it.increment(error)) {
+    std::error_code type_error;
+    if (it->is_regular_file(type_error) && !type_error) paths.push_back(it->path().string());
+  }
+  if (error) return Error{dir, 0, "cannot list the directory: " + error.message()};
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+Result<std::vector<PoseRow>> read_pose_directory(const std::string& dir) {
+  auto paths = regular_files(dir);
+  if (!paths.ok()) return paths.error();
+  std::map<int, PoseRow> by_frame;
+  for (const std::string& path : paths.value()) {
+    const int frame = number_in_name(path);
+    if (frame < 0) return Error{path, 0, "a pose file of a truth directory must end its name with the frame number"};
+    auto pose = edgetrack::read_pos(path);
+    if (!pose.ok()) return pose.error();
+    if (!by_frame.emplace(frame, pose_row(frame, pose.value())).second)
+      return Error{path, 0, "a second pose file for frame " + std::to_string(frame)};
+  }
+  if (by_frame.empty()) return Error{dir, 0, "no pose files in the directory"};
+  std::vector<PoseRow> rows;
+  for (const auto& entry : by_frame) rows.push_back(entry.second);
+  return rows;
+}
+
+}  // namespace
+
+Result<std::vector<PoseRow>> read_truth(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return read_pose_directory(path);
+  return read_pose_table(path, kTruthHeader);
 }
 
 Result<PoseTableWriter> PoseTableWriter::open(const std::string& path, bool with_tracking) {
@@ -116,7 +171,7 @@ void PoseTableWriter::write(const PoseRow& row) {
   int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
                        row.tu[1], row.tu[2]);
   if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms,
-                                           row.lost ? "lost" : row.uncertain ? "uncertain" : "ok");
+                                           status_of(row));
   if (n >= 0) n = std::fprintf(file_, "\n");
   if (n < 0) failed_ = true;
 }

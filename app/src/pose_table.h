@@ -23,13 +23,20 @@ struct PoseRow {
   int points = 0;            ///< poses file only
   double ms = 0;
   bool lost = false;       ///< status `lost`
-  bool uncertain = false;  ///< status `uncertain`; neither: `ok` (the tracker's status tracked)
+  bool uncertain = false;  ///< status `uncertain`; neither: `tracked` (older files: `ok`)
 };
 
 /// Reads a poses or truth file; `header` is the header it must start with (extra columns after
 /// it are not allowed). Frames are whole numbers listed once each in increasing order, and every
 /// value is finite. Errors name the file and the line.
 edgetrack::Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header);
+
+/// The ground truth of a sequence: a truth CSV (kTruthHeader), or a directory of one ViSP pose
+/// file per frame (read_pos: a .pos vector or a 4x4 homogeneous matrix), each numbered by the
+/// number its name ends with (Castle-simu's CameraPose/Camera_001.txt is frame 1). In a
+/// directory every regular file is a pose file; a name without a number, or two with one
+/// number, is an error naming the file.
+edgetrack::Result<std::vector<PoseRow>> read_truth(const std::string& path);
 
 /// Writes rows as they come, into `<path>.partial`; close() renames it to `path`, so a run that
 /// fails or is killed never leaves a partial file under the name of a complete one. Poses files

@@ -25,6 +25,7 @@ DECLARE(test_order_statistic);
 DECLARE(test_xml_document);
 DECLARE(test_template_bounds);
 DECLARE(test_status_statistics);
+DECLARE(test_pose_files);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -50,6 +51,7 @@ void register_tests() {
   REGISTER(test_xml_document);
   REGISTER(test_template_bounds);
   REGISTER(test_status_statistics);
+  REGISTER(test_pose_files);
 }
 
 DEFINE_MAIN

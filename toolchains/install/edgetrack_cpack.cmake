@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `cpack -G DEB` in a build tree: two Debian packages from the install components,
-# edgetrack (component tools: the command line and the models) and libedgetrack-dev
-# (component dev: headers, static libraries, CMake and pkg-config files), for the build's
+# edgetrack (component tools: the command line and the models) and libedgetrack-<real>-dev
+# (component dev: headers, libraries, CMake and pkg-config files), for the build's
 # architecture: the host's (dpkg --print-architecture) or armel from the ARM toolchain.
 if(CMAKE_CROSSCOMPILING)
   # Debian's name for the soft-float ARM EABI the toolchain file targets.
@@ -17,7 +17,7 @@ endif()
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME edgetrack)
 set(CPACK_PACKAGE_VENDOR edgetrack)
-set(CPACK_PACKAGE_CONTACT "edgetrack maintainers <edgetrack@localhost>")
+set(CPACK_PACKAGE_CONTACT ${EDGETRACK_MAINTAINER})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL tools dev)
@@ -26,7 +26,7 @@ set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${EDGETRACK_DEB_ARCHITECTURE})
 
 # Each description's first line is the package's synopsis (no CPACK_PACKAGE_DESCRIPTION_SUMMARY,
 # which CPack would put in front of it).
-set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME edgetrack)
+set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME ${EDGETRACK_TOOLS_PACKAGE})
 set(CPACK_DEBIAN_TOOLS_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_TOOLS_DESCRIPTION
     "edge-based 3D object tracker for processors without an FPU (command line)\n The markerless edge-based tracker of Lima, Teichrieb and Kelner, built with real = ${EDGETRACK_REAL}: synthetic sequences, tracking, evaluation; and its sample models.")
@@ -36,8 +36,11 @@ if(NOT CMAKE_CROSSCOMPILING)
   set(CPACK_DEBIAN_TOOLS_PACKAGE_SHLIBDEPS ON)
 endif()
 
-set(CPACK_DEBIAN_DEV_PACKAGE_NAME libedgetrack-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME ${EDGETRACK_DEV_PACKAGE})
+set(CPACK_DEBIAN_DEV_PACKAGE_PROVIDES ${EDGETRACK_DEV_VIRTUAL_PACKAGE})
+set(CPACK_DEBIAN_DEV_PACKAGE_CONFLICTS ${EDGETRACK_DEV_VIRTUAL_PACKAGE})
+set(CPACK_DEBIAN_DEV_PACKAGE_REPLACES ${EDGETRACK_DEV_VIRTUAL_PACKAGE})
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEV_DESCRIPTION
-    "edge-based 3D object tracker, vnl and ViSP moving-edge ports (development files)\n Headers, static libraries built with real = ${EDGETRACK_REAL}, the CMake package (find_package(edgetrack)) and edgetrack.pc.")
+    "edge-based 3D object tracker, vnl and ViSP moving-edge ports (development files, real = ${EDGETRACK_REAL})\n Headers, libraries built with real = ${EDGETRACK_REAL}, the CMake package (find_package(edgetrack)) and edgetrack.pc.")
 include(CPack)

@@ -43,7 +43,9 @@ file(GLOB edgetrack_port_include_dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR
 foreach(dir IN LISTS edgetrack_port_include_dirs)
   get_filename_component(edgetrack_port_dir ${dir} DIRECTORY)
   get_filename_component(edgetrack_port ${edgetrack_port_dir} NAME)
-  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/${edgetrack_port} COMPONENT dev)
+  # Not the templates CMake fills in (*.in): their filled copies are what a build uses.
+  install(DIRECTORY ${dir}/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/${edgetrack_port} COMPONENT dev
+          PATTERN "*.in" EXCLUDE)
 endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/ports/real/include/ DESTINATION ${EDGETRACK_INSTALL_PORTS_INCLUDEDIR}/real
         COMPONENT dev)
@@ -67,4 +69,8 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/edgetrack.pc.in ${PROJECT_BINARY_DIR}/p
 install(FILES ${PROJECT_BINARY_DIR}/package/edgetrack.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
 
 install(TARGETS edgetrack RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+if(TARGET edgetrack-visp-mbt)
+  install(TARGETS edgetrack-visp-mbt RUNTIME DESTINATION ${EDGETRACK_INSTALL_LIBEXECDIR} COMPONENT tools)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/models DESTINATION ${EDGETRACK_INSTALL_DATADIR} COMPONENT tools)
+include(${CMAKE_CURRENT_LIST_DIR}/edgetrack_package_identity.cmake)

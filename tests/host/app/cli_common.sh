@@ -4,17 +4,40 @@
 
 fail() { echo "FAIL ($name): $*"; exit 1; }
 
+# run_capturing COMMAND...: runs it with its output in $work/stdout and $work/stderr, shows its
+# stderr, and sets $status to its exit status.
+run_capturing() {
+  "$@" >"$work/stdout" 2>"$work/stderr"
+  status=$?
+  cat "$work/stderr"
+}
+
 # expect_error TEXT COMMAND...: non-zero exit, exactly one line on stderr, containing TEXT.
 expect_error() {
-  local text=$1
+  local text=$1 status
   shift
-  "$@" >"$work/stdout" 2>"$work/stderr"
-  local status=$?
-  cat "$work/stderr"
+  run_capturing "$@"
   [ "$status" -ne 0 ] || fail "exit status 0"
   [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "expected one line on stderr"
   grep -qF -- "$text" "$work/stderr" || fail "stderr lacks '$text'"
   echo "ok: exit $status, message names the problem"
+}
+
+# expect_usage_error LINES COMMAND...: exit status 2, nothing on stdout, and stderr opens with
+# LINES (one problem a line, each naming the option) followed by the two-line synopsis only,
+# not the option list of --help.
+expect_usage_error() {
+  local lines=$1 status
+  shift
+  run_capturing "$@"
+  [ "$status" -eq 2 ] || fail "exit status $status, expected 2"
+  [ ! -s "$work/stdout" ] || fail "output on stdout"
+  local count
+  count=$(printf '%s\n' "$lines" | wc -l)
+  [ "$(head -n "$count" "$work/stderr")" = "$lines" ] || fail "stderr does not open with: $lines"
+  [ "$(wc -l <"$work/stderr")" -eq $((count + 2)) ] || fail "expected the problems and the two-line synopsis only"
+  sed -n "$((count + 1))p" "$work/stderr" | grep -q "^usage: edgetrack " || fail "no synopsis after the problems"
+  echo "ok: exit 2, each problem named before the synopsis"
 }
 
 # less A B: A < B as numbers.

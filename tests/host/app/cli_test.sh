@@ -104,7 +104,7 @@ case $name in
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$work/empty/frame%04d.pgm" ;;
   error_bad_truth_header)
-    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.15,0,0,0,50,1.0,ok\n' >"$work/poses.csv"
+    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.15,0,0,0,50,1.0,tracked\n' >"$work/poses.csv"
     printf 'frame,x,y,z\n0,0,0,0.15\n' >"$work/truth.csv"
     expect_error "$work/truth.csv:1: header is 'frame,x,y,z'" \
       "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth.csv" ;;
@@ -112,6 +112,68 @@ case $name in
     expect_error "option --last needs an integer, not 'ten'" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --last ten ;;
+  error_missing_options_named)
+    expect_usage_error "edgetrack track: --camera is required" \
+      "$edgetrack" track --model "$mbt/cube.cao" --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: one of --init-pose, --init, --init-click or --init-auto is required" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --init needs --init-points" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init "$mbt/cube.init" \
+      --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --init-pose and --init-auto cannot be given together: give one" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" --init-auto \
+      --images "$mbt/cube/image%04d.pgm"
+    expect_usage_error "edgetrack track: --save-pose needs --init-click" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --save-pose "$work/p.pos"
+    expect_usage_error "$(printf 'edgetrack track: --model is required\nedgetrack track: --camera is required\nedgetrack track: one of --init-pose, --init, --init-click or --init-auto is required\nedgetrack track: one of --images or --camera-device is required')" \
+      "$edgetrack" track
+    expect_usage_error "edgetrack eval: --truth is required" "$edgetrack" eval --poses "$work/poses.csv"
+    expect_usage_error "edgetrack detect: --image is required" \
+      "$edgetrack" detect --model "$mbt/cube.cao" --camera "$mbt/cube.xml"
+    expect_usage_error "edgetrack templates: --out is required" \
+      "$edgetrack" templates --model "$mbt/cube.cao" --camera "$mbt/cube.xml" ;;
+  castle_simu_matrix_poses)
+    # ViSP's Castle-simu: initialised from its first 4x4 camera pose file, evaluated against the
+    # directory of them (Camera_001.txt ... Camera_040.txt are frames 1-40, as Image_0001.pgm ...).
+    castle=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+    "$edgetrack" track --model "$castle/Models/chateau.cao" --camera "$castle/Config/chateau.xml" \
+      --init-pose "$castle/CameraPose/Camera_001.txt" --images "$castle/Images" --quiet --poses "$work/poses.csv" \
+      >/dev/null || fail "track failed"
+    "$edgetrack" eval --poses "$work/poses.csv" --truth "$castle/CameraPose" >"$work/eval.txt" || fail "eval failed"
+    cat "$work/eval.txt"
+    [ "$(field frames)" = 40 ] && [ "$(field lost)" = 0 ] || fail "expected 40 frames, none lost"
+    [ "$(head -n 2 "$work/poses.csv" | tail -n 1 | cut -d, -f1)" = 1 ] || fail "the first frame is not frame 1"
+    less "$(field distance_mm)" 3 || fail "mean distance to the truth not under 3 mm" ;;
+  error_bad_pose_matrix)
+    printf '1 0 0 0\n0 0.9 0 0\n0 0 1 0.5\n0 0 0 1\n' >"$work/stretched.txt"
+    expect_error "$work/stretched.txt:1: the upper-left 3x3 is not a rotation" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$work/stretched.txt" \
+      --images "$mbt/cube/image%04d.pgm"
+    mkdir -p "$work/truth"
+    printf '1 0 0 0\n0 1 0 0\n0 0 1 0.5\n0 0 0 1\n' >"$work/truth/Camera_000.txt"
+    printf '1 0 0 0\n0 1 0 0\n0 0 1 nan\n0 0 0 1\n' >"$work/truth/Camera_001.txt"
+    printf 'frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n0,0,0,0.5,0,0,0,50,1.0,tracked\n' >"$work/poses.csv"
+    expect_error "$work/truth/Camera_001.txt:3: tz (m) is not a finite number" \
+      "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth"
+    printf '0 0 0.5 0 0 0\n' >"$work/truth/notes.txt"
+    rm "$work/truth/Camera_001.txt"
+    expect_error "$work/truth/notes.txt: a pose file of a truth directory must end its name with the frame number" \
+      "$edgetrack" eval --poses "$work/poses.csv" --truth "$work/truth" ;;
+  help_says_what_options_take)
+    # Every option that takes a value says what (no bare V), and the defaults are shown.
+    for command in track eval detect templates; do
+      "$edgetrack" $command --help >"$work/$command.txt" 2>"$work/stderr" || fail "$command --help failed"
+      [ ! -s "$work/stderr" ] || fail "$command --help wrote to stderr"
+      ! grep -qE '^  --[a-z-]+ V ' "$work/$command.txt" || fail "$command --help has a V placeholder"
+    done
+    cat "$work/track.txt"
+    for line in "--first N .*(default: 0, or 1 when a pattern has no frame 0)" "--downscale N .*(default: 1)$" \
+                "--init-distance MIN:MAX .*(default: from the camera and the model's size)" "--hypotheses N .*(default: 1)$" \
+                "--visibility soft|gl .*(default: soft)$" "--images PATTERN|DIR|VIDEO " "--overlay DIR " "--model FILE "; do
+      grep -qE -- "^  $(sed 's/[|()]/\\&/g' <<<"$line")" "$work/track.txt" || fail "track --help lacks '$line'"
+    done
+    grep -qE -- "^  --in-plane N .*\(default: 18\)$" "$work/templates.txt" || fail "templates --help lacks the --in-plane default" ;;
   mbt_cube_40_frames_640x480)
     track_cube --init-pose "$mbt/cube.0.pos" --poses "$work/poses.csv" || fail "track failed"
     check_poses "$work/poses.csv" 40 40 ;;

@@ -75,5 +75,8 @@ case $name in
   error_compare_missing_model)
     expect_error "missing.cao" "$edgetrack" compare --model "$work/missing.cao" --camera "$mbt/cube.xml" \
       --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm" ;;
+  error_compare_missing_init_pose)
+    expect_usage_error "edgetrack compare: --init-pose is required" \
+      "$edgetrack" compare --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm" ;;
   *) fail "unknown case" ;;
 esac

@@ -141,13 +141,13 @@ case $name in
       >"$work/track.txt" 2>"$work/track.err" || fail "track --init-auto failed"
     grep -h " detection: \|^detection:" "$work/track.err" "$work/track.txt"
     statuses=$(awk -F, 'NR > 1 { printf "%s", substr($10, 1, 1) }' "$work/auto.csv")
-    echo "statuses (o tracked, u uncertain, l lost): $statuses"
+    echo "statuses (t tracked, u uncertain, l lost): $statuses"
     [ "${#statuses}" -eq 20 ] || fail "expected 20 frames"
     [ -z "$(echo "${statuses:6:4}" | tr -d lu)" ] || fail "a covered frame is reported tracked"
     grep -Eq "^frame 1[0-2] detection: found" "$work/track.err" || fail "not re-detected within 3 frames of the return"
-    back=$(awk -v s="${statuses:10}" 'BEGIN { print index(s, "o") - 1 }')
+    back=$(awk -v s="${statuses:10}" 'BEGIN { print index(s, "t") - 1 }')
     [ "$back" -ge 0 ] && [ "$back" -le 2 ] || fail "not tracked again within 3 frames of the return"
-    awk -F, -v first=$((10 + back)) 'NR == 1 || ($1 >= first && $10 == "ok")' "$work/auto.csv" | cut -d, -f1-7 >"$work/back.csv"
+    awk -F, -v first=$((10 + back)) 'NR == 1 || ($1 >= first && $10 == "tracked")' "$work/auto.csv" | cut -d, -f1-7 >"$work/back.csv"
     awk -F, 'NR == FNR { keep[$1] = 1; next } FNR == 1 || keep[$1]' "$work/back.csv" "$work/seq/truth.csv" >"$work/truth.csv"
     read -r worst mean < <(centre_offsets "$work/back.csv" "$work/truth.csv" "0 0 0")
     echo "tracked again $back frames after the return; centre from then on: largest $worst mm, mean $mean mm"
@@ -165,8 +165,8 @@ case $name in
     grep -h " detection: \|^detection:" "$work/track.err" "$work/track.txt"
     grep -q "^frame 0 detection: found" "$work/track.err" || fail "the cube is not found on frame 0"
     statuses=$(awk -F, 'NR > 1 { printf "%s", substr($10, 1, 1) }' "$work/auto.csv")
-    echo "statuses (o tracked, u uncertain, l lost): $statuses"
-    [ "$statuses" = "u$(printf 'o%.0s' $(seq 29))" ] || fail "expected frame 0 uncertain and frames 1-29 tracked"
+    echo "statuses (t tracked, u uncertain, l lost): $statuses"
+    [ "$statuses" = "u$(printf 't%.0s' $(seq 29))" ] || fail "expected frame 0 uncertain and frames 1-29 tracked"
     read -r worst mean < <(centre_offsets "$work/auto.csv" "$work/pos.csv" "-0.042 0.042 0.042")
     echo "cube centre against the run from cube.0.pos: largest $worst mm, mean $mean mm"
     less "$mean" 1.0 || fail "the centre is 1 mm or more from the run from cube.0.pos on average"

@@ -80,7 +80,7 @@ case $name in
       --video "$work/no/such/dir/x.mp4" ;;
   eval_refuses_bad_tables)
     printf '%s\n0,0,0,0.15,0,0,0\n1,0,0,0.15,0,0,0\n2,0,0,0.15,0,0,0\n' "$truth_header" >"$work/truth.csv"
-    row() { echo "$1,0,0,0.15,$2,0,0,50,1.0,ok"; }
+    row() { echo "$1,0,0,0.15,$2,0,0,50,1.0,tracked"; }
     { echo "$poses_header"; row 0.5 0; } >"$work/fraction.csv"
     expect_error "$work/fraction.csv:2: frame is not a whole number" "$edgetrack" eval --poses "$work/fraction.csv" --truth "$work/truth.csv"
     { echo "$poses_header"; row 0 0; row 0 0; } >"$work/twice.csv"

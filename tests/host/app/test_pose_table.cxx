@@ -39,6 +39,9 @@ static void test_pose_table() {
   std::string header;
   std::getline(in, header);
   TEST("the header is exactly the documented one", header, std::string("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status"));
+  std::string statuses;
+  for (std::string line; std::getline(in, line);) statuses += line.substr(line.rfind(',') + 1) + " ";
+  TEST("the status is spelled as the library's status_name spells it", statuses, std::string("tracked lost uncertain "));
   auto rows = read_pose_table(path, kPosesHeader);
   TEST("the poses file reads back", rows.ok(), true);
   if (rows.ok()) {
@@ -49,10 +52,25 @@ static void test_pose_table() {
     TEST_NEAR("tz in metres (to the resolution of real)", rows.value()[0].t[2], 0.15, write_tolerance);
     TEST_NEAR("thetaU x in radians", rows.value()[0].tu[0], 0.5, write_tolerance);
     TEST_EQUAL("points", rows.value()[0].points, 61);
-    TEST("status ok", rows.value()[0].lost, false);
+    TEST("status tracked", rows.value()[0].lost || rows.value()[0].uncertain, false);
     TEST("status lost", rows.value()[1].lost, true);
     TEST("status uncertain", rows.value()[2].uncertain && !rows.value()[2].lost, true);
   }
+  {
+    std::ofstream older(std::string(APP_TEST_TMP) + "/older.csv");
+    older << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,ok\n1,0,0,0.15,0,0,0,50,1.0,tracked\n";
+  }
+  auto older = read_pose_table(std::string(APP_TEST_TMP) + "/older.csv", kPosesHeader);
+  TEST("a file of an older edgetrack, whose status says ok for tracked, reads", older.ok(), true);
+  if (older.ok()) TEST("ok is read as tracked", older.value()[0].lost || older.value()[0].uncertain, false);
+  {
+    std::ofstream unknown(std::string(APP_TEST_TMP) + "/unknown_status.csv");
+    unknown << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,fine\n";
+  }
+  auto unknown = read_pose_table(std::string(APP_TEST_TMP) + "/unknown_status.csv", kPosesHeader);
+  TEST("an unknown status is refused", unknown.ok(), false);
+  TEST("the refusal names the status the file may hold",
+       unknown.error().message.find("expected tracked, uncertain or lost") != std::string::npos, true);
   auto as_truth = read_pose_table(path, kTruthHeader);
   TEST("a poses file is not a truth file", as_truth.ok(), false);
   TEST("the header error is at line 1", as_truth.error().line, 1);
