@@ -202,6 +202,8 @@ const CommandLine& track_command_line() {
           {"--hypotheses", "N", "edge hypotheses per control point, 1 to 4: the strongest edge along the normal and the next "
                                 "local maxima; the pose step uses the nearest (docs/ME.md)",
            std::to_string(edgetrack::TrackerParams{}.hypotheses)},
+          {"--status", "NAME=VALUE[,NAME=VALUE...]",
+           "status rule settings over the configuration's, named as in its <status> block (docs/APP.md)", ""},
           {"--quiet", "", "no progress line", ""},
       },
       {"--model", "--camera"},

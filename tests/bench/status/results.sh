@@ -21,7 +21,7 @@ helper=$dir/tests/bench/detection/detection_sequence
 
 # counts POSES.csv: "tracked uncertain lost" of a poses file.
 counts() {
-  awk -F, 'NR > 1 { n[$10]++ } END { printf "%d %d %d\n", n["ok"], n["uncertain"], n["lost"] }' "$1"
+  awk -F, 'NR > 1 { n[$10]++ } END { printf "%d %d %d\n", n["tracked"], n["uncertain"], n["lost"] }' "$1"
 }
 
 # truth_counts MODEL POSES.csv TRUTH.csv [--cube]: "wrong alarms", from the helper's per-frame
@@ -30,12 +30,12 @@ counts() {
 truth_counts() {
   local model=$1 poses=$2 truth=$3
   shift 3
-  awk -F, -v OFS=, 'NR > 1 { $10 = "ok" } { print }' "$poses" >"$work/every_frame.csv"
+  awk -F, -v OFS=, 'NR > 1 { $10 = "tracked" } { print }' "$poses" >"$work/every_frame.csv"
   "$helper" score "$model" "$work/every_frame.csv" "$truth" "$@" --each | awk -v poses="$poses" '
     BEGIN { FS = ","; while ((getline line < poses) > 0) if (n++ > 0) { split(line, f, ","); status[f[1]] = f[10] } FS = " " }
     /^frame / { k = $2 + 0; mm = $3; deg = $5
-                if (status[k] == "ok" && (mm > 5 || deg > 5)) wrong++
-                if (status[k] != "ok" && mm <= 2 && deg <= 2) alarms++ }
+                if (status[k] == "tracked" && (mm > 5 || deg > 5)) wrong++
+                if (status[k] != "tracked" && mm <= 2 && deg <= 2) alarms++ }
     END { printf "%d %d\n", wrong, alarms }'
 }
 

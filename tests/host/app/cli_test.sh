@@ -302,7 +302,7 @@ case $name in
       "$edgetrack" track --model "$castel/chateau.cao" --camera "$castel/chateau.xml" --init-pose "$castel/chateau.0.pos" \
         --images "$castel/castel/image_%04d.pgm" --quiet "$@"
     }
-    not_tracked() { awk -F, 'NR > 1 && $10 != "ok"' "$1" | wc -l; }
+    not_tracked() { awk -F, 'NR > 1 && $10 != "tracked"' "$1" | wc -l; }
     track_castel --poses "$work/learned.csv" || fail "track failed"
     track_castel --poses "$work/fixed.csv" --status learn_frames=0 || fail "track --status failed"
     printf '<conf><edgetrack><status><learn_frames>0</learn_frames></status></edgetrack></conf>\n' >"$work/fixed.xml"
@@ -318,7 +318,7 @@ case $name in
     for scale in 1 2; do
       track_cube --init-pose "$mbt/cube.0.pos" --last 217 --downscale $scale --poses "$work/poses$scale.csv" ||
         fail "track failed"
-      others=$(awk -F, 'NR > 1 && $10 != "ok"' "$work/poses$scale.csv" | wc -l)
+      others=$(awk -F, 'NR > 1 && $10 != "tracked"' "$work/poses$scale.csv" | wc -l)
       echo "downscale $scale: $others of 218 frames not tracked"
       [ "$others" -eq 0 ] || fail "frames not tracked at downscale $scale"
     done ;;

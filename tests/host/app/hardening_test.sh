@@ -149,10 +149,10 @@ case $name in
       --camera "$mbt/cube.xml" --image "$work/one.pgm"
     expect_error "puts the camera inside the model" timeout 20 "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$mbt/cube.xml" --size 640x480 --distance 1e-300:100 --out "$work/t.txt"
-    expect_error "more than the 60000 a template file holds" timeout 20 "$edgetrack" templates --model "$mbt/cube.cao" \
+    expect_error "more than the 74560 a template file holds" timeout 20 "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$mbt/cube.xml" --size 640x480 --subdivisions 4 --in-plane 360 --out "$work/t.txt"
     printf '<conf><camera><px>1e308</px></camera></conf>\n' >"$work/px.xml"
-    expect_error "$work/px.xml:1: <camera><px> must be in (0, 1000000]" "$edgetrack" templates --model "$mbt/cube.cao" \
+    expect_error "$work/px.xml:1: <camera><px>: the camera's px must be in (0, 1e+06]" "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$work/px.xml" --size 640x480 --out "$work/t.txt"
     printf '<conf><camera><px>600</px><width>100000</width><height>10</height></camera></conf>\n' >"$work/wide.xml"
     expect_error "$work/wide.xml:1: <camera><width> must be 1..16384" "$edgetrack" templates --model "$mbt/cube.cao" \

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "edgetrack/edge_model.h"
+#include "edgetrack/input_file.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
@@ -56,11 +57,14 @@ void span_distances(const PinholeCamera& camera, const ModelExtent& extent, cons
 /// sphere spans 80 % and 40 % of the image's shorter side.
 std::vector<real> view_distances(const ViewRange& range, const PinholeCamera& camera, const ModelExtent& extent);
 
+/// The most bytes one template takes in a template file: at most 63 features.
+constexpr long long kMaxTemplateFileLineBytes = 900;
 /// The most views a template range may ask for (distances x directions x in-plane steps): each
-/// gives at most one template of at most 63 features, under 900 bytes in a template file, so the
-/// largest file `templates` writes stays within what `detect --templates` reads
-/// (kMaxTextFileBytes, 64 MiB).
-constexpr long long kMaxTemplateViews = 60000;
+/// gives at most one template, so the largest file `templates` writes stays within what
+/// `detect --templates` reads (kMaxTextFileBytes, 64 MiB, less 4 KiB for the header): 74560,
+/// above the 72900 of the default range `--init-auto` derives from the camera and the model.
+constexpr long long kMaxTemplateViews =
+    (static_cast<long long>(kMaxTextFileBytes) - 4096) / kMaxTemplateFileLineBytes;
 /// The model's image (its bounding sphere's diameter) at the farthest distance, at least.
 constexpr int kMinModelPixels = 16;
 
