@@ -8,6 +8,8 @@
 #include <ostream>
 #include <string>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr std::uint64_t kNaBits = 0x7FF00000000007A2ULL;   // R's NA: a NaN with payload 1954
 constexpr std::uint32_t kNaBitsF = 0x7F8007A2U;           // the same payload in a float
@@ -87,3 +89,5 @@ std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t& na) {
   vnl_na_insert(os, na.x);
   return os;
 }
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,10 @@
 /// Mirrors VXL's core/testlib/testlib_root_dir.h: where a test finds the source tree's files.
 #pragma once
 
+#ifdef testlib_root_dir_h_
+#error "edgetrack's drop-in testlib/testlib_root_dir.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <string>
 
 #define TEST_STR(x) #x
@@ -9,4 +13,8 @@
 
 /// The source tree's root: $VXLSRC, else $VCLSRC, else $VXL_SRC (upstream's order), else the
 /// directory CMake configured (vcl_where_root_dir.h).
+inline namespace edgetrack_ports {
+
 std::string testlib_root_dir();
+
+}  // inline namespace edgetrack_ports

@@ -6,11 +6,17 @@
 /// (GF(N^M) when that one is irreducible and N prime).
 #pragma once
 
+#ifdef vnl_finite_h_
+#error "edgetrack's drop-in vnl/vnl_finite.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cstddef>
 #include <ostream>
 #include <utility>
 #include <vector>
+
+inline namespace edgetrack_ports {
 
 template <int N>
 class vnl_finite_int {
@@ -371,3 +377,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_finite_int_poly<N, M>& r) {
   if (!any) s << '0';
   return s;
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,9 +6,15 @@
 /// double at run time.
 #pragma once
 
+#ifdef vnl_math_h_
+#error "edgetrack's drop-in vnl/vnl_math.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <complex>
 #include <type_traits>
+
+inline namespace edgetrack_ports {
 
 namespace vnl_math {
 
@@ -216,3 +222,5 @@ template <class T>
 T vnl_math_hypot(const T& a, const T& b) {
   return vnl_math::hypot(a, b);
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,10 @@
 /// vnl_matrix.hxx defines them, instances/ instantiates them per scalar.
 #pragma once
 
+#ifdef vnl_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <initializer_list>
 #include <iosfwd>
@@ -12,6 +16,8 @@
 
 #include "vnl/vnl_numeric_traits.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_matrix_ref;
@@ -255,3 +261,5 @@ template <class T>
 std::ostream& operator<<(std::ostream& s, const vnl_matrix<T>& m);
 template <class T>
 std::istream& operator>>(std::istream& s, vnl_matrix<T>& m);
+
+}  // inline namespace edgetrack_ports

@@ -18,6 +18,8 @@
 #include "vnl/vnl_matrix_ref.h"
 #include "vnl/vnl_vector.hxx"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 void vnl_matrix<T>::make_row_pointers() {
   delete[] row_pointers_;
@@ -800,3 +802,5 @@ std::istream& operator>>(std::istream& s, vnl_matrix<T>& m) {
   template T cos_angle(const vnl_matrix<T>&, const vnl_matrix<T>&);                   \
   template std::ostream& operator<<(std::ostream&, const vnl_matrix<T>&);             \
   template std::istream& operator>>(std::istream&, vnl_matrix<T>&)
+
+}  // inline namespace edgetrack_ports

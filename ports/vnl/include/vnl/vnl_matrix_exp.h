@@ -4,9 +4,15 @@
 /// norm, is below max_err (upstream's criterion). Works for vnl_matrix and vnl_matrix_fixed.
 #pragma once
 
+#ifdef vnl_matrix_exp_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_exp.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 /// expX = exp(X) to within max_err; returns true.
+inline namespace edgetrack_ports {
+
 template <class SquareMatrix>
 bool vnl_matrix_exp(const SquareMatrix& X, SquareMatrix& expX, double max_err) {
   assert(X.rows() == X.cols() && max_err > 0);
@@ -32,3 +38,5 @@ SquareMatrix vnl_matrix_exp(const SquareMatrix& X) {
   vnl_matrix_exp(X, result, 1e-10);
   return result;
 }
+
+}  // inline namespace edgetrack_ports

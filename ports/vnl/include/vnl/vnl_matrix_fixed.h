@@ -3,12 +3,18 @@
 /// with vnl_matrix's names, and its products with vnl_vector_fixed. Header-only.
 #pragma once
 
+#ifdef vnl_matrix_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int num_rows, unsigned int num_cols>
 class vnl_matrix_fixed {
@@ -285,3 +291,5 @@ vnl_matrix_fixed<T, r, c> outer_product(const vnl_vector_fixed<T, r>& a, const v
 }
 
 using vnl_double_3x3 = vnl_matrix_fixed<double, 3, 3>;
+
+}  // inline namespace edgetrack_ports

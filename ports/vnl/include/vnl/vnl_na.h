@@ -4,9 +4,15 @@
 /// ("NA").
 #pragma once
 
+#ifdef vnl_na_h_
+#error "edgetrack's drop-in vnl/vnl_na.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 /// The NA value of the argument's type (the argument only picks the type).
+inline namespace edgetrack_ports {
+
 double vnl_na(double dummy);
 float vnl_na(float dummy);
 /// True for NA only, not for other NaNs.
@@ -32,3 +38,5 @@ inline vnl_na_stream_t vnl_na_stream(double& x) { return {&x}; }
 inline vnl_na_stream_const_t vnl_na_stream(const double& x) { return {x}; }
 std::istream& operator>>(std::istream& is, const vnl_na_stream_t& na);
 std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t& na);
+
+}  // inline namespace edgetrack_ports

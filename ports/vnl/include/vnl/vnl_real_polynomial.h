@@ -3,10 +3,16 @@
 /// as upstream stores them, highest power first: a[0] x^d + a[1] x^(d-1) + ... + a[d].
 #pragma once
 
+#ifdef vnl_real_polynomial_h_
+#error "edgetrack's drop-in vnl/vnl_real_polynomial.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <iosfwd>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_real_polynomial {
  public:
@@ -64,3 +70,5 @@ vnl_real_polynomial operator*(const vnl_real_polynomial& f, double s);
 /// sqrt of the mean of (f2 - f1)^2 over [x1, x2] (0 when x1 == x2).
 double vnl_rms_difference(const vnl_real_polynomial& f1, const vnl_real_polynomial& f2, double x1, double x2);
 std::ostream& operator<<(std::ostream& os, const vnl_real_polynomial& p);
+
+}  // inline namespace edgetrack_ports

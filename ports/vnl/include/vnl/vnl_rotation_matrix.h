@@ -10,11 +10,17 @@
 /// right-hand rule); R = exp([w]x) rotates column vectors, p' = R * p.
 #pragma once
 
+#ifdef vnl_rotation_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_rotation_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
 
 /// The coefficients of exp([w]x) = I + a [w]x + b [w]x^2 and of the translation part of the
 /// SE(3) exponential, V = I + b [w]x + c [w]x^2, for angle theta = |w|.
+inline namespace edgetrack_ports {
+
 template <class T>
 struct vnl_rotation_coefficients {
   T theta;  ///< |w|, computed without squaring underflow
@@ -45,3 +51,5 @@ vnl_matrix_fixed<T, 3, 3> vnl_rotation_matrix(const vnl_vector_fixed<T, 3>& w);
 /// from the symmetric part of R, so it stays accurate there too.
 template <class T>
 vnl_vector_fixed<T, 3> vnl_rotation_thetau(const vnl_matrix_fixed<T, 3, 3>& R);
+
+}  // inline namespace edgetrack_ports

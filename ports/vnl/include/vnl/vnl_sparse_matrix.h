@@ -5,12 +5,18 @@
 /// transposes and upstream's row iteration (reset / next / getrow / getcolumn / value).
 #pragma once
 
+#ifdef vnl_sparse_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_sparse_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <vector>
 
 #include "vnl/vnl_vector.h"
 
 /// One stored element: `first` is its column, `second` its value.
+inline namespace edgetrack_ports {
+
 template <class T>
 class vnl_sparse_matrix_pair {
  public:
@@ -120,3 +126,5 @@ template <class T>
 vnl_sparse_matrix<T> operator*(const T& value, const vnl_sparse_matrix<T>& m) {
   return m * value;
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_sparse_matrix.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 T& vnl_sparse_matrix<T>::operator()(unsigned int r, unsigned int c) {
   assert(r < rs_ && c < cs_);
@@ -317,3 +319,5 @@ T vnl_sparse_matrix<T>::value() const {
 }
 
 #define VNL_SPARSE_MATRIX_INSTANTIATE(T) template class vnl_sparse_matrix<T>
+
+}  // inline namespace edgetrack_ports

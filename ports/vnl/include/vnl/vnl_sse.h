@@ -6,6 +6,10 @@
 /// same results; VNL_CONFIG_ENABLE_SSE2 is 0.
 #pragma once
 
+#ifdef vnl_sse_h_
+#error "edgetrack's drop-in vnl/vnl_sse.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 
 #include "vnl/vnl_alloc.h"
@@ -20,6 +24,8 @@
 
 /// n elements of `size` bytes (at least 8 bytes when n is 0); operator new aligns for every
 /// scalar type, which is all the portable kernels need.
+inline namespace edgetrack_ports {
+
 VNL_SSE_FORCE_INLINE void* vnl_sse_alloc(std::size_t n, unsigned size) {
   return vnl_alloc::allocate(n == 0 ? 8 : n * size);
 }
@@ -91,3 +97,5 @@ class vnl_sse {
     return best;
   }
 };
+
+}  // inline namespace edgetrack_ports

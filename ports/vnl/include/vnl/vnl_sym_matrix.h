@@ -4,6 +4,10 @@
 /// operator[](i) is row i's i + 1 stored values. Header-only.
 #pragma once
 
+#ifdef vnl_sym_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_sym_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <cassert>
 #include <ostream>
@@ -12,6 +16,8 @@
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_sym_matrix {
@@ -149,3 +155,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_sym_matrix<T>& m) {
   }
   return s;
 }
+
+}  // inline namespace edgetrack_ports

@@ -19,6 +19,8 @@
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_ref.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_detail {
 /// Writes one element as upstream prints it; fixed point prints as a double (I/O only).
 template <class T>
@@ -614,3 +616,5 @@ std::istream& operator>>(std::istream& s, vnl_vector<T>& v) {
   template vnl_numeric_traits<T>::abs_t vnl_vector_ssd(const vnl_vector<T>&, const vnl_vector<T>&);    \
   template std::ostream& operator<<(std::ostream&, const vnl_vector<T>&);                              \
   template std::istream& operator>>(std::istream&, vnl_vector<T>&)
+
+}  // inline namespace edgetrack_ports

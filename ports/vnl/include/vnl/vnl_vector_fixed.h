@@ -3,12 +3,18 @@
 /// vnl_vector's names. Header-only: every size is instantiated where it is used.
 #pragma once
 
+#ifdef vnl_vector_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_vector_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int n>
 class vnl_vector_fixed {
@@ -216,3 +222,5 @@ vnl_vector_fixed<T, 3> vnl_cross_3d(const vnl_vector_fixed<T, 3>& a, const vnl_v
 using vnl_double_2 = vnl_vector_fixed<double, 2>;
 using vnl_double_3 = vnl_vector_fixed<double, 3>;
 using vnl_double_4 = vnl_vector_fixed<double, 4>;
+
+}  // inline namespace edgetrack_ports

@@ -8,6 +8,8 @@
 #include "vnl/vnl_matrix.h"
 
 /// f along the line origin + lambda * direction, as a cost of one unknown.
+inline namespace edgetrack_ports {
+
 class vnl_powell_1dfun : public vnl_cost_function {
  public:
   vnl_powell_1dfun(unsigned n, vnl_cost_function* f, vnl_powell* powell)
@@ -83,3 +85,5 @@ vnl_nonlinear_minimizer::ReturnCodes vnl_powell::minimize(vnl_vector<double>& p)
   }
   return TOO_MANY_ITERATIONS;
 }
+
+}  // inline namespace edgetrack_ports
