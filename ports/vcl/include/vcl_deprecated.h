@@ -10,9 +10,9 @@
 
 #include "vcl_compiler.h"
 
-/// Prints "deprecated function <name> called" on stderr.
 inline namespace edgetrack_ports {
 
+/// Prints "deprecated function <name> called" on stderr.
 void vcl_deprecated_warn(const char* func_name);
 /// Prints the same line, then calls vcl_abort.
 void vcl_deprecated_abort(const char* func_name);

@@ -80,14 +80,4 @@ void vnl_na_insert(std::ostream& os, float x) {
   }
 }
 
-std::istream& operator>>(std::istream& is, const vnl_na_stream_t& na) {
-  vnl_na_extract(is, *na.x);
-  return is;
-}
-
-std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t& na) {
-  vnl_na_insert(os, na.x);
-  return os;
-}
-
 }  // inline namespace edgetrack_ports

@@ -11,10 +11,10 @@
 #define TEST_STR(x) #x
 #define TEST_PATH_DEFINE(x) TEST_STR(x)
 
-/// The source tree's root: $VXLSRC, else $VCLSRC, else $VXL_SRC (upstream's order), else the
-/// directory CMake configured (vcl_where_root_dir.h).
 inline namespace edgetrack_ports {
 
+/// The source tree's root: $VXLSRC, else $VCLSRC, else $VXL_SRC (upstream's order), else the
+/// directory CMake configured (vcl_where_root_dir.h).
 std::string testlib_root_dir();
 
 }  // inline namespace edgetrack_ports

@@ -6,9 +6,9 @@
 
 #include <ctime>
 
-/// Reports `what` on stderr and stops the process (abort(), or exit status 134 with VCL_NO_ABORT).
 inline namespace edgetrack_ports {
 
+/// Reports `what` on stderr and stops the process (abort(), or exit status 134 with VCL_NO_ABORT).
 [[noreturn]] void vcl_abort(const char* what);
 
 /// time() where the C library has it; otherwise seconds since the epoch from std::chrono.

@@ -17,9 +17,9 @@
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
 
-/// Copies n elements from src to dst, converting each.
 inline namespace edgetrack_ports {
 
+/// Copies n elements from src to dst, converting each.
 template <class S, class T>
 void vnl_copy(const S* src, T* dst, unsigned n) {
   for (unsigned i = 0; i < n; ++i) dst[i] = T(src[i]);

@@ -52,8 +52,8 @@ class vnl_finite_int {
 
   /// gcd(val, N) == 1.
   bool is_unit() const { return gcd(static_cast<unsigned>(val_)) == 1; }
-  /// A nonzero element that is not a unit.
-  bool is_zero_divisor() const { return val_ != 0 && !is_unit(); }
+  /// Not a unit (0 included, as upstream: division by it is undefined).
+  bool is_zero_divisor() const { return !is_unit(); }
   /// The multiplicative inverse of a unit.
   Base reciproc() const {
     assert(is_unit());

@@ -12,6 +12,8 @@
 
 #include <cmath>
 
+#include "vnl/vnl_math.h"
+
 inline namespace edgetrack_ports {
 
 double vnl_log_gamma(double x);

@@ -21,9 +21,9 @@
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
 
-/// The numbers of a 1D array, one after the other.
 inline namespace edgetrack_ports {
 
+/// The numbers of a 1D array, one after the other.
 template <class T>
 std::ostream& vnl_matlab_print(std::ostream& s, const T* array, unsigned length,
                                vnl_matlab_print_format format = vnl_matlab_print_format_default) {

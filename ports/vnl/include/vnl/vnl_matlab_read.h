@@ -19,9 +19,9 @@
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
 
-/// n values: for complex T the file's real block then its imaginary block, interleaved.
 inline namespace edgetrack_ports {
 
+/// n values: for complex T the file's real block then its imaginary block, interleaved.
 template <class T>
 void vnl_matlab_read_data(std::istream& s, T* ptr, unsigned n);
 

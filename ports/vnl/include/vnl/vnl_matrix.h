@@ -104,7 +104,8 @@ class vnl_matrix {
   vnl_matrix& operator-=(const vnl_matrix& rhs);
   vnl_matrix& operator*=(const vnl_matrix& rhs) { return *this = *this * rhs; }
 
-  vnl_matrix operator-() const;
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_matrix<typename vnl_numeric_traits<T>::signed_t> operator-() const;
   vnl_matrix operator+(const T& v) const;
   vnl_matrix operator-(const T& v) const;
   vnl_matrix operator*(const T& v) const;

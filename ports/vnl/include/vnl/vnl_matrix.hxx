@@ -234,9 +234,11 @@ vnl_matrix<T>& vnl_matrix<T>::operator-=(const vnl_matrix& rhs) {
 }
 
 template <class T>
-vnl_matrix<T> vnl_matrix<T>::operator-() const {
-  vnl_matrix result(num_rows_, num_cols_);
-  for (std::size_t i = 0; i < size(); ++i) result.data_[i] = -data_[i];
+vnl_matrix<typename vnl_numeric_traits<T>::signed_t> vnl_matrix<T>::operator-() const {
+  using signed_t = typename vnl_numeric_traits<T>::signed_t;
+  vnl_matrix<signed_t> result(num_rows_, num_cols_);
+  signed_t* out = result.data_block();
+  for (std::size_t i = 0; i < size(); ++i) out[i] = -static_cast<signed_t>(data_[i]);
   return result;
 }
 

@@ -10,9 +10,9 @@
 
 #include <cassert>
 
-/// expX = exp(X) to within max_err; returns true.
 inline namespace edgetrack_ports {
 
+/// expX = exp(X) to within max_err; returns true.
 template <class SquareMatrix>
 bool vnl_matrix_exp(const SquareMatrix& X, SquareMatrix& expX, double max_err) {
   assert(X.rows() == X.cols() && max_err > 0);

@@ -19,10 +19,11 @@ class vnl_real_polynomial {
   /// Coefficients highest power first; an empty vector gives the zero polynomial.
   explicit vnl_real_polynomial(const vnl_vector<double>& a);
   vnl_real_polynomial(const double* a, unsigned len);
-  /// The constant a.
-  explicit vnl_real_polynomial(double a) : coeffs_(1, a) {}
+  /// The constant a; implicit as upstream, so that `p - 2.0` and `2.0 * p` read as polynomials.
+  vnl_real_polynomial(double a) : coeffs_(1, a) {}
   /// The zero polynomial of degree d (d + 1 zero coefficients).
-  explicit vnl_real_polynomial(int d);
+  vnl_real_polynomial(int d);
+  vnl_real_polynomial(unsigned d) : coeffs_(std::size_t(d) + 1, 0.0) {}
 
   bool operator==(const vnl_real_polynomial& p) const { return p.coefficients() == coeffs_; }
 

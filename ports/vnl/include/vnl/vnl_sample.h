@@ -9,9 +9,9 @@
 #error "edgetrack's drop-in vnl/vnl_sample.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
 #endif
 
-/// Seeds from the clock (different runs, different samples).
 inline namespace edgetrack_ports {
 
+/// Seeds from the clock (different runs, different samples).
 void vnl_sample_reseed();
 void vnl_sample_reseed(int seed);
 

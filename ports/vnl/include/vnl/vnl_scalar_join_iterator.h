@@ -16,9 +16,9 @@
 
 #include "vnl/vnl_matrix.h"
 
-/// A pointer to one element of the join column and the row it came from.
 inline namespace edgetrack_ports {
 
+/// A pointer to one element of the join column and the row it came from.
 template <class T>
 class vnl_scalar_join_iterator_indexed_pair {
  public:

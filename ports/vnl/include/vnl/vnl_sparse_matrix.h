@@ -14,9 +14,9 @@
 
 #include "vnl/vnl_vector.h"
 
-/// One stored element: `first` is its column, `second` its value.
 inline namespace edgetrack_ports {
 
+/// One stored element: `first` is its column, `second` its value.
 template <class T>
 class vnl_sparse_matrix_pair {
  public:
@@ -71,7 +71,8 @@ class vnl_sparse_matrix {
 
   /// result = this * rhs.
   void mult(const vnl_vector<T>& rhs, vnl_vector<T>& result) const;
-  /// q = this * p, p a dense n x m row-major block with n == columns(); q is rows() x m.
+  /// q = this * p, p a dense n x m block with n == columns(), q rows() x m, both column-major
+  /// (element (i, j) at [i + j * rows of that block]), as upstream.
   void mult(unsigned int n, unsigned int m, const T* p, T* q) const;
   /// result = lhs^T * this.
   void pre_mult(const vnl_vector<T>& lhs, vnl_vector<T>& result) const;

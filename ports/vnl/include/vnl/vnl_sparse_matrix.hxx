@@ -99,8 +99,8 @@ void vnl_sparse_matrix<T>::mult(unsigned int n, unsigned int m, const T* p, T* q
   for (unsigned r = 0; r < rs_; ++r) {
     for (unsigned j = 0; j < m; ++j) {
       T total(0);
-      for (const pair_t& e : elements_[r]) total += e.second * p[e.first * m + j];
-      q[r * m + j] = total;
+      for (const pair_t& e : elements_[r]) total += e.second * p[e.first + j * n];
+      q[r + j * rs_] = total;
     }
   }
 }

@@ -22,10 +22,10 @@
 #define VNL_SSE_STACK_ALIGNED(x)
 #endif
 
-/// n elements of `size` bytes (at least 8 bytes when n is 0); operator new aligns for every
-/// scalar type, which is all the portable kernels need.
 inline namespace edgetrack_ports {
 
+/// n elements of `size` bytes (at least 8 bytes when n is 0); operator new aligns for every
+/// scalar type, which is all the portable kernels need.
 VNL_SSE_FORCE_INLINE void* vnl_sse_alloc(std::size_t n, unsigned size) {
   return vnl_alloc::allocate(n == 0 ? 8 : n * size);
 }

@@ -119,6 +119,11 @@ class vnl_sym_matrix {
   unsigned nn_ = 0;
 };
 
+/// Exchanges the contents of a and b (found by argument-dependent lookup, as upstream's).
+template <class T>
+void swap(vnl_sym_matrix<T>& a, vnl_sym_matrix<T>& b) noexcept {
+  a.swap(b);
+}
 template <class T>
 bool operator==(const vnl_sym_matrix<T>& a, const vnl_sym_matrix<T>& b) {
   return a.rows() == b.rows() && std::equal(a.begin(), a.end(), b.begin());

@@ -14,6 +14,7 @@
 #include <initializer_list>
 #include <iosfwd>
 
+#include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_numeric_traits.h"
 
 inline namespace edgetrack_ports {
@@ -99,7 +100,8 @@ class vnl_vector {
   vnl_vector& operator*=(const vnl_matrix<T>& m) { return post_multiply(m); }
 
   vnl_vector operator+() const { return *this; }
-  vnl_vector operator-() const;
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_vector<typename vnl_numeric_traits<T>::signed_t> operator-() const;
   vnl_vector operator+(const T& v) const;
   vnl_vector operator-(const T& v) const;
   vnl_vector operator*(const T& v) const;

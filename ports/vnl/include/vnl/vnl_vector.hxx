@@ -229,9 +229,11 @@ vnl_vector<T>& vnl_vector<T>::post_multiply(const vnl_matrix<T>& m) {
 }
 
 template <class T>
-vnl_vector<T> vnl_vector<T>::operator-() const {
-  vnl_vector result(size());
-  for (std::size_t i = 0; i < num_elmts_; ++i) result.data_[i] = -data_[i];
+vnl_vector<typename vnl_numeric_traits<T>::signed_t> vnl_vector<T>::operator-() const {
+  using signed_t = typename vnl_numeric_traits<T>::signed_t;
+  vnl_vector<signed_t> result(size());
+  signed_t* out = result.data_block();
+  for (std::size_t i = 0; i < num_elmts_; ++i) out[i] = -static_cast<signed_t>(data_[i]);
   return result;
 }
 

@@ -7,9 +7,9 @@
 #include "vnl/algo/vnl_brent_minimizer.h"
 #include "vnl/vnl_matrix.h"
 
-/// f along the line origin + lambda * direction, as a cost of one unknown.
 inline namespace edgetrack_ports {
 
+/// f along the line origin + lambda * direction, as a cost of one unknown.
 class vnl_powell_1dfun : public vnl_cost_function {
  public:
   vnl_powell_1dfun(unsigned n, vnl_cost_function* f, vnl_powell* powell)

@@ -16,9 +16,9 @@
 
 #include "real/real.h"
 
-/// One mask_size x mask_size mask: `mask[a][b]` is the weight of row a, column b.
 inline namespace edgetrack_ports {
 
+/// One mask_size x mask_size mask: `mask[a][b]` is the weight of row a, column b.
 class vpMeMask {
  public:
   vpMeMask(const int16_t* weights, unsigned int size) : weights_(weights), size_(size) {}

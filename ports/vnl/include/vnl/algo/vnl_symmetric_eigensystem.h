@@ -14,10 +14,10 @@
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
 
-/// The eigenvalues l1 <= l2 <= l3 of the symmetric 3x3 matrix [M11 M12 M13; . M22 M23; . . M33]
-/// (upstream computes them in closed form; we use the same Jacobi iteration).
 inline namespace edgetrack_ports {
 
+/// The eigenvalues l1 <= l2 <= l3 of the symmetric 3x3 matrix [M11 M12 M13; . M22 M23; . . M33]
+/// (upstream computes them in closed form; we use the same Jacobi iteration).
 template <class T>
 void vnl_symmetric_eigensystem_compute_eigenvals(T M11, T M12, T M13, T M22, T M23, T M33, T& l1, T& l2, T& l3);
 
