@@ -29,9 +29,10 @@ template <class T>
 void extract(std::istream& is, T& x) {
   is >> std::ws;
   if (is.peek() == 'N') {
-    std::string word;
-    is >> word;
-    if (word == "NA") {
+    // "NA" is two characters, not a word: "NA1.0" is NA then 1.0, as upstream reads it.
+    is.get();
+    if (is.peek() == 'A') {
+      is.get();
       x = vnl_na(T());
       return;
     }

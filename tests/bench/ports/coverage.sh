@@ -123,15 +123,20 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
     echo
     printf '| test |'
     for file in "${measured[@]}"; do printf ' %s |' "$(basename "$file" .tsv)"; done
-    echo
+    echo ' why not |'
     printf '|---|'
     for file in "${measured[@]}"; do printf -- '---|'; done
-    echo
-    awk -F'\t' 'FNR == 1 { ++n } FNR > 1 && $1 !~ /^total / {
+    echo '---|'
+    # The first file is upstream_test_notes.tsv (test, why it does not compile or pass).
+    awk -F'\t' 'FILENAME ~ /notes/ { why[$1] = $2; next }
+      FNR == 1 { ++n } FNR > 1 && $1 !~ /^total / {
         if (!($1 in seen)) { seen[$1] = 1; order[++count] = $1 }
         cell[$1, n] = $2 == "no" ? "does not compile" : ($3 == "yes" ? "passes" : "fails") }
       END { for (i = 1; i <= count; ++i) { t = order[i]; printf "| `%s` |", t
-              for (j = 1; j <= n; ++j) printf " %s |", ((t, j) in cell ? cell[t, j] : "-"); printf "\n" } }' "${measured[@]}"
+              all = 1
+              for (j = 1; j <= n; ++j) { printf " %s |", ((t, j) in cell ? cell[t, j] : "-"); all = all && cell[t, j] == "passes" }
+              printf " %s |\n", all ? "" : why[t] } }' \
+      "$here/upstream_test_notes.tsv" "${measured[@]}"
   fi
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do
