@@ -2,4 +2,8 @@
 /// Instantiates our MINPACK routines for double, for upstream's vnl_levenberg_marquardt.
 #include "netlib/minpack.hxx"
 
+inline namespace edgetrack_ports {
+
 NETLIB_MINPACK_INSTANTIATE(double)
+
+}  // inline namespace edgetrack_ports

@@ -5,5 +5,8 @@
 #include "real/real.h"
 
 #if !defined(EDGETRACK_REAL_DOUBLE)
+inline namespace edgetrack_ports {
+
 NETLIB_MINPACK_INSTANTIATE(real)
+}  // inline namespace edgetrack_ports
 #endif

@@ -6,6 +6,8 @@
 
 #include "testlib/testlib_register.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 struct RegisteredTest {
   std::string name;
@@ -40,3 +42,5 @@ int testlib_main(int argc, char* argv[]) {
 }
 
 void testlib_cleanup() { registry().clear(); }
+
+}  // inline namespace edgetrack_ports

@@ -6,9 +6,13 @@
 
 #include "vcl_where_root_dir.h"
 
+inline namespace edgetrack_ports {
+
 std::string testlib_root_dir() {
   for (const char* variable : {"VXLSRC", "VCLSRC", "VXL_SRC"}) {
     if (const char* value = std::getenv(variable)) return value;
   }
   return VCL_SOURCE_ROOT_DIR;
 }
+
+}  // inline namespace edgetrack_ports

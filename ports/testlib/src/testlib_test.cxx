@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+inline namespace edgetrack_ports {
+
 namespace {
 // The one piece of process-wide state testlib needs: the running tally of one test program.
 struct Tally {
@@ -119,3 +121,5 @@ void testlib_test_assert_equal(const std::string& msg, long expr, long target) {
   if (expr != target) std::printf("(expected %ld, got %ld) ", target, expr);
   testlib_test_perform(expr == target);
 }
+
+}  // inline namespace edgetrack_ports

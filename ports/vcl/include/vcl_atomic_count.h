@@ -3,9 +3,15 @@
 /// platform file from vcl/internal/; std::atomic does that job for every platform we build.
 #pragma once
 
+#ifdef vcl_atomic_count_h_
+#error "edgetrack's drop-in vcl_atomic_count.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <atomic>
 
 #include "vcl_compiler.h"
+
+inline namespace edgetrack_ports {
 
 class vcl_atomic_count {
  public:
@@ -22,3 +28,5 @@ class vcl_atomic_count {
  private:
   std::atomic<long> value_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,10 @@
 /// against older VXL includes unchanged.
 #pragma once
 
+#ifdef vcl_cassert_h_
+#error "edgetrack's drop-in vcl_cassert.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vcl_compiler.h"

@@ -3,6 +3,10 @@
 /// against older VXL includes unchanged.
 #pragma once
 
+#ifdef vcl_climits_h_
+#error "edgetrack's drop-in vcl_climits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <climits>
 
 #include "vcl_compiler.h"

@@ -3,6 +3,10 @@
 /// against older VXL includes unchanged.
 #pragma once
 
+#ifdef vcl_csignal_h_
+#error "edgetrack's drop-in vcl_csignal.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <csignal>
 
 #include "vcl_compiler.h"

@@ -4,7 +4,13 @@
 /// first time with VXL_WARN_DEPRECATED_ONCE); with VXL_WARN_DEPRECATED_ABORT it also aborts.
 #pragma once
 
+#ifdef vcl_deprecated_h_
+#error "edgetrack's drop-in vcl_deprecated.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vcl_compiler.h"
+
+inline namespace edgetrack_ports {
 
 /// Prints "deprecated function <name> called" on stderr.
 void vcl_deprecated_warn(const char* func_name);
@@ -27,3 +33,5 @@ void vcl_deprecated_abort(const char* func_name);
 #else
 #define VXL_DEPRECATED_MACRO(f) /* deprecation is silent */
 #endif
+
+}  // inline namespace edgetrack_ports

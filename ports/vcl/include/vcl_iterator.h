@@ -3,6 +3,10 @@
 /// against older VXL includes unchanged.
 #pragma once
 
+#ifdef vcl_iterator_h_
+#error "edgetrack's drop-in vcl_iterator.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iterator>
 
 #include "vcl_compiler.h"

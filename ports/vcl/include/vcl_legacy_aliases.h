@@ -4,6 +4,10 @@
 /// defined; like upstream it includes no standard header itself.
 #pragma once
 
+#ifdef VCL_LEGACY_ALIASES_H_
+#error "edgetrack's drop-in vcl_legacy_aliases.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #define vcl_adjacent_find std::adjacent_find
 #define vcl_binary_search std::binary_search
 #define vcl_copy std::copy

@@ -3,6 +3,10 @@
 /// against older VXL includes unchanged.
 #pragma once
 
+#ifdef vcl_typeinfo_h_
+#error "edgetrack's drop-in vcl_typeinfo.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <typeinfo>
 
 #include "vcl_compiler.h"

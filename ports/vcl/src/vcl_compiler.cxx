@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+inline namespace edgetrack_ports {
+
 void vcl_abort(const char* what) {
   std::fprintf(stderr, "vcl_abort: %s\n", what ? what : "(no reason given)");
   std::fflush(stderr);
@@ -25,3 +27,5 @@ std::time_t vcl_time(std::time_t* out) {
   if (out) *out = seconds;
   return seconds;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 
 #include "vcl/vcl_compiler.h"
 
+inline namespace edgetrack_ports {
+
 void vcl_deprecated_warn(const char* func_name) {
   std::fprintf(stderr, "deprecated function %s called\n", func_name ? func_name : "(unnamed)");
 }
@@ -13,3 +15,5 @@ void vcl_deprecated_abort(const char* func_name) {
   vcl_deprecated_warn(func_name);
   vcl_abort("deprecated function called");
 }
+
+}  // inline namespace edgetrack_ports

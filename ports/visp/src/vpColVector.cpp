@@ -2,6 +2,8 @@
 /// vpColVector's element-wise arithmetic; sizes must match (as upstream, which throws).
 #include "visp3/core/vpColVector.h"
 
+inline namespace edgetrack_ports {
+
 vpColVector vpColVector::operator+(const vpColVector& v) const {
   vpColVector r(*this);
   return r += v;
@@ -65,3 +67,5 @@ real vpColVector::dotProd(const vpColVector& a, const vpColVector& b) {
   for (unsigned int k = 0; k < a.getRows(); ++k) s += a[k] * b[k];
   return s;
 }
+
+}  // inline namespace edgetrack_ports

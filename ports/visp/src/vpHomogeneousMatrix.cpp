@@ -7,6 +7,8 @@
 
 #include "visp3/core/vpPoseVector.h"
 
+inline namespace edgetrack_ports {
+
 void vpHomogeneousMatrix::eye() {
   for (unsigned int r = 0; r < 4; ++r)
     for (unsigned int c = 0; c < 4; ++c) data_[r][c] = r == c ? real(1) : real(0);
@@ -97,3 +99,5 @@ void vpHomogeneousMatrix::print() const {
     std::printf("\n");
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 /// The grey of every RGB565 value by the rule: one table load per pixel (64 KB of constants),
@@ -120,3 +122,5 @@ void vpGreyOnDemand::require(int top, int left, int bottom, int right) {
     }
   }
 }
+
+}  // inline namespace edgetrack_ports

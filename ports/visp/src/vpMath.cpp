@@ -7,6 +7,8 @@
 #include <cmath>
 #include <type_traits>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr bool kFloating = std::is_floating_point<real>::value;
 const real kSincLimit = kFloating ? real(1e-8) : real(0.1);
@@ -33,3 +35,5 @@ real vpMath::msinc(real sinx, real x) {
   if (abs(x) < kCoscLimit) return real(1) / 6 - x * x / 120;
   return (real(1) - sinx / x) / x / x;
 }
+
+}  // inline namespace edgetrack_ports

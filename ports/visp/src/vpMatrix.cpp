@@ -10,6 +10,8 @@
 #include <limits>
 #include <numeric>
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 constexpr int kMaxSweeps = 40;
@@ -255,3 +257,5 @@ unsigned int vpMatrix::nullSpace(vpMatrix& kerA, int dim) const {
     if (w[k] > w[0] * real(1e-6)) ++rank;
   return n - rank;
 }
+
+}  // inline namespace edgetrack_ports

@@ -11,6 +11,8 @@
 
 #include "vcl/vcl_cmath.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 /// Area of the part of the unit square centred at (x, y) where n_x * X + n_y * Y > 0.
@@ -124,3 +126,5 @@ unsigned int vpMe::maskIndex(const real& alpha) const {
       anglestep > 1 ? static_cast<unsigned int>(degrees) / anglestep : static_cast<unsigned int>(degrees);
   return index < n_mask ? index : n_mask - 1;
 }
+
+}  // inline namespace edgetrack_ports

@@ -14,6 +14,8 @@
 #include "visp3/core/vpMatrix.h"
 #include "visp3/core/vpRobust.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 const real kPi = real(M_PI);
@@ -448,3 +450,5 @@ void vpMeEllipse::initTracking(const vpImage<unsigned char>& I, unsigned int n, 
   for (unsigned int k = 0; k < n; ++k) points[k].set_ij(real(static_cast<int>(i[k])), real(static_cast<int>(j[k])));
   initTracking(I, points);
 }
+
+}  // inline namespace edgetrack_ports

@@ -11,6 +11,8 @@
 #include "visp3/core/vpRobust.h"
 #include "visp3/core/vpTrackingException.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 const real kPi = real(M_PI);
@@ -384,3 +386,5 @@ bool vpMeLine::intersection(const vpMeLine& line1, const vpMeLine& line2, vpImag
   ip.set_ij(i, j);
   return true;
 }
+
+}  // inline namespace edgetrack_ports

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <type_traits>
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 /// The integers n with n > x are those with n > floor_int(x); clamped far beyond any response.
@@ -233,3 +235,5 @@ void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_
     state = last_passing_nonzero ? CONSTRAST : THRESHOLD;
   }
 }
+
+}  // inline namespace edgetrack_ports

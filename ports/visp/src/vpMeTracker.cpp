@@ -6,6 +6,8 @@
 
 #include "visp3/core/vpMath.h"
 
+inline namespace edgetrack_ports {
+
 bool vpMeTracker::inMask(const vpImage<bool>* mask, unsigned int i, unsigned int j) {
   if (mask == nullptr) return true;
   if (i >= mask->getHeight() || j >= mask->getWidth()) return false;
@@ -62,3 +64,5 @@ void vpMeTracker::track(const vpImage<unsigned char>& I) {
     ++it;
   }
 }
+
+}  // inline namespace edgetrack_ports

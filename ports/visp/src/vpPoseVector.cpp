@@ -6,6 +6,8 @@
 
 #include "visp3/core/vpHomogeneousMatrix.h"
 
+inline namespace edgetrack_ports {
+
 void vpPoseVector::set(real tx, real ty, real tz, real tux, real tuy, real tuz) {
   data_[0] = tx;
   data_[1] = ty;
@@ -36,3 +38,5 @@ vpPoseVector vpPoseVector::buildFrom(const vpTranslationVector& t, const vpRotat
 void vpPoseVector::print() const {
   for (unsigned int k = 0; k < 6; ++k) std::printf("%g\n", static_cast<double>(data_[k]));
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 namespace {
 /// The k-th smallest of `values` (reordered).
 real kth_smallest(std::vector<real>& values, unsigned int k) {
@@ -50,3 +52,5 @@ void vpRobust::MEstimator(vpRobustEstimatorType method, const vpColVector& resid
     }
   }
 }
+
+}  // inline namespace edgetrack_ports

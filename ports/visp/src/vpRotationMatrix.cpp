@@ -9,6 +9,8 @@
 #include "visp3/core/vpPoseVector.h"
 #include "visp3/core/vpThetaUVector.h"
 
+inline namespace edgetrack_ports {
+
 void vpRotationMatrix::eye() {
   for (unsigned int r = 0; r < 3; ++r)
     for (unsigned int c = 0; c < 3; ++c) data_[r][c] = r == c ? real(1) : real(0);
@@ -113,3 +115,5 @@ vpRotationMatrix::operator vpMatrix() const {
     for (unsigned int c = 0; c < 3; ++c) M[r][c] = data_[r][c];
   return M;
 }
+
+}  // inline namespace edgetrack_ports

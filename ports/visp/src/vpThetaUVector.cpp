@@ -14,6 +14,8 @@
 #include "visp3/core/vpPoseVector.h"
 #include "visp3/core/vpRotationMatrix.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 const real kNearPi = real(0.0001);
 
@@ -140,3 +142,5 @@ vpThetaUVector& vpThetaUVector::operator=(real x) {
   for (real& v : data_) v = x;
   return *this;
 }
+
+}  // inline namespace edgetrack_ports

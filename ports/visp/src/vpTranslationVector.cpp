@@ -7,6 +7,8 @@
 #include "visp3/core/vpHomogeneousMatrix.h"
 #include "visp3/core/vpPoseVector.h"
 
+inline namespace edgetrack_ports {
+
 vpTranslationVector vpTranslationVector::buildFrom(real tx, real ty, real tz) {
   set(tx, ty, tz);
   return *this;
@@ -85,3 +87,5 @@ vpTranslationVector::operator vpColVector() const {
   for (unsigned int k = 0; k < 3; ++k) v[k] = data_[k];
   return v;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 
 #include "vnl/vnl_least_squares_function.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_LEAST_SQUARES_FUNCTION_INSTANTIATE(double);
 
 vnl_least_squares_function::vnl_least_squares_function(unsigned int number_of_unknowns,
@@ -15,3 +17,5 @@ vnl_least_squares_function::vnl_least_squares_function(unsigned int number_of_un
               << number_of_residuals << ")\n";
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,5 +5,8 @@
 #include "vnl/vnl_least_squares_function.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE)
+inline namespace edgetrack_ports {
+
 VNL_LEAST_SQUARES_FUNCTION_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

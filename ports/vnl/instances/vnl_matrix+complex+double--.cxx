@@ -4,4 +4,8 @@
 
 #include "vnl/vnl_matrix.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_MATRIX_INSTANTIATE(std::complex<double>);
+
+}  // inline namespace edgetrack_ports

@@ -2,4 +2,8 @@
 /// Instantiates vnl_matrix for double (upstream: core/vnl/Templates/).
 #include "vnl/vnl_matrix.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_MATRIX_INSTANTIATE(double);
+
+}  // inline namespace edgetrack_ports

@@ -2,4 +2,8 @@
 /// Instantiates vnl_matrix for unsigned int (upstream: core/vnl/Templates/).
 #include "vnl/vnl_matrix.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_MATRIX_INSTANTIATE(unsigned int);
+
+}  // inline namespace edgetrack_ports

@@ -2,4 +2,8 @@
 /// Instantiates vnl_polynomial for float (upstream: core/vnl/Templates/).
 #include "vnl/vnl_polynomial.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_POLYNOMIAL_INSTANTIATE(float);
+
+}  // inline namespace edgetrack_ports

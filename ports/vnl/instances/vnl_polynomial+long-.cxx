@@ -2,4 +2,8 @@
 /// Instantiates vnl_polynomial for long (upstream: core/vnl/Templates/).
 #include "vnl/vnl_polynomial.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_POLYNOMIAL_INSTANTIATE(long);
+
+}  // inline namespace edgetrack_ports

@@ -2,4 +2,8 @@
 /// Instantiates vnl_quaternion for float (upstream: core/vnl/Templates/).
 #include "vnl/vnl_quaternion.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_QUATERNION_INSTANTIATE(float);
+
+}  // inline namespace edgetrack_ports

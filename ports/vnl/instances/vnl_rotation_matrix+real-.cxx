@@ -3,4 +3,8 @@
 #include "real/real.h"
 #include "vnl/vnl_rotation_matrix.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_ROTATION_MATRIX_INSTANTIATE(real);
+
+}  // inline namespace edgetrack_ports

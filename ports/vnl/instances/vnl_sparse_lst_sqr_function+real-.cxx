@@ -5,5 +5,8 @@
 #include "vnl/vnl_sparse_lst_sqr_function.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE)
+inline namespace edgetrack_ports {
+
 VNL_SPARSE_LST_SQR_FUNCTION_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

@@ -4,4 +4,8 @@
 
 #include "vnl/vnl_sparse_matrix.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_SPARSE_MATRIX_INSTANTIATE(std::complex<double>);
+
+}  // inline namespace edgetrack_ports

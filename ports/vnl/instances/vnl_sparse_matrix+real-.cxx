@@ -5,5 +5,8 @@
 #include "vnl/vnl_sparse_matrix.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE) && !defined(EDGETRACK_REAL_FLOAT)
+inline namespace edgetrack_ports {
+
 VNL_SPARSE_MATRIX_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

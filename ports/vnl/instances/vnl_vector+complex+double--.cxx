@@ -4,4 +4,8 @@
 
 #include "vnl/vnl_vector.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_VECTOR_INSTANTIATE(std::complex<double>);
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 #include <iostream>
 #include <utility>
 
+inline namespace edgetrack_ports {
+
 namespace {
 using Data = vnl_bignum::Data;
 using Digits = std::vector<Data>;
@@ -298,3 +300,5 @@ std::string& vnl_bignum_to_string(std::string& s, const vnl_bignum& b) {
   s += b.is_infinity() ? "Inf" : decimal_digits(b.data_);
   return s;
 }
+
+}  // inline namespace edgetrack_ports

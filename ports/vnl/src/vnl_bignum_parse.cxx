@@ -8,6 +8,8 @@
 
 #include "vnl/vnl_bignum.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 /// a = a * factor + addend, on 16-bit digits (least significant first).
 void multiply_add(std::vector<vnl_bignum::Data>& a, std::uint32_t factor, std::uint32_t addend) {
@@ -106,3 +108,5 @@ std::istream& operator>>(std::istream& s, vnl_bignum& r) {
   if (token.empty() || !r.parse(token.c_str())) s.setstate(std::ios::failbit);
   return s;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 
 #include "vcl/vcl_compiler.h"
 
+inline namespace edgetrack_ports {
+
 void vnl_cost_function::compute(const vnl_vector<double>& x, double* val, vnl_vector<double>* g) {
   if (val) *val = this->f(x);
   if (g) this->gradf(x, *g);
@@ -50,3 +52,5 @@ vnl_vector<double> vnl_cost_function::fdgradf(const vnl_vector<double>& x) {
   this->fdgradf(x, g);
   return g;
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+inline namespace edgetrack_ports {
+
 vnl_crs_index::vnl_crs_index(const std::vector<std::vector<bool>>& mask)
     : num_cols_(mask.empty() ? 0 : static_cast<unsigned>(mask[0].size())), row_ptr_(mask.size() + 1, 0) {
   for (std::size_t i = 0; i < mask.size(); ++i) {
@@ -34,3 +36,5 @@ vnl_crs_index::sparse_vector vnl_crs_index::sparse_col(int j) const {
   }
   return column;
 }
+
+}  // inline namespace edgetrack_ports

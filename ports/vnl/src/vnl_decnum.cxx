@@ -9,6 +9,8 @@
 #include <sstream>
 #include <vector>
 
+inline namespace edgetrack_ports {
+
 namespace {
 // Mantissa arithmetic on strings of decimal digits without leading zeros ("" is zero).
 
@@ -295,3 +297,5 @@ std::istream& operator>>(std::istream& s, vnl_decnum& r) {
   r = vnl_decnum(text);
   return s;
 }
+
+}  // inline namespace edgetrack_ports

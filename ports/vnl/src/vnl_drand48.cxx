@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr std::uint64_t kMultiplier = 0x5DEECE66DULL;  // POSIX's a and c
 constexpr std::uint64_t kIncrement = 0xB;
@@ -23,3 +25,5 @@ void vnl_srand48(long seed) {
   const auto low32 = static_cast<std::uint64_t>(static_cast<std::uint32_t>(seed));
   drand48_state = (low32 << 16) | 0x330E;
 }
+
+}  // inline namespace edgetrack_ports

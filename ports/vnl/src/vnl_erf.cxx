@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 double vnl_erfc(double x) { return std::erfc(x); }
 
 double vnl_scaled_erfc(double x) {
@@ -13,3 +15,5 @@ double vnl_scaled_erfc(double x) {
   const double series = 1 - f * (1 - 3 * f * (1 - 5 * f * (1 - 7 * f * (1 - 9 * f * (1 - 11 * f)))));
   return series / (x * 1.7724538509055160273);
 }
+
+}  // inline namespace edgetrack_ports

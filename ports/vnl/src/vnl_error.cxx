@@ -6,6 +6,8 @@
 
 #include "vcl/vcl_compiler.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "vnl: %s\n", message.c_str());
@@ -32,3 +34,5 @@ void vnl_error_matrix_dimension(const char* fcn, int r1, int c1, int r2, int c2)
 }
 void vnl_error_matrix_nonsquare(const char* fcn) { fail(std::string(fcn) + ": matrix is not square"); }
 void vnl_error_matrix_va_arg(int n) { fail("matrix given " + std::to_string(n) + " values of the wrong type"); }
+
+}  // inline namespace edgetrack_ports

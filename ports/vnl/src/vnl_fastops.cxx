@@ -3,6 +3,8 @@
 
 #include <cassert>
 
+inline namespace edgetrack_ports {
+
 namespace {
 /// X(i, j) += sign * sum_k a(i, k) b(k, j), where a(i, k) and b(k, j) read A and B, each
 /// optionally transposed.
@@ -116,3 +118,5 @@ double vnl_fastops::dot(const double* a, const double* b, unsigned int n) {
   for (unsigned i = 0; i < n; ++i) total += a[i] * b[i];
   return total;
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr int kMaxTerms = 1000;
 constexpr double kEps = 1e-15;
@@ -62,3 +64,5 @@ double vnl_digamma(double x) {
   return result + std::log(x) - 0.5 / x -
          f * (1.0 / 12 - f * (1.0 / 120 - f * (1.0 / 252 - f * (1.0 / 240 - f * (1.0 / 132)))));
 }
+
+}  // inline namespace edgetrack_ports

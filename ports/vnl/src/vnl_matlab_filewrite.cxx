@@ -5,6 +5,8 @@
 
 #include "vnl/vnl_matlab_write.h"
 
+inline namespace edgetrack_ports {
+
 vnl_matlab_filewrite::vnl_matlab_filewrite(const char* file_name, const char* basename)
     : basename_(basename ? basename : "targetvar") {
   out_.open(file_name, std::ios::out | std::ios::binary | std::ios::trunc);
@@ -47,3 +49,5 @@ void vnl_matlab_filewrite::write(const double* const* M, int rows, int cols, con
   vnl_matlab_write(out_, M, static_cast<unsigned>(rows), static_cast<unsigned>(cols),
                    make_var_name(variable_name).c_str());
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <iostream>
 #include <vector>
 
+inline namespace edgetrack_ports {
+
 namespace {
 // Process-wide, as upstream's (see the header).
 vnl_matlab_print_format current_format = vnl_matlab_print_format_short;
@@ -34,3 +36,5 @@ void vnl_matlab_print_format_pop() {
   current_format = format_stack().back();
   format_stack().pop_back();
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstring>
 
+inline namespace edgetrack_ports {
+
 namespace {
 vnl_matlab_print_format resolved(vnl_matlab_print_format format) {
   return format == vnl_matlab_print_format_default ? vnl_matlab_print_format_top() : format;
@@ -100,3 +102,5 @@ void vnl_matlab_print_scalar(std::complex<long double> v, char* buf, std::size_t
                              vnl_matlab_print_format format) {
   vnl_matlab_print_scalar(std::complex<double>(v), buf, buf_len, format);
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,6 +6,8 @@
 #include <type_traits>
 #include <vector>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr bool kBigEndianHost = __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__;
 
@@ -149,3 +151,5 @@ VNL_MATLAB_READ_INSTANTIATE(float);
 VNL_MATLAB_READ_INSTANTIATE(double);
 VNL_MATLAB_READ_INSTANTIATE(std::complex<float>);
 VNL_MATLAB_READ_INSTANTIATE(std::complex<double>);
+
+}  // inline namespace edgetrack_ports

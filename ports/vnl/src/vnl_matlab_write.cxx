@@ -6,6 +6,8 @@
 
 #include "vnl/vnl_matlab_header.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr std::int32_t kNativeByteOrder =
     __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__ ? vnl_matlab_header::vnl_BIG_ENDIAN : vnl_matlab_header::vnl_LITTLE_ENDIAN;
@@ -85,3 +87,5 @@ VNL_MATLAB_WRITE_INSTANTIATE(float);
 VNL_MATLAB_WRITE_INSTANTIATE(double);
 VNL_MATLAB_WRITE_INSTANTIATE(std::complex<float>);
 VNL_MATLAB_WRITE_INSTANTIATE(std::complex<double>);
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 namespace {
 vnl_matrix<double> column(const vnl_vector<double>& v) {
   vnl_matrix<double> m(v.size(), 1);
@@ -54,3 +56,5 @@ vnl_matrix<double> vnl_matops::f2d(const vnl_matrix<float>& m) { return convert<
 vnl_vector<double> vnl_matops::f2d(const vnl_vector<float>& v) { return convert<double>(v); }
 vnl_matrix<float> vnl_matops::d2f(const vnl_matrix<double>& m) { return convert<float>(m); }
 vnl_vector<float> vnl_matops::d2f(const vnl_vector<double>& v) { return convert<float>(v); }
+
+}  // inline namespace edgetrack_ports

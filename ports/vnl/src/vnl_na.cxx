@@ -8,6 +8,8 @@
 #include <ostream>
 #include <string>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr std::uint64_t kNaBits = 0x7FF00000000007A2ULL;   // R's NA: a NaN with payload 1954
 constexpr std::uint32_t kNaBitsF = 0x7F8007A2U;           // the same payload in a float
@@ -27,9 +29,10 @@ template <class T>
 void extract(std::istream& is, T& x) {
   is >> std::ws;
   if (is.peek() == 'N') {
-    std::string word;
-    is >> word;
-    if (word == "NA") {
+    // "NA" is two characters, not a word: "NA1.0" is NA then 1.0, as upstream reads it.
+    is.get();
+    if (is.peek() == 'A') {
+      is.get();
       x = vnl_na(T());
       return;
     }
@@ -78,12 +81,4 @@ void vnl_na_insert(std::ostream& os, float x) {
   }
 }
 
-std::istream& operator>>(std::istream& is, const vnl_na_stream_t& na) {
-  vnl_na_extract(is, *na.x);
-  return is;
-}
-
-std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t& na) {
-  vnl_na_insert(os, na.x);
-  return os;
-}
+}  // inline namespace edgetrack_ports

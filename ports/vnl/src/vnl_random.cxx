@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr unsigned long kDefaultSeed = 9667566;
 
@@ -94,3 +96,5 @@ double vnl_random::polar_normal(double (vnl_random::*uniform)(double, double)) {
 
 double vnl_random::normal() { return polar_normal(&vnl_random::drand32); }
 double vnl_random::normal64() { return polar_normal(&vnl_random::drand64); }
+
+}  // inline namespace edgetrack_ports

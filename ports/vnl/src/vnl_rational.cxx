@@ -7,6 +7,8 @@
 #include <limits>
 #include <ostream>
 
+inline namespace edgetrack_ports {
+
 namespace {
 using int_type = vnl_rational::int_type;
 constexpr double kMaxInt = 9.2233720368547748e18;  // just below 2^63: products past it overflow
@@ -147,3 +149,5 @@ std::istream& operator>>(std::istream& s, vnl_rational& r) {
   r.set(n, d);
   return s;
 }
+
+}  // inline namespace edgetrack_ports

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+inline namespace edgetrack_ports {
+
 vnl_real_npolynomial::vnl_real_npolynomial(vnl_vector<double> c, const vnl_matrix<unsigned int>& p)
     : coeffs_(std::move(c)), polyn_(p) {
   assert(coeffs_.size() == polyn_.rows());
@@ -182,3 +184,5 @@ std::string vnl_real_npolynomial::asString() const {
 }
 
 std::ostream& operator<<(std::ostream& os, const vnl_real_npolynomial& p) { return os << p.asString(); }
+
+}  // inline namespace edgetrack_ports

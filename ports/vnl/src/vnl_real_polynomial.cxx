@@ -5,6 +5,8 @@
 #include <cmath>
 #include <ostream>
 
+inline namespace edgetrack_ports {
+
 namespace {
 template <class X>
 X horner(const vnl_vector<double>& a, const X& x) {
@@ -130,3 +132,5 @@ std::ostream& operator<<(std::ostream& os, const vnl_real_polynomial& p) {
   p.print(os);
   return os;
 }
+
+}  // inline namespace edgetrack_ports

@@ -7,6 +7,8 @@
 #include "vnl/vnl_drand48.h"
 #include "vnl/vnl_math.h"
 
+inline namespace edgetrack_ports {
+
 void vnl_sample_reseed() { vnl_srand48(static_cast<long>(std::time(nullptr))); }
 
 void vnl_sample_reseed(int seed) { vnl_srand48(seed); }
@@ -47,3 +49,5 @@ int vnl_sample_binomial(int n, double q) {
   for (int i = 0; i < n; ++i) k += vnl_sample_bernoulli(q);
   return k;
 }
+
+}  // inline namespace edgetrack_ports

@@ -104,6 +104,40 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
     t_ok=$(awk -F'\t' -v l="$lib" '$1 == l && $2 == "test" && $4 == "ported"' <<<"$rows" | wc -l)
     echo "| $lib | $h_ok / $h_all | $h_part | $t_ok / $t_all |"
   done
+  measured=("$here"/upstream_tests/*.tsv)
+  if [ -e "${measured[0]}" ]; then
+    echo
+    echo "## VXL's own tests compiled against ports/"
+    echo
+    echo "Upstream's \`core/vnl/tests\` driver tests and vnl_algo's \`test_levenberg_marquardt.cxx\`, each"
+    echo "compiled unchanged against ports/ and our testlib and run, by"
+    echo "\`tests/ports/upstream/check-vxl-tests.sh VXL_CHECKOUT BUILD WORK_DIR > tests/bench/ports/upstream_tests/BUILD.tsv\`"
+    echo "(a VXL checkout at the commit above; nothing of it enters the repository). test_matlab and"
+    echo "test_sample need VXL's vpl and vul libraries, which are not ported."
+    echo
+    echo "| build | compile | pass |"
+    echo "|---|---|---|"
+    for file in "${measured[@]}"; do
+      awk -F'\t' '$1 ~ /^total / { sub(/^total /, "", $1); printf "| %s | %s | %s |\n", $1, $2, $3 }' "$file"
+    done
+    echo
+    printf '| test |'
+    for file in "${measured[@]}"; do printf ' %s |' "$(basename "$file" .tsv)"; done
+    echo ' why not |'
+    printf '|---|'
+    for file in "${measured[@]}"; do printf -- '---|'; done
+    echo '---|'
+    # The first file is upstream_test_notes.tsv (test, why it does not compile or pass).
+    awk -F'\t' 'FILENAME ~ /notes/ { why[$1] = $2; next }
+      FNR == 1 { ++n } FNR > 1 && $1 !~ /^total / {
+        if (!($1 in seen)) { seen[$1] = 1; order[++count] = $1 }
+        cell[$1, n] = $2 == "no" ? "does not compile" : ($3 == "yes" ? "passes" : "fails") }
+      END { for (i = 1; i <= count; ++i) { t = order[i]; printf "| `%s` |", t
+              all = 1
+              for (j = 1; j <= n; ++j) { printf " %s |", ((t, j) in cell ? cell[t, j] : "-"); all = all && cell[t, j] == "passes" }
+              printf " %s |\n", all ? "" : why[t] } }' \
+      "$here/upstream_test_notes.tsv" "${measured[@]}"
+  fi
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do
       echo

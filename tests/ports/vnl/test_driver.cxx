@@ -54,6 +54,7 @@ DECLARE(test_least_squares_cost_function);
 DECLARE(test_bignum);
 DECLARE(test_decnum);
 DECLARE(test_matlab);
+DECLARE(test_vxl_user_api);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -108,6 +109,7 @@ void register_tests() {
   REGISTER(test_bignum);
   REGISTER(test_decnum);
   REGISTER(test_matlab);
+  REGISTER(test_vxl_user_api);
 }
 
 DEFINE_MAIN

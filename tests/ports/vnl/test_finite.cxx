@@ -157,6 +157,8 @@ static void test_finite() {
   TEST("cardinality", Z7::cardinality(), 7u);
   TEST("1 / 3 = 5 mod 7", Z7(1) / Z7(3), Z7(5));
   TEST("4 is a zero divisor mod 12", Z12(4).is_zero_divisor(), true);
+  TEST("0 is a zero divisor (not a unit), as upstream", Z12(0).is_zero_divisor(), true);
+  TEST("5 is a unit mod 12, no zero divisor", Z12(5).is_zero_divisor(), false);
   TEST("Z_12 is not a field", Z12::is_field(), false);
   TEST("totient(12) = 4", Z12::totient(), 4u);
   TEST("additive order of 4 mod 12 is 3", Z12(4).additive_order(), 3u);

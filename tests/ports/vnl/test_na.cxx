@@ -22,6 +22,12 @@ static void test_na() {
   double a = 0, b = 0, c = 0;
   in >> vnl_na_stream(a) >> vnl_na_stream(b) >> vnl_na_stream(c);
   TEST("reads a number, NA, a number", a == 1.5 && vnl_na_isna(b) && c == -2, true);
+  std::istringstream glued("NA1.0NANA");
+  double d = 0, e = 0, f = 0;
+  vnl_na_extract(glued, d);
+  vnl_na_extract(glued, e);
+  vnl_na_extract(glued, f);
+  TEST("NA glued to a number or to NA: two characters each", vnl_na_isna(d) && e == 1.0 && vnl_na_isna(f), true);
   std::ostringstream out;
   out << vnl_na_stream(na) << ' ' << vnl_na_stream(3.0);
   TEST("prints NA and numbers", out.str(), std::string("NA 3"));

@@ -64,6 +64,13 @@ struct CheckSparse {
     x[0] = T(1), x[1] = T(2), x[2] = T(3), x[3] = T(4);
     const vnl_vector<T> ax = a * x;
     TEST("a*x" + in, ax[0] == T(9) && ax[1] == T(-2) && ax[2] == T(13), true);
+    // A dense 4 x 2 block times a, both column-major as upstream's raw mult takes them: the
+    // columns of p are x and (1, 0, 0, 1); q's column 0 is a * x.
+    const T p[8] = {T(1), T(2), T(3), T(4), T(1), T(0), T(0), T(1)};
+    T q[6];
+    a.mult(4, 2, p, q);
+    TEST("raw mult: column-major result" + in,
+         q[0] == T(9) && q[1] == T(-2) && q[2] == T(13) && q[3] == T(3) && q[4] == T(0) && q[5] == T(1), true);
     vnl_vector<T> y(3, T(1)), ya;
     a.pre_mult(y, ya);
     TEST("y^T a" + in, ya.size() == 4u && ya[3] == T(3) && ya[1] == T(-1), true);

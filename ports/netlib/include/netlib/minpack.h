@@ -14,6 +14,8 @@
 /// (column j of the permutation is column ipvt[j] of the identity), where cminpack's is 1-based.
 #pragma once
 
+inline namespace edgetrack_ports {
+
 namespace netlib {
 
 /// Residuals callback for lmdif: fill fvec (m) at x (n). iflag is 1 or 2 for an evaluation,
@@ -89,3 +91,5 @@ int lmdif(minpack_func_mn<T> fcn, void* p, int m, int n, T* x, T* fvec, T ftol, 
           T* wa3, T* wa4);
 
 }  // namespace netlib
+
+}  // inline namespace edgetrack_ports

@@ -14,6 +14,8 @@
 #include "netlib/minpack.h"
 #include "real/sum_of_products.h"
 
+inline namespace edgetrack_ports {
+
 namespace netlib {
 namespace minpack_detail {
 
@@ -720,3 +722,5 @@ int lmdif(minpack_func_mn<T> fcn, void* p, int m, int n, T* x, T* fvec, T ftol, 
   template int lmdif<T>(minpack_func_mn<T>, void*, int, int, T*, T*, T, T, T, int, T, T*, int, T, int, int*, T*, int, \
                         int*, T*, T*, T*, T*, T*);                                                                    \
   }
+
+}  // inline namespace edgetrack_ports

@@ -4,7 +4,13 @@
 /// and calls testlib_main(); `driver test_name` then runs that one test.
 #pragma once
 
+#ifdef TESTLIB_REGISTER_H_
+#error "edgetrack's drop-in testlib/testlib_register.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <string>
+
+inline namespace edgetrack_ports {
 
 using TestMainFunction = int (*)(int, char*[]);
 
@@ -27,4 +33,7 @@ void testlib_cleanup();
     return status;                            \
   }
 
+}  // inline namespace edgetrack_ports
+
+/// Defined by the test driver (user code), so it stays in the global namespace.
 void register_tests();

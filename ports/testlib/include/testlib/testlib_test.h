@@ -3,10 +3,16 @@
 /// Counts are kept per process; testlib_test_summary() returns the exit status.
 #pragma once
 
+#ifdef testlib_test_h_
+#error "edgetrack's drop-in testlib/testlib_test.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <sstream>
 #include <string>
 #include <type_traits>
+
+inline namespace edgetrack_ports {
 
 void testlib_test_start(const char* name = nullptr);
 void testlib_test_begin(const char* msg);
@@ -160,3 +166,5 @@ void compare(const std::string& msg, const A& a, const B& b, double tol, Check c
     testname(argc, argv);                  \
     SUMMARY();                             \
   }
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,10 @@
 /// Defined only where <cmath> did not define them, so a C library's own values always win.
 #pragma once
 
+#ifdef vcl_cmath_h_
+#error "edgetrack's drop-in vcl/vcl_cmath.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 
 #ifndef M_PI

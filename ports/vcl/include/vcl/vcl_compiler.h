@@ -6,8 +6,12 @@
 
 #include <ctime>
 
+inline namespace edgetrack_ports {
+
 /// Reports `what` on stderr and stops the process (abort(), or exit status 134 with VCL_NO_ABORT).
 [[noreturn]] void vcl_abort(const char* what);
 
 /// time() where the C library has it; otherwise seconds since the epoch from std::chrono.
 std::time_t vcl_time(std::time_t* out);
+
+}  // inline namespace edgetrack_ports

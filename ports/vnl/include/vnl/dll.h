@@ -3,6 +3,10 @@
 /// static, so it expands to nothing.
 #pragma once
 
+#ifdef vnl_dll_h_
+#error "edgetrack's drop-in vnl/dll.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #define VNL_DLL_DATA
 #ifndef VNL_EXPORT
 #define VNL_EXPORT

@@ -5,6 +5,10 @@
 /// declares its own).
 #pragma once
 
+#ifdef vnl_T_n_h_
+#error "edgetrack's drop-in vnl/vnl_T_n.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector_fixed.h"
 
 #define vnl_T_n_class_name(T, n) vnl_##T##_##n

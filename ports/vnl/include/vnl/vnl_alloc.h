@@ -4,9 +4,15 @@
 /// and delete (no shared state), which modern allocators make as fast.
 #pragma once
 
+#ifdef vnl_alloc_h_
+#error "edgetrack's drop-in vnl/vnl_alloc.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <cstring>
 #include <new>
+
+inline namespace edgetrack_ports {
 
 class vnl_alloc {
  public:
@@ -21,3 +27,5 @@ class vnl_alloc {
     return result;
   }
 };
+
+}  // inline namespace edgetrack_ports

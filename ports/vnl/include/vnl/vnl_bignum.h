@@ -10,11 +10,17 @@
 /// (add, subtract, divide, normalize...) are internal here, not declared.
 #pragma once
 
+#ifdef vnl_bignum_h_
+#error "edgetrack's drop-in vnl/vnl_bignum.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 #include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
+
+inline namespace edgetrack_ports {
 
 class vnl_bignum {
  public:
@@ -190,3 +196,5 @@ inline vnl_bignum sqr(const vnl_bignum& x) { return x * x; }
 inline bool isnan(const vnl_bignum&) { return false; }
 inline bool isfinite(const vnl_bignum& x) { return !x.is_infinity(); }
 }  // namespace vnl_math
+
+}  // inline namespace edgetrack_ports

@@ -3,8 +3,14 @@
 /// +Infinity, as upstream).
 #pragma once
 
+#ifdef vnl_bignum_traits_h_
+#error "edgetrack's drop-in vnl/vnl_bignum_traits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_bignum.h"
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 template <>
 class vnl_numeric_traits<vnl_bignum> {
@@ -18,3 +24,5 @@ class vnl_numeric_traits<vnl_bignum> {
   using self = vnl_bignum;
   using signed_t = vnl_bignum;
 };
+
+}  // inline namespace edgetrack_ports

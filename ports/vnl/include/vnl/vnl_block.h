@@ -5,7 +5,13 @@
 /// error, reported by vnl_block_raise_exception (one line on stderr, then vcl_abort).
 #pragma once
 
+#ifdef vnl_block_h_
+#error "edgetrack's drop-in vnl/vnl_block.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
+
+inline namespace edgetrack_ports {
 
 [[noreturn]] void vnl_block_raise_exception(const char* file, int line, const char* why);
 
@@ -110,3 +116,5 @@ template <class T>
 void vnl_block_fill(T x[], unsigned n, T value) {
   std::fill_n(x, n, value);
 }
+
+}  // inline namespace edgetrack_ports

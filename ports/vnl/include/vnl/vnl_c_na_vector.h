@@ -3,12 +3,18 @@
 /// "not available" entries (vnl_na, for double and float; other scalars have no NA).
 #pragma once
 
+#ifdef vnl_c_na_vector_h_
+#error "edgetrack's drop-in vnl/vnl_c_na_vector.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <type_traits>
 
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_na.h"
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 namespace vnl_c_na_detail {
 template <class T>
@@ -86,3 +92,5 @@ class vnl_c_na_vector {
     return v;
   }
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,11 +3,17 @@
 /// containers are built from (sum, norms, dot products, element-wise arithmetic).
 #pragma once
 
+#ifdef vnl_c_vector_h_
+#error "edgetrack's drop-in vnl/vnl_c_vector.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <cstddef>
 
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_c_vector {
@@ -196,3 +202,5 @@ template <class T>
 typename vnl_c_vector<T>::abs_t vnl_c_vector_two_norm(const T* p, unsigned n) {
   return vnl_c_vector<T>::two_norm(p, n);
 }
+
+}  // inline namespace edgetrack_ports

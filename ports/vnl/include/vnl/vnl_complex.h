@@ -3,6 +3,10 @@
 /// squared_magnitude for std::complex (defined with the real forms in vnl_math.h).
 #pragma once
 
+#ifdef vnl_complex_h_
+#error "edgetrack's drop-in vnl/vnl_complex.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_math.h"

@@ -3,7 +3,13 @@
 /// conjugate, and its complexification.
 #pragma once
 
+#ifdef vnl_complex_traits_h_
+#error "edgetrack's drop-in vnl/vnl_complex_traits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
+
+inline namespace edgetrack_ports {
 
 template <class T>
 struct vnl_complex_traits {
@@ -21,3 +27,5 @@ struct vnl_complex_traits<std::complex<T>> {
 
 template <class T>
 struct vnl_complex_traits<const T> : vnl_complex_traits<T> {};
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,10 @@
 /// imaginary part).
 #pragma once
 
+#ifdef vnl_complexify_h_
+#error "edgetrack's drop-in vnl/vnl_complexify.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <complex>
 
@@ -10,6 +14,8 @@
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 void vnl_complexify(const T* R, const T* I, std::complex<T>* C, unsigned n) {
@@ -57,3 +63,5 @@ vnl_matrix_fixed<std::complex<T>, r, c> vnl_complexify(const vnl_matrix_fixed<T,
   vnl_complexify(R.data_block(), C.data_block(), r * c);
   return C;
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,10 @@
 /// an explicit T(value), so fixed point converts too.
 #pragma once
 
+#ifdef vnl_copy_h_
+#error "edgetrack's drop-in vnl/vnl_copy.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cstddef>
 
@@ -12,6 +16,8 @@
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 /// Copies n elements from src to dst, converting each.
 template <class S, class T>
@@ -46,3 +52,5 @@ void vnl_copy(const vnl_diag_matrix<S>& src, vnl_diag_matrix<T>& dst) {
   assert(src.size() == dst.size());
   for (unsigned i = 0; i < src.size(); ++i) dst[i] = T(src[i]);
 }
+
+}  // inline namespace edgetrack_ports

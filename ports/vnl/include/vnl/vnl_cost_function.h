@@ -4,8 +4,14 @@
 /// each default calls the other, so override at least one.
 #pragma once
 
+#ifdef vnl_cost_function_h_
+#error "edgetrack's drop-in vnl/vnl_cost_function.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_unary_function.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_cost_function : public vnl_unary_function<double, vnl_vector<double>> {
  public:
@@ -34,3 +40,5 @@ class vnl_cost_function : public vnl_unary_function<double, vnl_vector<double>> 
  private:
   bool in_default_ = false;  // catches a subclass that overrides neither f, gradf nor compute
 };
+
+}  // inline namespace edgetrack_ports

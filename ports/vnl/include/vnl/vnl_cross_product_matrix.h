@@ -3,9 +3,15 @@
 /// [v]x * w == vnl_cross_3d(v, w).
 #pragma once
 
+#ifdef vnl_cross_product_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_cross_product_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_double_3x3.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_cross_product_matrix : public vnl_double_3x3 {
  public:
@@ -24,3 +30,5 @@ class vnl_cross_product_matrix : public vnl_double_3x3 {
     return *this;
   }
 };
+
+}  // inline namespace edgetrack_ports

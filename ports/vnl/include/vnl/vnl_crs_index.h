@@ -4,8 +4,14 @@
 /// is that index, or -1 where the mask is false.
 #pragma once
 
+#ifdef vnl_crs_index_h_
+#error "edgetrack's drop-in vnl/vnl_crs_index.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <utility>
 #include <vector>
+
+inline namespace edgetrack_ports {
 
 class vnl_crs_index {
  public:
@@ -29,3 +35,5 @@ class vnl_crs_index {
   std::vector<int> col_idx_;
   std::vector<int> row_ptr_ = std::vector<int>(1, 0);
 };
+
+}  // inline namespace edgetrack_ports

@@ -12,10 +12,16 @@
 /// "0.00" is zero) and the double constructor maps infinities and NaN to Inf and NaN.
 #pragma once
 
+#ifdef vnl_decnum_h_
+#error "edgetrack's drop-in vnl/vnl_decnum.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 #include <string>
 #include <type_traits>
 #include <utility>
+
+inline namespace edgetrack_ports {
 
 class vnl_decnum {
   /// The operand types upstream overloads each operator for, besides vnl_decnum.
@@ -215,3 +221,5 @@ inline vnl_decnum min(const vnl_decnum& x, const vnl_decnum& y) { return x < y ?
 inline int sgn(const vnl_decnum& x) { return x.sign() == ' ' ? 0 : x.sign() == '+' ? 1 : -1; }
 inline int sgn0(const vnl_decnum& x) { return x.sign() == '-' ? -1 : 1; }
 }  // namespace vnl_math
+
+}  // inline namespace edgetrack_ports

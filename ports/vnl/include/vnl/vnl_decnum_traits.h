@@ -3,8 +3,14 @@
 /// +Inf and real_t vnl_decnum itself, as upstream).
 #pragma once
 
+#ifdef vnl_decnum_traits_h_
+#error "edgetrack's drop-in vnl/vnl_decnum_traits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_decnum.h"
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 template <>
 class vnl_numeric_traits<vnl_decnum> {
@@ -18,3 +24,5 @@ class vnl_numeric_traits<vnl_decnum> {
   using self = vnl_decnum;
   using signed_t = vnl_decnum;
 };
+
+}  // inline namespace edgetrack_ports

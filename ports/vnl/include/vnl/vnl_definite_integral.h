@@ -5,7 +5,13 @@
 /// apart unless they relied on one integrator seeing another's integrand.
 #pragma once
 
+#ifdef VNL_DEFINITE_INTEGRAL_H_
+#error "edgetrack's drop-in vnl/vnl_definite_integral.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_integrant_fnct.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_definite_integral {
  public:
@@ -16,3 +22,5 @@ class vnl_definite_integral {
  protected:
   vnl_integrant_fnct* pfnct_ = nullptr;
 };
+
+}  // inline namespace edgetrack_ports

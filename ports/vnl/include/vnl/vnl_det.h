@@ -3,10 +3,16 @@
 /// row pointers or from a matrix. Larger matrices go through vnl_determinant (vnl/algo).
 #pragma once
 
+#ifdef vnl_det_h_
+#error "edgetrack's drop-in vnl/vnl_det.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 T vnl_det(const T* row0, const T* row1) {
@@ -75,3 +81,5 @@ T vnl_det(const vnl_matrix<T>& m) {
       return T(0);
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,12 +3,18 @@
 /// with the products, sums and solves that stay cheap on that form. Header-only.
 #pragma once
 
+#ifdef vnl_diag_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_diag_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cstddef>
 #include <ostream>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_diag_matrix {
@@ -165,3 +171,5 @@ template <class T>
 std::ostream& operator<<(std::ostream& s, const vnl_diag_matrix<T>& d) {
   return s << d.diagonal();
 }
+
+}  // inline namespace edgetrack_ports

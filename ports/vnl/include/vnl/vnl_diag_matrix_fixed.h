@@ -3,10 +3,16 @@
 /// its diagonal (vnl_diag_matrix with a size fixed at compile time). Header-only.
 #pragma once
 
+#ifdef vnl_diag_matrix_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_diag_matrix_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int N>
 class vnl_diag_matrix_fixed {
@@ -110,3 +116,5 @@ vnl_matrix_fixed<T, N, N> operator*(const vnl_diag_matrix_fixed<T, N>& d, const 
   }
   return result;
 }
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_double_2.h: vnl_double_2, a fixed vector of 2 doubles.
 #pragma once
 
+#ifdef vnl_double_2_h_
+#error "edgetrack's drop-in vnl/vnl_double_2.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_double_2 = vnl_vector_fixed<double, 2>;
+
+}  // inline namespace edgetrack_ports

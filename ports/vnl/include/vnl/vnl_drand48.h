@@ -5,7 +5,15 @@
 /// vnl_random for a generator of one's own).
 #pragma once
 
+#ifdef __local_drand48_h__
+#error "edgetrack's drop-in vnl/vnl_drand48.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 /// The next number of the 48-bit linear congruential sequence, uniform on [0, 1).
 double vnl_drand48();
 /// Restarts the sequence: the state becomes (seed's low 32 bits << 16) | 0x330E.
 void vnl_srand48(long seed);
+
+}  // inline namespace edgetrack_ports

@@ -4,9 +4,17 @@
 /// scaled complement exp(x^2) erfc(x), by its asymptotic series where erfc underflows.
 #pragma once
 
+#ifdef vnl_erf_h_
+#error "edgetrack's drop-in vnl/vnl_erf.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
+
+inline namespace edgetrack_ports {
 
 inline double vnl_erf(double x) { return std::erf(x); }
 double vnl_erfc(double x);
 /// exp(x^2) erfc(x), finite for large x.
 double vnl_scaled_erfc(double x);
+
+}  // inline namespace edgetrack_ports

@@ -4,9 +4,15 @@
 /// index or size error is a programming error, as upstream treats it).
 #pragma once
 
+#ifdef vnl_error_h_
+#error "edgetrack's drop-in vnl/vnl_error.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <limits>
 #include <type_traits>
+
+inline namespace edgetrack_ports {
 
 [[noreturn]] void vnl_error_vector_index(const char* fcn, int index);
 [[noreturn]] void vnl_error_vector_dimension(const char* fcn, int l1, int l2);
@@ -27,3 +33,5 @@ inline void vnl_error_assert_int_range(T v) {
   }
   (void)v;
 }
+
+}  // inline namespace edgetrack_ports

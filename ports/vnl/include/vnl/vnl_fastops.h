@@ -4,8 +4,14 @@
 /// X +=/-= the same. `out` is resized when its shape differs; X must already have the shape.
 #pragma once
 
+#ifdef vnl_fastops_h_
+#error "edgetrack's drop-in vnl/vnl_fastops.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_fastops {
  public:
@@ -34,3 +40,5 @@ class vnl_fastops {
   /// sum a_i b_i over n elements.
   static double dot(const double* a, const double* b, unsigned int n);
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,10 +4,16 @@
 /// gets one line on stderr naming it.
 #pragma once
 
+#ifdef vnl_file_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_file_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdio>
 #include <fstream>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_file_matrix : public vnl_matrix<T> {
@@ -23,3 +29,5 @@ class vnl_file_matrix : public vnl_matrix<T> {
  private:
   bool ok_ = false;
 };
+
+}  // inline namespace edgetrack_ports

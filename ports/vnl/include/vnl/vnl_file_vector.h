@@ -3,10 +3,16 @@
 /// whitespace-separated values); converts to false when the file cannot be read.
 #pragma once
 
+#ifdef vnl_file_vector_h_
+#error "edgetrack's drop-in vnl/vnl_file_vector.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdio>
 #include <fstream>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_file_vector : public vnl_vector<T> {
@@ -22,3 +28,5 @@ class vnl_file_vector : public vnl_vector<T> {
  private:
   bool ok_ = false;
 };
+
+}  // inline namespace edgetrack_ports

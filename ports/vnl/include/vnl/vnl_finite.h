@@ -6,11 +6,17 @@
 /// (GF(N^M) when that one is irreducible and N prime).
 #pragma once
 
+#ifdef vnl_finite_h_
+#error "edgetrack's drop-in vnl/vnl_finite.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cstddef>
 #include <ostream>
 #include <utility>
 #include <vector>
+
+inline namespace edgetrack_ports {
 
 template <int N>
 class vnl_finite_int {
@@ -46,8 +52,8 @@ class vnl_finite_int {
 
   /// gcd(val, N) == 1.
   bool is_unit() const { return gcd(static_cast<unsigned>(val_)) == 1; }
-  /// A nonzero element that is not a unit.
-  bool is_zero_divisor() const { return val_ != 0 && !is_unit(); }
+  /// Not a unit (0 included, as upstream: division by it is undefined).
+  bool is_zero_divisor() const { return !is_unit(); }
   /// The multiplicative inverse of a unit.
   Base reciproc() const {
     assert(is_unit());
@@ -371,3 +377,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_finite_int_poly<N, M>& r) {
   if (!any) s << '0';
   return s;
 }
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_float_2.h: vnl_float_2, a fixed vector of 2 floats.
 #pragma once
 
+#ifdef vnl_float_2_h_
+#error "edgetrack's drop-in vnl/vnl_float_2.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_float_2 = vnl_vector_fixed<float, 2>;
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_float_2x2.h: vnl_float_2x2, a fixed 2 x 2 matrix of floats.
 #pragma once
 
+#ifdef vnl_float_2x2_h_
+#error "edgetrack's drop-in vnl/vnl_float_2x2.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_float_2x2 = vnl_matrix_fixed<float, 2, 2>;
+
+}  // inline namespace edgetrack_ports

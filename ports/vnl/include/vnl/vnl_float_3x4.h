@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_float_3x4.h: vnl_float_3x4, a fixed 3 x 4 matrix of floats.
 #pragma once
 
+#ifdef vnl_float_3x4_h_
+#error "edgetrack's drop-in vnl/vnl_float_3x4.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_float_3x4 = vnl_matrix_fixed<float, 3, 4>;
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_float_4.h: vnl_float_4, a fixed vector of 4 floats.
 #pragma once
 
+#ifdef vnl_float_4_h_
+#error "edgetrack's drop-in vnl/vnl_float_4.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_float_4 = vnl_vector_fixed<float, 4>;
+
+}  // inline namespace edgetrack_ports

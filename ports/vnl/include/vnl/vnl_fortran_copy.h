@@ -3,7 +3,13 @@
 /// that calls Fortran-ordered routines; converts to T*.
 #pragma once
 
+#ifdef vnl_fortran_copy_h_
+#error "edgetrack's drop-in vnl/vnl_fortran_copy.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_fortran_copy {
@@ -24,3 +30,5 @@ class vnl_fortran_copy {
   int sz;
   T* data;
 };
+
+}  // inline namespace edgetrack_ports

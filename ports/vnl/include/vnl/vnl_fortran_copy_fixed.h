@@ -3,7 +3,13 @@
 /// held by value; converts to T*.
 #pragma once
 
+#ifdef vnl_fortran_copy_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_fortran_copy_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned R, unsigned C>
 class vnl_fortran_copy_fixed {
@@ -18,3 +24,5 @@ class vnl_fortran_copy_fixed {
  protected:
   T data[R * C];
 };
+
+}  // inline namespace edgetrack_ports

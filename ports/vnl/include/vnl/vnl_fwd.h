@@ -2,6 +2,12 @@
 /// Mirrors VXL's core/vnl/vnl_fwd.h: forward declarations of vnl's classes and typedefs.
 #pragma once
 
+#ifdef vnl_fwd_h_
+#error "edgetrack's drop-in vnl/vnl_fwd.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 template <class T>
 class vnl_numeric_traits;
 template <class T>
@@ -57,3 +63,5 @@ using vnl_double_4x4 = vnl_matrix_fixed<double, 4, 4>;
 using vnl_float_2x2 = vnl_matrix_fixed<float, 2, 2>;
 using vnl_float_3x3 = vnl_matrix_fixed<float, 3, 3>;
 using vnl_float_4x4 = vnl_matrix_fixed<float, 4, 4>;
+
+}  // inline namespace edgetrack_ports

@@ -6,7 +6,15 @@
 /// series there (error below 1e-14 for x > 0).
 #pragma once
 
+#ifdef vnl_gamma_h_
+#error "edgetrack's drop-in vnl/vnl_gamma.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
+
+#include "vnl/vnl_math.h"
+
+inline namespace edgetrack_ports {
 
 double vnl_log_gamma(double x);
 inline double vnl_gamma(double x) { return std::exp(vnl_log_gamma(x)); }
@@ -18,3 +26,5 @@ double vnl_gamma_q(double a, double x);
 inline double vnl_cum_prob_chi2(int n_dof, double chi2) { return vnl_gamma_p(n_dof * 0.5, chi2 * 0.5); }
 /// d/dx log gamma(x).
 double vnl_digamma(double x);
+
+}  // inline namespace edgetrack_ports

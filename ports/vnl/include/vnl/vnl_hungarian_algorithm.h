@@ -6,11 +6,17 @@
 /// ties it may pick another optimal one). Costs must be finite.
 #pragma once
 
+#ifdef vnl_hungarian_algorithm_h_
+#error "edgetrack's drop-in vnl/vnl_hungarian_algorithm.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <limits>
 #include <vector>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_hungarian_algorithm {
@@ -100,3 +106,5 @@ typename vnl_hungarian_algorithm<T>::AssignmentMatrixType vnl_hungarian_algorith
   }
   return result;
 }
+
+}  // inline namespace edgetrack_ports

@@ -2,12 +2,18 @@
 /// Mirrors VXL's core/vnl/vnl_imag.h: the imag parts of complex arrays, vectors and matrices.
 #pragma once
 
+#ifdef vnl_imag_h_
+#error "edgetrack's drop-in vnl/vnl_imag.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 void vnl_imag(const std::complex<T>* C, T* R, unsigned int n) {
@@ -37,3 +43,5 @@ vnl_matrix_fixed<T, NRow, NCol> vnl_imag(const vnl_matrix_fixed<std::complex<T>,
   vnl_imag(C.data_block(), R.data_block(), NRow * NCol);
   return R;
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// matrix) in ascending order and reports the original index of each sorted value.
 #pragma once
 
+#ifdef vnl_index_sort_h_
+#error "edgetrack's drop-in vnl/vnl_index_sort.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class TValue, class TIndex>
 class vnl_index_sort {
@@ -53,3 +59,5 @@ class vnl_index_sort {
     }
   }
 };
+
+}  // inline namespace edgetrack_ports

@@ -2,6 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_int_1x1.h: vnl_int_1x1, a fixed 1 x 1 matrix of ints.
 #pragma once
 
+#ifdef vnl_int_1x1_h_
+#error "edgetrack's drop-in vnl/vnl_int_1x1.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 
+inline namespace edgetrack_ports {
+
 using vnl_int_1x1 = vnl_matrix_fixed<int, 1, 1>;
+
+}  // inline namespace edgetrack_ports

@@ -3,11 +3,17 @@
 /// from a double matrix (each element rounded to nearest).
 #pragma once
 
+#ifdef vnl_int_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_int_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_int_matrix : public vnl_matrix<int> {
   using Base = vnl_matrix<int>;
@@ -30,3 +36,5 @@ class vnl_int_matrix : public vnl_matrix<int> {
     return *this;
   }
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,11 +4,17 @@
 /// matrix, as upstream. Larger matrices go through vnl_matrix_inverse (vnl/algo).
 #pragma once
 
+#ifdef vnl_inverse_h_
+#error "edgetrack's drop-in vnl/vnl_inverse.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_det.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 namespace vnl_inverse_detail {
 /// The adjugate of the n x n row-major block a (n <= 4), written to out.
@@ -89,3 +95,5 @@ template <class T>
 vnl_matrix<T> vnl_inverse_transpose(const vnl_matrix<T>& m) {
   return vnl_inverse(m).transpose();
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,10 +4,16 @@
 /// when the least-squares function has no Jacobian). On double, as upstream.
 #pragma once
 
+#ifdef vnl_least_squares_cost_function_h_
+#error "edgetrack's drop-in vnl/vnl_least_squares_cost_function.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_least_squares_function.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_least_squares_cost_function : public vnl_cost_function {
  public:
@@ -33,3 +39,5 @@ class vnl_least_squares_cost_function : public vnl_cost_function {
   vnl_matrix<double> jacobian_;
   vnl_least_squares_function* f_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,8 +6,14 @@
 /// is upstream's class, on double in every build.
 #pragma once
 
+#ifdef vnl_least_squares_function_h_
+#error "edgetrack's drop-in vnl/vnl_least_squares_function.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_least_squares_function_of {
@@ -62,3 +68,5 @@ class vnl_least_squares_function : public vnl_least_squares_function_of<double> 
   vnl_least_squares_function(unsigned int number_of_unknowns, unsigned int number_of_residuals,
                              UseGradient g = use_gradient);
 };
+
+}  // inline namespace edgetrack_ports

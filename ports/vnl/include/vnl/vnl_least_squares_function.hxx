@@ -10,6 +10,8 @@
 #include "vnl/vnl_matrix.hxx"
 #include "vnl/vnl_vector.hxx"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 void vnl_least_squares_function_of<T>::gradf(const vnl_vector<T>& x, vnl_matrix<T>& jacobian) {
   using std::sqrt;
@@ -59,3 +61,5 @@ T vnl_least_squares_function_of<T>::rms(const vnl_vector<T>& x) {
 }
 
 #define VNL_LEAST_SQUARES_FUNCTION_INSTANTIATE(T) template class vnl_least_squares_function_of<T>
+
+}  // inline namespace edgetrack_ports

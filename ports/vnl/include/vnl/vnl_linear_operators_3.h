@@ -4,8 +4,14 @@
 /// values; these are upstream's hand-unrolled overloads).
 #pragma once
 
+#ifdef vnl_linear_operators_3_h_
+#error "edgetrack's drop-in vnl/vnl_linear_operators_3.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_double_3.h"
 #include "vnl/vnl_double_3x3.h"
+
+inline namespace edgetrack_ports {
 
 inline vnl_double_3 operator*(const vnl_double_3x3& A, const vnl_double_3& x) {
   const double* a = A.data_block();
@@ -22,3 +28,5 @@ inline vnl_double_3x3 operator*(const vnl_double_3x3& A, const vnl_double_3x3& B
   }
   return result;
 }
+
+}  // inline namespace edgetrack_ports

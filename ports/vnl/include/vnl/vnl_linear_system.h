@@ -3,7 +3,13 @@
 /// products A x and A^T y (for iterative solvers), with its residual measures.
 #pragma once
 
+#ifdef vnl_linear_system_h_
+#error "edgetrack's drop-in vnl/vnl_linear_system.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_linear_system {
  public:
@@ -41,3 +47,5 @@ inline double vnl_linear_system::get_relative_residual(const vnl_vector<double>&
   get_rhs(b);
   return get_rms_error(x) / b.rms();
 }
+
+}  // inline namespace edgetrack_ports

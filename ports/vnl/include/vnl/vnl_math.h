@@ -6,9 +6,16 @@
 /// double at run time.
 #pragma once
 
+#ifdef vnl_math_h_
+#error "edgetrack's drop-in vnl/vnl_math.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <type_traits>
+
+inline namespace edgetrack_ports {
 
 namespace vnl_math {
 
@@ -30,6 +37,14 @@ constexpr double two_over_sqrtpi = 1.12837916709551257390;
 constexpr double sqrt2 = 1.41421356237309504880;
 constexpr double sqrt1_2 = 0.70710678118654752440;
 constexpr double sqrt1_3 = 0.57735026918962573106;
+constexpr double one_over_sqrt2pi = 0.39894228040143267794;
+/// The Euler-Mascheroni constant (-digamma(1)).
+constexpr double euler = 0.57721566490153286061;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+/// sqrt(eps) of double and of float, as upstream spells them.
+constexpr double sqrteps = 1.490116119384766e-08;
+constexpr float float_eps = std::numeric_limits<float>::epsilon();
+constexpr float float_sqrteps = 3.4526698300e-4f;
 
 /// The constants above as T, computed at compile time.
 template <class T>
@@ -216,3 +231,5 @@ template <class T>
 T vnl_math_hypot(const T& a, const T& b) {
   return vnl_math::hypot(a, b);
 }
+
+}  // inline namespace edgetrack_ports

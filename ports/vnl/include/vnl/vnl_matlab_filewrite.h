@@ -4,12 +4,18 @@
 /// followed by 0, 1, 2... (basename "targetvar" by default, as upstream).
 #pragma once
 
+#ifdef vnl_matlab_filewrite_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_filewrite.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <fstream>
 #include <string>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_matlab_filewrite {
  public:
@@ -32,3 +38,5 @@ class vnl_matlab_filewrite {
 
   std::string make_var_name(const char* variable_name);
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,7 +6,13 @@
 /// vxl_int_32).
 #pragma once
 
+#ifdef vnl_matlab_header_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_header.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdint>
+
+inline namespace edgetrack_ports {
 
 struct vnl_matlab_header {
   std::int32_t type;  // one byte order + one storage + one precision specifier
@@ -44,3 +50,5 @@ inline void swap64(void* ptr) {
   }
 }
 }  // namespace byteswap
+
+}  // inline namespace edgetrack_ports

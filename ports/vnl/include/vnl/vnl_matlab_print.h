@@ -6,6 +6,10 @@
 /// one row per line). Any scalar with a vnl_matlab_print_scalar overload works, `real` too.
 #pragma once
 
+#ifdef vnl_matlab_print_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_print.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iostream>
 
 #include "vnl/vnl_diag_matrix.h"
@@ -16,6 +20,8 @@
 #include "vnl/vnl_matrix_ref.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 /// The numbers of a 1D array, one after the other.
 template <class T>
@@ -91,3 +97,5 @@ std::ostream& vnl_matlab_print(std::ostream& s, const vnl_vector_fixed<T, n>& v,
 /// Upstream's debugging macro: prints X with its own name on std::cerr (upstream goes through
 /// X.as_ref(), which this port's containers do not have).
 #define MATLABPRINT(X) (vnl_matlab_print(std::cerr, (X), #X))
+
+}  // inline namespace edgetrack_ports

@@ -4,9 +4,15 @@
 /// `vnl_matlab_print(std::cerr, M, "M")`.
 #pragma once
 
+#ifdef vnl_matlab_print2_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_print2.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <ostream>
 
 #include "vnl/vnl_matlab_print.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 struct vnl_matlab_print_proxy {
@@ -27,3 +33,5 @@ vnl_matlab_print_proxy<T> vnl_matlab_print(const T& obj, const char* name = null
                                            vnl_matlab_print_format format = vnl_matlab_print_format_default) {
   return vnl_matlab_print_proxy<T>(obj, name, format);
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,12 @@
 /// as upstream in one process-wide stack (not thread-safe); it starts at short.
 #pragma once
 
+#ifdef vnl_matlab_print_format_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_print_format.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 enum vnl_matlab_print_format {
   vnl_matlab_print_format_default,  // whatever the top of the stack says
   vnl_matlab_print_format_short,
@@ -20,3 +26,5 @@ vnl_matlab_print_format vnl_matlab_print_format_set(vnl_matlab_print_format);
 void vnl_matlab_print_format_push(vnl_matlab_print_format f);
 /// Restores the default before the last push (a message on std::cerr if there was none).
 void vnl_matlab_print_format_pop();
+
+}  // inline namespace edgetrack_ports

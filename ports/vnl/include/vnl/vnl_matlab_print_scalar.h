@@ -6,12 +6,18 @@
 /// fixed-point real prints as its double value (text output, not arithmetic on real).
 #pragma once
 
+#ifdef vnl_matlab_print_scalar_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_print_scalar.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <cstddef>
 #include <ostream>
 
 #include "real/fixed64.h"
 #include "vnl/vnl_matlab_print_format.h"
+
+inline namespace edgetrack_ports {
 
 void vnl_matlab_print_scalar(int v, char* buf, std::size_t buf_len,
                              vnl_matlab_print_format = vnl_matlab_print_format_default);
@@ -44,3 +50,5 @@ std::ostream& vnl_matlab_print_scalar(std::ostream& s, T value,
   vnl_matlab_print_scalar(value, buf, sizeof buf, format);
   return s << buf;
 }
+
+}  // inline namespace edgetrack_ports

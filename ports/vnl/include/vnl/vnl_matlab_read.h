@@ -7,6 +7,10 @@
 /// vnl_matrix and, as upstream, aborts on a wrong name or type (false at the end of the data).
 #pragma once
 
+#ifdef vnl_matlab_read_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_read.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <istream>
 #include <string>
@@ -14,6 +18,8 @@
 #include "vnl/vnl_matlab_header.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 /// n values: for complex T the file's real block then its imaginary block, interleaved.
 template <class T>
@@ -71,3 +77,5 @@ template <class T>
 bool vnl_matlab_read_or_die(std::istream& s, vnl_vector<T>& v, const char* name = nullptr);
 template <class T>
 bool vnl_matlab_read_or_die(std::istream& s, vnl_matrix<T>& M, const char* name = nullptr);
+
+}  // inline namespace edgetrack_ports

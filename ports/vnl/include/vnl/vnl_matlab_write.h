@@ -5,7 +5,13 @@
 /// complex types (the real block, then the imaginary one). True when the stream is still good.
 #pragma once
 
+#ifdef vnl_matlab_write_h_
+#error "edgetrack's drop-in vnl/vnl_matlab_write.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <ostream>
+
+inline namespace edgetrack_ports {
 
 template <class T>
 bool vnl_matlab_write(std::ostream& s, const T& x, const char* variable_name);
@@ -13,3 +19,5 @@ template <class T>
 bool vnl_matlab_write(std::ostream& s, const T* v, unsigned size, const char* variable_name);
 template <class T>
 bool vnl_matlab_write(std::ostream& s, const T* const* data, unsigned rows, unsigned cols, const char* variable_name);
+
+}  // inline namespace edgetrack_ports

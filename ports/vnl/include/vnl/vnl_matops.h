@@ -3,8 +3,14 @@
 /// matrices up to scale, and float/double conversion of whole containers.
 #pragma once
 
+#ifdef vnl_matops_h_
+#error "edgetrack's drop-in vnl/vnl_matops.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_matops {
  public:
@@ -21,3 +27,5 @@ class vnl_matops {
   static vnl_matrix<float> d2f(const vnl_matrix<double>&);
   static vnl_vector<float> d2f(const vnl_vector<double>&);
 };
+
+}  // inline namespace edgetrack_ports

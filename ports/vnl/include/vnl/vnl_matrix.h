@@ -5,6 +5,10 @@
 /// vnl_matrix.hxx defines them, instances/ instantiates them per scalar.
 #pragma once
 
+#ifdef vnl_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <initializer_list>
 #include <iosfwd>
@@ -12,6 +16,8 @@
 
 #include "vnl/vnl_numeric_traits.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_matrix_ref;
@@ -98,7 +104,8 @@ class vnl_matrix {
   vnl_matrix& operator-=(const vnl_matrix& rhs);
   vnl_matrix& operator*=(const vnl_matrix& rhs) { return *this = *this * rhs; }
 
-  vnl_matrix operator-() const;
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_matrix<typename vnl_numeric_traits<T>::signed_t> operator-() const;
   vnl_matrix operator+(const T& v) const;
   vnl_matrix operator-(const T& v) const;
   vnl_matrix operator*(const T& v) const;
@@ -255,3 +262,5 @@ template <class T>
 std::ostream& operator<<(std::ostream& s, const vnl_matrix<T>& m);
 template <class T>
 std::istream& operator>>(std::istream& s, vnl_matrix<T>& m);
+
+}  // inline namespace edgetrack_ports

@@ -18,6 +18,8 @@
 #include "vnl/vnl_matrix_ref.h"
 #include "vnl/vnl_vector.hxx"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 void vnl_matrix<T>::make_row_pointers() {
   delete[] row_pointers_;
@@ -232,9 +234,11 @@ vnl_matrix<T>& vnl_matrix<T>::operator-=(const vnl_matrix& rhs) {
 }
 
 template <class T>
-vnl_matrix<T> vnl_matrix<T>::operator-() const {
-  vnl_matrix result(num_rows_, num_cols_);
-  for (std::size_t i = 0; i < size(); ++i) result.data_[i] = -data_[i];
+vnl_matrix<typename vnl_numeric_traits<T>::signed_t> vnl_matrix<T>::operator-() const {
+  using signed_t = typename vnl_numeric_traits<T>::signed_t;
+  vnl_matrix<signed_t> result(num_rows_, num_cols_);
+  signed_t* out = result.data_block();
+  for (std::size_t i = 0; i < size(); ++i) out[i] = -static_cast<signed_t>(data_[i]);
   return result;
 }
 
@@ -800,3 +804,5 @@ std::istream& operator>>(std::istream& s, vnl_matrix<T>& m) {
   template T cos_angle(const vnl_matrix<T>&, const vnl_matrix<T>&);                   \
   template std::ostream& operator<<(std::ostream&, const vnl_matrix<T>&);             \
   template std::istream& operator>>(std::istream&, vnl_matrix<T>&)
+
+}  // inline namespace edgetrack_ports

@@ -4,7 +4,13 @@
 /// norm, is below max_err (upstream's criterion). Works for vnl_matrix and vnl_matrix_fixed.
 #pragma once
 
+#ifdef vnl_matrix_exp_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_exp.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
+
+inline namespace edgetrack_ports {
 
 /// expX = exp(X) to within max_err; returns true.
 template <class SquareMatrix>
@@ -32,3 +38,5 @@ SquareMatrix vnl_matrix_exp(const SquareMatrix& X) {
   vnl_matrix_exp(X, result, 1e-10);
   return result;
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,12 +3,19 @@
 /// with vnl_matrix's names, and its products with vnl_vector_fixed. Header-only.
 #pragma once
 
+#ifdef vnl_matrix_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 
 #include "vnl/vnl_matrix.h"
+#include "vnl/vnl_matrix_ref.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int num_rows, unsigned int num_cols>
 class vnl_matrix_fixed {
@@ -24,6 +31,13 @@ class vnl_matrix_fixed {
     assert(m.rows() == num_rows && m.cols() == num_cols);
     copy_in(m.data_block());
   }
+  /// Copies a dense matrix of the same shape, as upstream's assignment.
+  vnl_matrix_fixed& operator=(const vnl_matrix<T>& m) {
+    assert(m.rows() == num_rows && m.cols() == num_cols);
+    return copy_in(m.data_block());
+  }
+  vnl_matrix_fixed(const vnl_matrix_fixed&) = default;
+  vnl_matrix_fixed& operator=(const vnl_matrix_fixed&) = default;
 
   static constexpr std::size_t rows() { return num_rows; }
   static constexpr std::size_t cols() { return num_cols; }
@@ -58,6 +72,26 @@ class vnl_matrix_fixed {
   }
   /// A heap copy, for code written against vnl_matrix.
   vnl_matrix<T> as_matrix() const { return vnl_matrix<T>(data_block(), num_rows, num_cols); }
+  /// A vnl_matrix viewing this matrix's elements (valid while this matrix lives).
+  vnl_matrix_ref<T> as_ref() { return vnl_matrix_ref<T>(num_rows, num_cols, data_block()); }
+  const vnl_matrix_ref<T> as_ref() const {
+    return vnl_matrix_ref<T>(num_rows, num_cols, const_cast<T*>(data_block()));
+  }
+  /// As upstream's default (VXL_USE_HISTORICAL_IMPLICIT_CONVERSIONS): a fixed matrix passes
+  /// where a const vnl_matrix& is expected, as a view of its elements.
+  operator const vnl_matrix_ref<T>() const { return as_ref(); }
+  explicit operator vnl_matrix<T>() const { return as_matrix(); }
+  /// The element-wise norms, as vnl_matrix's.
+  typename vnl_matrix<T>::abs_t array_one_norm() const { return as_ref().array_one_norm(); }
+  typename vnl_matrix<T>::abs_t array_two_norm() const { return as_ref().array_two_norm(); }
+  typename vnl_matrix<T>::abs_t array_inf_norm() const { return as_ref().array_inf_norm(); }
+  typename vnl_matrix<T>::abs_t absolute_value_sum() const { return array_one_norm(); }
+  typename vnl_matrix<T>::abs_t absolute_value_max() const { return array_inf_norm(); }
+  typename vnl_matrix<T>::abs_t operator_one_norm() const { return as_ref().operator_one_norm(); }
+  /// Writes one row per line, as vnl_matrix.
+  void print(std::ostream& os) const { as_ref().print(os); }
+  /// Reads rows() * cols() whitespace-separated values row by row; false if the stream ran out.
+  bool read_ascii(std::istream& s) { return as_ref().read_ascii(s); }
 
   vnl_matrix_fixed<T, num_cols, num_rows> transpose() const {
     vnl_matrix_fixed<T, num_cols, num_rows> result;
@@ -285,3 +319,26 @@ vnl_matrix_fixed<T, r, c> outer_product(const vnl_vector_fixed<T, r>& a, const v
 }
 
 using vnl_double_3x3 = vnl_matrix_fixed<double, 3, 3>;
+
+template <class T, unsigned r, unsigned c>
+std::ostream& operator<<(std::ostream& os, const vnl_matrix_fixed<T, r, c>& m) {
+  m.print(os);
+  return os;
+}
+template <class T, unsigned r, unsigned c>
+std::istream& operator>>(std::istream& is, vnl_matrix_fixed<T, r, c>& m) {
+  m.read_ascii(is);
+  return is;
+}
+
+/// Products of a fixed and a dense matrix, as upstream's (a dense vnl_matrix result).
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator*(const vnl_matrix_fixed<T, r, c>& a, const vnl_matrix<T>& b) {
+  return a.as_ref() * b;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator*(const vnl_matrix<T>& a, const vnl_matrix_fixed<T, r, c>& b) {
+  return a * b.as_ref();
+}
+
+}  // inline namespace edgetrack_ports

@@ -4,12 +4,18 @@
 /// also writes through. Header-only.
 #pragma once
 
+#ifdef vnl_matrix_fixed_ref_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_fixed_ref.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_matrix_ref.h"
 #include "vnl/vnl_vector_fixed.h"
 #include "vnl/vnl_vector_fixed_ref.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int num_rows, unsigned int num_cols>
 class vnl_matrix_fixed_ref_const {
@@ -189,3 +195,5 @@ vnl_vector_fixed<T, r> operator*(const vnl_matrix_fixed_ref_const<T, r, c>& a,
                                  const vnl_vector_fixed_ref_const<T, c>& v) {
   return a.as_fixed() * v.as_fixed();
 }
+
+}  // inline namespace edgetrack_ports

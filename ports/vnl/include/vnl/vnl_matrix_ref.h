@@ -3,9 +3,15 @@
 /// own. Writes go to the block, assignment copies values into it, and it cannot change size.
 #pragma once
 
+#ifdef vnl_matrix_ref_h_
+#error "edgetrack's drop-in vnl/vnl_matrix_ref.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_matrix_ref : public vnl_matrix<T> {
@@ -27,3 +33,5 @@ class vnl_matrix_ref : public vnl_matrix<T> {
   }
   vnl_matrix<T>& non_const() { return *this; }
 };
+
+}  // inline namespace edgetrack_ports

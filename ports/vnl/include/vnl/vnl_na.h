@@ -4,7 +4,13 @@
 /// ("NA").
 #pragma once
 
+#ifdef vnl_na_h_
+#error "edgetrack's drop-in vnl/vnl_na.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
+
+inline namespace edgetrack_ports {
 
 /// The NA value of the argument's type (the argument only picks the type).
 double vnl_na(double dummy);
@@ -21,14 +27,37 @@ void vnl_na_insert(std::ostream& os, double x);
 void vnl_na_extract(std::istream& is, float& x);
 void vnl_na_insert(std::ostream& os, float x);
 
-/// Stream wrappers: `is >> vnl_na_stream(x)` and `os << vnl_na_stream(x)`.
+/// Stream wrappers for double and float: `is >> vnl_na_stream(x)` and `os << vnl_na_stream(x)`.
+template <class T>
 struct vnl_na_stream_t {
-  double* x;
+  T& x_;
 };
+template <class T>
 struct vnl_na_stream_const_t {
-  double x;
+  const T& x_;
 };
-inline vnl_na_stream_t vnl_na_stream(double& x) { return {&x}; }
-inline vnl_na_stream_const_t vnl_na_stream(const double& x) { return {x}; }
-std::istream& operator>>(std::istream& is, const vnl_na_stream_t& na);
-std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t& na);
+template <class T>
+vnl_na_stream_t<T> vnl_na_stream(T& x) {
+  return {x};
+}
+template <class T>
+vnl_na_stream_const_t<T> vnl_na_stream(const T& x) {
+  return {x};
+}
+template <class T>
+std::istream& operator>>(std::istream& is, const vnl_na_stream_t<T>& na) {
+  vnl_na_extract(is, na.x_);
+  return is;
+}
+template <class T>
+std::ostream& operator<<(std::ostream& os, const vnl_na_stream_t<T>& na) {
+  vnl_na_insert(os, na.x_);
+  return os;
+}
+template <class T>
+std::ostream& operator<<(std::ostream& os, const vnl_na_stream_const_t<T>& na) {
+  vnl_na_insert(os, na.x_);
+  return os;
+}
+
+}  // inline namespace edgetrack_ports

@@ -6,12 +6,18 @@
 /// epsilon: in fixed point a tolerance under one ulp would round to zero.
 #pragma once
 
+#ifdef vnl_nonlinear_minimizer_h_
+#error "edgetrack's drop-in vnl/vnl_nonlinear_minimizer.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <string>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_nonlinear_minimizer_of {
@@ -140,3 +146,5 @@ class vnl_nonlinear_minimizer_of {
 
 /// Upstream's vnl_nonlinear_minimizer: on double, whatever `real` is.
 using vnl_nonlinear_minimizer = vnl_nonlinear_minimizer_of<double>;
+
+}  // inline namespace edgetrack_ports

@@ -6,12 +6,18 @@
 /// real_t, so vnl never leaves fixed point for them.
 #pragma once
 
+#ifdef vnl_numeric_traits_h_
+#error "edgetrack's drop-in vnl/vnl_numeric_traits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
 
 #include "real/fixed64.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_numeric_traits;
@@ -118,3 +124,5 @@ class vnl_numeric_traits<fixedpoint::fixed64<F>> {
 
 template <class T>
 class vnl_numeric_traits<const T> : public vnl_numeric_traits<T> {};
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// first, then the elements lexicographically), so they can be keys of std::map and std::set.
 #pragma once
 
+#ifdef vnl_operators_h_
+#error "edgetrack's drop-in vnl/vnl_operators.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 namespace vnl_operators_detail {
 template <class It>
@@ -37,3 +43,5 @@ template <class T, unsigned r, unsigned c>
 bool operator<(const vnl_matrix_fixed<T, r, c>& lhs, const vnl_matrix_fixed<T, r, c>& rhs) {
   return vnl_operators_detail::less(r * c, lhs.data_block(), r * c, rhs.data_block());
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,11 +5,17 @@
 /// remainder, derivative, primitive and evaluation.
 #pragma once
 
+#ifdef vnl_polynomial_h_
+#error "edgetrack's drop-in vnl/vnl_polynomial.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <iosfwd>
 #include <vector>
 
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_polynomial {
@@ -68,3 +74,5 @@ class vnl_polynomial {
 
 template <class T>
 std::ostream& operator<<(std::ostream& os, const vnl_polynomial<T>& p);
+
+}  // inline namespace edgetrack_ports

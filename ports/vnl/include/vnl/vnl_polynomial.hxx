@@ -7,6 +7,8 @@
 
 #include "vnl/vnl_polynomial.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 vnl_polynomial<T> vnl_polynomial<T>::operator-() const {
   std::vector<T> c(coeffs_);
@@ -133,3 +135,5 @@ std::ostream& operator<<(std::ostream& os, const vnl_polynomial<T>& p) {
 #define VNL_POLYNOMIAL_INSTANTIATE(T) \
   template class vnl_polynomial<T>;   \
   template std::ostream& operator<<(std::ostream&, const vnl_polynomial<T>&)
+
+}  // inline namespace edgetrack_ports

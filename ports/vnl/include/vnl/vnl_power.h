@@ -3,11 +3,17 @@
 /// 4x4, as upstream) inverts with vnl_inverse first.
 #pragma once
 
+#ifdef vnl_power_h_
+#error "edgetrack's drop-in vnl/vnl_power.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_inverse.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int d>
 vnl_matrix_fixed<T, d, d> vnl_power(const vnl_matrix_fixed<T, d, d>& m, int n) {
@@ -32,3 +38,5 @@ vnl_matrix<T> vnl_power(const vnl_matrix<T>& m, int n) {
   const vnl_matrix<T> half = vnl_power(m, n / 2);
   return n % 2 == 0 ? half * half : half * half * m;
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,10 +6,16 @@
 /// Angles are in radians; for fixed-point T the trigonometry runs in T.
 #pragma once
 
+#ifdef vnl_quaternion_h_
+#error "edgetrack's drop-in vnl/vnl_quaternion.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_quaternion : public vnl_vector_fixed<T, 4> {
@@ -64,3 +70,5 @@ class vnl_quaternion : public vnl_vector_fixed<T, 4> {
 /// Prints x y z r.
 template <class T>
 std::ostream& operator<<(std::ostream& os, const vnl_quaternion<T>& q);
+
+}  // inline namespace edgetrack_ports

@@ -10,6 +10,8 @@
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_quaternion.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 vnl_quaternion<T>::vnl_quaternion(const vnl_vector_fixed<T, 3>& axis, double angle) {
   using std::cos;
@@ -156,3 +158,5 @@ std::ostream& operator<<(std::ostream& os, const vnl_quaternion<T>& q) {
 #define VNL_QUATERNION_INSTANTIATE(T) \
   template class vnl_quaternion<T>;   \
   template std::ostream& operator<<(std::ostream&, const vnl_quaternion<T>&)
+
+}  // inline namespace edgetrack_ports

@@ -6,8 +6,14 @@
 /// upstream's numbers. Normal deviates use the Marsaglia polar method, as upstream does.
 #pragma once
 
+#ifdef vnl_random_h
+#error "edgetrack's drop-in vnl/vnl_random.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <array>
 #include <cstdint>
+
+inline namespace edgetrack_ports {
 
 constexpr unsigned int vnl_random_array_size = 4;
 
@@ -58,3 +64,5 @@ class vnl_random {
   double previous_normal_ = 0;
   bool has_previous_normal_ = false;
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,10 +6,16 @@
 /// upstream's exact entries, and have the same rank.
 #pragma once
 
+#ifdef vnl_rank_h_
+#error "edgetrack's drop-in vnl/vnl_rank.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <utility>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 enum vnl_rank_type { vnl_rank_row, vnl_rank_column, vnl_rank_both };
 enum vnl_rank_pivot_type { vnl_rank_pivot_one, vnl_rank_pivot_all };
@@ -63,3 +69,5 @@ unsigned int vnl_rank(const vnl_matrix<T>& mat, vnl_rank_type type = vnl_rank_bo
   }
   return rank;
 }
+
+}  // inline namespace edgetrack_ports

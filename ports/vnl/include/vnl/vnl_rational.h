@@ -5,9 +5,15 @@
 /// would overflow 64 bits gives the nearest representable approximation instead.
 #pragma once
 
+#ifdef vnl_rational_h_
+#error "edgetrack's drop-in vnl/vnl_rational.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdint>
 #include <iosfwd>
 #include <type_traits>
+
+inline namespace edgetrack_ports {
 
 class vnl_rational {
  public:
@@ -102,3 +108,5 @@ inline vnl_rational sqr(const vnl_rational& x) { return x * x; }
 inline bool isnan(const vnl_rational&) { return false; }
 inline bool isfinite(const vnl_rational& x) { return x.is_finite(); }
 }  // namespace vnl_math
+
+}  // inline namespace edgetrack_ports

@@ -2,10 +2,16 @@
 /// Mirrors VXL's core/vnl/vnl_rational_traits.h: vnl_numeric_traits for vnl_rational.
 #pragma once
 
+#ifdef vnl_rational_traits_h_
+#error "edgetrack's drop-in vnl/vnl_rational_traits.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <limits>
 
 #include "vnl/vnl_numeric_traits.h"
 #include "vnl/vnl_rational.h"
+
+inline namespace edgetrack_ports {
 
 template <>
 class vnl_numeric_traits<vnl_rational> {
@@ -19,3 +25,5 @@ class vnl_numeric_traits<vnl_rational> {
   using self = vnl_rational;
   using signed_t = vnl_rational;
 };
+
+}  // inline namespace edgetrack_ports

@@ -2,12 +2,18 @@
 /// Mirrors VXL's core/vnl/vnl_real.h: the real parts of complex arrays, vectors and matrices.
 #pragma once
 
+#ifdef vnl_real_h_
+#error "edgetrack's drop-in vnl/vnl_real.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 void vnl_real(const std::complex<T>* C, T* R, unsigned int n) {
@@ -37,3 +43,5 @@ vnl_matrix_fixed<T, NRow, NCol> vnl_real(const vnl_matrix_fixed<std::complex<T>,
   vnl_real(C.data_block(), R.data_block(), NRow * NCol);
   return R;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,12 +5,18 @@
 /// degrees, and merging of like terms (simplify).
 #pragma once
 
+#ifdef vnl_real_npolynomial_h_
+#error "edgetrack's drop-in vnl/vnl_real_npolynomial.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 #include <string>
 #include <vector>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_real_npolynomial {
  public:
@@ -70,3 +76,5 @@ inline vnl_real_npolynomial operator+(double c, const vnl_real_npolynomial& p) {
 inline vnl_real_npolynomial operator-(double c, const vnl_real_npolynomial& p) { return -p + c; }
 inline vnl_real_npolynomial operator*(double c, const vnl_real_npolynomial& p) { return p * c; }
 std::ostream& operator<<(std::ostream& os, const vnl_real_npolynomial& p);
+
+}  // inline namespace edgetrack_ports

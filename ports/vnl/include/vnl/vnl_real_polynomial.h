@@ -3,20 +3,27 @@
 /// as upstream stores them, highest power first: a[0] x^d + a[1] x^(d-1) + ... + a[d].
 #pragma once
 
+#ifdef vnl_real_polynomial_h_
+#error "edgetrack's drop-in vnl/vnl_real_polynomial.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <iosfwd>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_real_polynomial {
  public:
   /// Coefficients highest power first; an empty vector gives the zero polynomial.
   explicit vnl_real_polynomial(const vnl_vector<double>& a);
   vnl_real_polynomial(const double* a, unsigned len);
-  /// The constant a.
-  explicit vnl_real_polynomial(double a) : coeffs_(1, a) {}
+  /// The constant a; implicit as upstream, so that `p - 2.0` and `2.0 * p` read as polynomials.
+  vnl_real_polynomial(double a) : coeffs_(1, a) {}
   /// The zero polynomial of degree d (d + 1 zero coefficients).
-  explicit vnl_real_polynomial(int d);
+  vnl_real_polynomial(int d);
+  vnl_real_polynomial(unsigned d) : coeffs_(std::size_t(d) + 1, 0.0) {}
 
   bool operator==(const vnl_real_polynomial& p) const { return p.coefficients() == coeffs_; }
 
@@ -64,3 +71,5 @@ vnl_real_polynomial operator*(const vnl_real_polynomial& f, double s);
 /// sqrt of the mean of (f2 - f1)^2 over [x1, x2] (0 when x1 == x2).
 double vnl_rms_difference(const vnl_real_polynomial& f1, const vnl_real_polynomial& f2, double x1, double x2);
 std::ostream& operator<<(std::ostream& os, const vnl_real_polynomial& p);
+
+}  // inline namespace edgetrack_ports

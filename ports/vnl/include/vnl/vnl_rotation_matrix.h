@@ -10,8 +10,14 @@
 /// right-hand rule); R = exp([w]x) rotates column vectors, p' = R * p.
 #pragma once
 
+#ifdef vnl_rotation_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_rotation_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 /// The coefficients of exp([w]x) = I + a [w]x + b [w]x^2 and of the translation part of the
 /// SE(3) exponential, V = I + b [w]x + c [w]x^2, for angle theta = |w|.
@@ -40,8 +46,20 @@ vnl_vector_fixed<T, 3> vnl_rotation_vee(const vnl_matrix_fixed<T, 3, 3>& m);
 template <class T>
 vnl_matrix_fixed<T, 3, 3> vnl_rotation_matrix(const vnl_vector_fixed<T, 3>& w);
 
+/// Upstream's double overloads: the rotation about `axis` by the angle |axis| into R (given as
+/// rows, a row-pointer table, a C array or a vnl matrix); true as upstream (they cannot fail).
+bool vnl_rotation_matrix(const double axis[3], double R[3][3]);
+bool vnl_rotation_matrix(const double axis[3], double** R);
+bool vnl_rotation_matrix(const double axis[3], double* R0, double* R1, double* R2);
+bool vnl_rotation_matrix(const vnl_vector<double>& axis, vnl_matrix<double>& R);
+bool vnl_rotation_matrix(const vnl_vector_fixed<double, 3>& axis, vnl_matrix_fixed<double, 3, 3>& R);
+/// The rotation about a 3-element vnl_vector, as a 3 x 3 vnl_matrix.
+vnl_matrix<double> vnl_rotation_matrix(const vnl_vector<double>& axis);
+
 /// The logarithm: the rotation vector thetaU (theta in [0, pi]) with
 /// vnl_rotation_matrix(thetaU) == R, for a rotation matrix R. Near theta = pi the axis comes
 /// from the symmetric part of R, so it stays accurate there too.
 template <class T>
 vnl_vector_fixed<T, 3> vnl_rotation_thetau(const vnl_matrix_fixed<T, 3, 3>& R);
+
+}  // inline namespace edgetrack_ports

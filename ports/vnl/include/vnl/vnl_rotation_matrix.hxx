@@ -8,6 +8,8 @@
 
 #include "vnl/vnl_rotation_matrix.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_rotation_detail {
 
 /// |w| as m * sqrt(sum (w_i / m)^2), m = max |w_i|: no underflow of the squares in fixed point.
@@ -136,3 +138,5 @@ vnl_vector_fixed<T, 3> vnl_rotation_thetau(const vnl_matrix_fixed<T, 3, 3>& R) {
   template vnl_vector_fixed<T, 3> vnl_rotation_vee(const vnl_matrix_fixed<T, 3, 3>&);                 \
   template vnl_matrix_fixed<T, 3, 3> vnl_rotation_matrix(const vnl_vector_fixed<T, 3>&);              \
   template vnl_vector_fixed<T, 3> vnl_rotation_thetau(const vnl_matrix_fixed<T, 3, 3>&)
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,12 @@
 /// element of [begin, end). User code on double; vnl_random serves one generator per owner.
 #pragma once
 
+#ifdef vnl_sample_h_
+#error "edgetrack's drop-in vnl/vnl_sample.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 /// Seeds from the clock (different runs, different samples).
 void vnl_sample_reseed();
 void vnl_sample_reseed(int seed);
@@ -49,3 +55,5 @@ template <class I, class T>
 inline void vnl_sample_normal(I begin, I end, double mean, double sigma, T /*type*/) {
   for (I p = begin; p != end; ++p) *p = T(vnl_sample_normal(mean, sigma));
 }
+
+}  // inline namespace edgetrack_ports

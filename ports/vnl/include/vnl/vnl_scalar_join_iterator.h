@@ -6,11 +6,17 @@
 /// change or go away while an iterator over it lives.
 #pragma once
 
+#ifdef vnl_scalar_join_iterator_h_
+#error "edgetrack's drop-in vnl/vnl_scalar_join_iterator.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <ostream>
 #include <vector>
 
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 /// A pointer to one element of the join column and the row it came from.
 template <class T>
@@ -108,3 +114,5 @@ class vnl_scalar_join_iterator {
     }
   }
 };
+
+}  // inline namespace edgetrack_ports

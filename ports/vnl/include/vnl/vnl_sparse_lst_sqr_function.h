@@ -9,12 +9,18 @@
 /// double in every build, as vnl_least_squares_function.
 #pragma once
 
+#ifdef vnl_sparse_lst_sqr_function_h_
+#error "edgetrack's drop-in vnl/vnl_sparse_lst_sqr_function.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <vector>
 
 #include "real/real.h"
 #include "vnl/vnl_crs_index.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_sparse_lst_sqr_function_of {
@@ -125,3 +131,5 @@ class vnl_sparse_lst_sqr_function_of {
 };
 
 using vnl_sparse_lst_sqr_function = vnl_sparse_lst_sqr_function_of<double>;
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/vnl_sparse_lst_sqr_function.h"
 #include "vnl/vnl_vector_ref.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_sparse_lst_sqr_detail {
 /// Offsets 0, size, 2 size, ... (count + 1 of them).
 inline std::vector<unsigned int> uniform_offsets(std::size_t count, unsigned int size) {
@@ -245,3 +247,5 @@ void vnl_sparse_lst_sqr_function_of<T>::trace(int, const vnl_vector<T>&, const v
                                               const vnl_vector<T>&) {}
 
 #define VNL_SPARSE_LST_SQR_FUNCTION_INSTANTIATE(T) template class vnl_sparse_lst_sqr_function_of<T>
+
+}  // inline namespace edgetrack_ports

@@ -5,10 +5,16 @@
 /// transposes and upstream's row iteration (reset / next / getrow / getcolumn / value).
 #pragma once
 
+#ifdef vnl_sparse_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_sparse_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <vector>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 /// One stored element: `first` is its column, `second` its value.
 template <class T>
@@ -65,7 +71,8 @@ class vnl_sparse_matrix {
 
   /// result = this * rhs.
   void mult(const vnl_vector<T>& rhs, vnl_vector<T>& result) const;
-  /// q = this * p, p a dense n x m row-major block with n == columns(); q is rows() x m.
+  /// q = this * p, p a dense n x m block with n == columns(), q rows() x m, both column-major
+  /// (element (i, j) at [i + j * rows of that block]), as upstream.
   void mult(unsigned int n, unsigned int m, const T* p, T* q) const;
   /// result = lhs^T * this.
   void pre_mult(const vnl_vector<T>& lhs, vnl_vector<T>& result) const;
@@ -120,3 +127,5 @@ template <class T>
 vnl_sparse_matrix<T> operator*(const T& value, const vnl_sparse_matrix<T>& m) {
   return m * value;
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_sparse_matrix.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 T& vnl_sparse_matrix<T>::operator()(unsigned int r, unsigned int c) {
   assert(r < rs_ && c < cs_);
@@ -97,8 +99,8 @@ void vnl_sparse_matrix<T>::mult(unsigned int n, unsigned int m, const T* p, T* q
   for (unsigned r = 0; r < rs_; ++r) {
     for (unsigned j = 0; j < m; ++j) {
       T total(0);
-      for (const pair_t& e : elements_[r]) total += e.second * p[e.first * m + j];
-      q[r * m + j] = total;
+      for (const pair_t& e : elements_[r]) total += e.second * p[e.first + j * n];
+      q[r + j * rs_] = total;
     }
   }
 }
@@ -317,3 +319,5 @@ T vnl_sparse_matrix<T>::value() const {
 }
 
 #define VNL_SPARSE_MATRIX_INSTANTIATE(T) template class vnl_sparse_matrix<T>
+
+}  // inline namespace edgetrack_ports

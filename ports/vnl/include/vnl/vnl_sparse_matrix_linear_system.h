@@ -4,11 +4,17 @@
 /// Jacobi preconditioner 1 / diag(A^T A).
 #pragma once
 
+#ifdef vnl_sparse_matrix_linear_system_h_
+#error "edgetrack's drop-in vnl/vnl_sparse_matrix_linear_system.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_linear_system.h"
 #include "vnl/vnl_sparse_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_sparse_matrix_linear_system : public vnl_linear_system {
@@ -50,3 +56,5 @@ class vnl_sparse_matrix_linear_system : public vnl_linear_system {
   const vnl_sparse_matrix<T>& A_;
   const vnl_vector<T>& b_;
 };
+
+}  // inline namespace edgetrack_ports

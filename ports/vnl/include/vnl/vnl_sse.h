@@ -6,6 +6,10 @@
 /// same results; VNL_CONFIG_ENABLE_SSE2 is 0.
 #pragma once
 
+#ifdef vnl_sse_h_
+#error "edgetrack's drop-in vnl/vnl_sse.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 
 #include "vnl/vnl_alloc.h"
@@ -17,6 +21,8 @@
 #else
 #define VNL_SSE_STACK_ALIGNED(x)
 #endif
+
+inline namespace edgetrack_ports {
 
 /// n elements of `size` bytes (at least 8 bytes when n is 0); operator new aligns for every
 /// scalar type, which is all the portable kernels need.
@@ -91,3 +97,5 @@ class vnl_sse {
     return best;
   }
 };
+
+}  // inline namespace edgetrack_ports

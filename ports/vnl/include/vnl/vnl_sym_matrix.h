@@ -4,6 +4,10 @@
 /// operator[](i) is row i's i + 1 stored values. Header-only.
 #pragma once
 
+#ifdef vnl_sym_matrix_h_
+#error "edgetrack's drop-in vnl/vnl_sym_matrix.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <cassert>
 #include <ostream>
@@ -12,6 +16,8 @@
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_sym_matrix {
@@ -113,6 +119,11 @@ class vnl_sym_matrix {
   unsigned nn_ = 0;
 };
 
+/// Exchanges the contents of a and b (found by argument-dependent lookup, as upstream's).
+template <class T>
+void swap(vnl_sym_matrix<T>& a, vnl_sym_matrix<T>& b) noexcept {
+  a.swap(b);
+}
 template <class T>
 bool operator==(const vnl_sym_matrix<T>& a, const vnl_sym_matrix<T>& b) {
   return a.rows() == b.rows() && std::equal(a.begin(), a.end(), b.begin());
@@ -149,3 +160,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_sym_matrix<T>& m) {
   }
   return s;
 }
+
+}  // inline namespace edgetrack_ports

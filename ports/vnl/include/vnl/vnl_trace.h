@@ -2,8 +2,14 @@
 /// Mirrors VXL's core/vnl/vnl_trace.h: the sum of the main diagonal.
 #pragma once
 
+#ifdef vnl_trace_h_
+#error "edgetrack's drop-in vnl/vnl_trace.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 T vnl_trace(const vnl_matrix<T>& m) {
@@ -18,3 +24,5 @@ T vnl_trace(const vnl_matrix_fixed<T, r, c>& m) {
   for (unsigned i = 0; i < r && i < c; ++i) total += m(i, i);
   return total;
 }
+
+}  // inline namespace edgetrack_ports

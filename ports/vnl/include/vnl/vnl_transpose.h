@@ -4,10 +4,16 @@
 /// transpose first.
 #pragma once
 
+#ifdef vnl_transpose_h_
+#error "edgetrack's drop-in vnl/vnl_transpose.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_transpose_base {};
 
@@ -70,3 +76,5 @@ template <class T>
 vnl_matrix<T> operator*(const vnl_transpose_of<T>& at, const vnl_transpose_of<T>& bt) {
   return (bt.matrix() * at.matrix()).transpose();
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,11 +6,18 @@
 /// std::complex<double>, std::complex<float> and the configured `real`.
 #pragma once
 
+#ifdef vnl_vector_h_
+#error "edgetrack's drop-in vnl/vnl_vector.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <initializer_list>
 #include <iosfwd>
 
+#include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_numeric_traits.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_matrix;
@@ -93,7 +100,8 @@ class vnl_vector {
   vnl_vector& operator*=(const vnl_matrix<T>& m) { return post_multiply(m); }
 
   vnl_vector operator+() const { return *this; }
-  vnl_vector operator-() const;
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_vector<typename vnl_numeric_traits<T>::signed_t> operator-() const;
   vnl_vector operator+(const T& v) const;
   vnl_vector operator-(const T& v) const;
   vnl_vector operator*(const T& v) const;
@@ -218,3 +226,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_vector<T>& v);
 /// Reads whitespace-separated values (see read_ascii).
 template <class T>
 std::istream& operator>>(std::istream& s, vnl_vector<T>& v);
+
+}  // inline namespace edgetrack_ports

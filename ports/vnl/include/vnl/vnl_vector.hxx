@@ -19,6 +19,8 @@
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_ref.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_detail {
 /// Writes one element as upstream prints it; fixed point prints as a double (I/O only).
 template <class T>
@@ -227,9 +229,11 @@ vnl_vector<T>& vnl_vector<T>::post_multiply(const vnl_matrix<T>& m) {
 }
 
 template <class T>
-vnl_vector<T> vnl_vector<T>::operator-() const {
-  vnl_vector result(size());
-  for (std::size_t i = 0; i < num_elmts_; ++i) result.data_[i] = -data_[i];
+vnl_vector<typename vnl_numeric_traits<T>::signed_t> vnl_vector<T>::operator-() const {
+  using signed_t = typename vnl_numeric_traits<T>::signed_t;
+  vnl_vector<signed_t> result(size());
+  signed_t* out = result.data_block();
+  for (std::size_t i = 0; i < num_elmts_; ++i) out[i] = -static_cast<signed_t>(data_[i]);
   return result;
 }
 
@@ -614,3 +618,5 @@ std::istream& operator>>(std::istream& s, vnl_vector<T>& v) {
   template vnl_numeric_traits<T>::abs_t vnl_vector_ssd(const vnl_vector<T>&, const vnl_vector<T>&);    \
   template std::ostream& operator<<(std::ostream&, const vnl_vector<T>&);                              \
   template std::istream& operator>>(std::istream&, vnl_vector<T>&)
+
+}  // inline namespace edgetrack_ports

@@ -3,12 +3,19 @@
 /// vnl_vector's names. Header-only: every size is instantiated where it is used.
 #pragma once
 
+#ifdef vnl_vector_fixed_h_
+#error "edgetrack's drop-in vnl/vnl_vector_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
 
 #include "vnl/vnl_vector.h"
+#include "vnl/vnl_vector_ref.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int n>
 class vnl_vector_fixed {
@@ -72,6 +79,21 @@ class vnl_vector_fixed {
   }
   /// A heap copy, for code written against vnl_vector.
   vnl_vector<T> as_vector() const { return vnl_vector<T>(data_, n); }
+  /// A vnl_vector viewing this vector's elements (valid while this vector lives).
+  vnl_vector_ref<T> as_ref() { return vnl_vector_ref<T>(n, data_); }
+  const vnl_vector_ref<T> as_ref() const { return vnl_vector_ref<T>(n, const_cast<T*>(data_)); }
+  /// As upstream's default (VXL_USE_HISTORICAL_IMPLICIT_CONVERSIONS): a fixed vector passes
+  /// where a const vnl_vector& is expected, as a view of its elements.
+  operator const vnl_vector_ref<T>() const { return as_ref(); }
+  explicit operator vnl_vector<T>() const { return as_vector(); }
+  T& front() { return data_[0]; }
+  const T& front() const { return data_[0]; }
+  T& back() { return data_[n - 1]; }
+  const T& back() const { return data_[n - 1]; }
+  /// Writes the elements separated by single spaces, as vnl_vector.
+  void print(std::ostream& s) const { s << as_ref(); }
+  /// Reads n whitespace-separated values; false if the stream ran out.
+  bool read_ascii(std::istream& s) { return as_ref().read_ascii(s); }
 
   vnl_vector_fixed& operator+=(const vnl_vector_fixed& rhs) {
     for (unsigned i = 0; i < n; ++i) data_[i] += rhs.data_[i];
@@ -216,3 +238,16 @@ vnl_vector_fixed<T, 3> vnl_cross_3d(const vnl_vector_fixed<T, 3>& a, const vnl_v
 using vnl_double_2 = vnl_vector_fixed<double, 2>;
 using vnl_double_3 = vnl_vector_fixed<double, 3>;
 using vnl_double_4 = vnl_vector_fixed<double, 4>;
+
+template <class T, unsigned int n>
+std::ostream& operator<<(std::ostream& s, const vnl_vector_fixed<T, n>& v) {
+  v.print(s);
+  return s;
+}
+template <class T, unsigned int n>
+std::istream& operator>>(std::istream& s, vnl_vector_fixed<T, n>& v) {
+  v.read_ascii(s);
+  return s;
+}
+
+}  // inline namespace edgetrack_ports

@@ -4,12 +4,18 @@
 /// also writes through to the viewed memory. Header-only.
 #pragma once
 
+#ifdef vnl_vector_fixed_ref_h_
+#error "edgetrack's drop-in vnl/vnl_vector_fixed_ref.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 
 #include "vnl/vnl_c_vector.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
 #include "vnl/vnl_vector_ref.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned int n>
 class vnl_vector_fixed_ref_const {
@@ -157,3 +163,5 @@ template <class T, unsigned n>
 T dot_product(const vnl_vector_fixed_ref_const<T, n>& a, const vnl_vector_fixed_ref_const<T, n>& b) {
   return vnl_c_vector<T>::dot_product(a.data_block(), b.data_block(), n);
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,9 +3,15 @@
 /// Writes go to that memory, assignment copies values into it, and it cannot change size.
 #pragma once
 
+#ifdef vnl_vector_ref_h_
+#error "edgetrack's drop-in vnl/vnl_vector_ref.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_vector_ref : public vnl_vector<T> {
@@ -28,3 +34,5 @@ class vnl_vector_ref : public vnl_vector<T> {
   /// The view as a modifiable vnl_vector (upstream's escape from a const view).
   vnl_vector<T>& non_const() { return *this; }
 };
+
+}  // inline namespace edgetrack_ports

@@ -2,4 +2,8 @@
 /// Instantiates vnl_cholesky for double (upstream: core/vnl/algo/Templates/).
 #include "vnl/algo/vnl_cholesky.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_CHOLESKY_INSTANTIATE(double);
+
+}  // inline namespace edgetrack_ports

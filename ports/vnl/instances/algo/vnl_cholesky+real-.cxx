@@ -5,5 +5,8 @@
 #include "vnl/algo/vnl_cholesky.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE) && !defined(EDGETRACK_REAL_FLOAT)
+inline namespace edgetrack_ports {
+
 VNL_CHOLESKY_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

@@ -2,6 +2,8 @@
 /// Instantiates vnl_levenberg_marquardt_of for double, upstream's scalar, with its one-call form.
 #include "vnl/algo/vnl_levenberg_marquardt.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_LEVENBERG_MARQUARDT_INSTANTIATE(double);
 
 vnl_vector<double> vnl_levenberg_marquardt_minimize(vnl_least_squares_function& f,
@@ -11,3 +13,5 @@ vnl_vector<double> vnl_levenberg_marquardt_minimize(vnl_least_squares_function& 
   lm.minimize(x);
   return x;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,5 +5,8 @@
 #include "vnl/algo/vnl_levenberg_marquardt.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE)
+inline namespace edgetrack_ports {
+
 VNL_LEVENBERG_MARQUARDT_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

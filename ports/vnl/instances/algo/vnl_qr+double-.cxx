@@ -2,4 +2,8 @@
 /// Instantiates vnl_qr for double (upstream: core/vnl/algo/Templates/).
 #include "vnl/algo/vnl_qr.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_QR_INSTANTIATE(double);
+
+}  // inline namespace edgetrack_ports

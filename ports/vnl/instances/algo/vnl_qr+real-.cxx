@@ -5,5 +5,8 @@
 #include "vnl/algo/vnl_qr.hxx"
 
 #if !defined(EDGETRACK_REAL_DOUBLE) && !defined(EDGETRACK_REAL_FLOAT)
+inline namespace edgetrack_ports {
+
 VNL_QR_INSTANTIATE(real);
+}  // inline namespace edgetrack_ports
 #endif

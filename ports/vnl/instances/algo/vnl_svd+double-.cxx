@@ -2,4 +2,8 @@
 /// Instantiates vnl_svd for double (upstream: core/vnl/algo/Templates/).
 #include "vnl/algo/vnl_svd.hxx"
 
+inline namespace edgetrack_ports {
+
 VNL_SVD_INSTANTIATE(double);
+
+}  // inline namespace edgetrack_ports

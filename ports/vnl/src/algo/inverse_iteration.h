@@ -14,6 +14,8 @@
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_algo_detail {
 
 inline vnl_vector<std::complex<double>> inverse_iteration(const vnl_matrix<std::complex<double>>& a,
@@ -59,3 +61,5 @@ inline vnl_vector<std::complex<double>> inverse_iteration(const vnl_matrix<std::
 }
 
 }  // namespace vnl_algo_detail
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 double vnl_adaptsimpson_integral::integral(vnl_integrant_fnct* f, double a, double b, double accuracy) {
   set_fnct(f);
   const double fa = f->f_(a), fb = f->f_(b), fm = f->f_((a + b) / 2);
@@ -20,3 +22,5 @@ double vnl_adaptsimpson_integral::adaptivesimpson(double a, double b, double fa,
   return adaptivesimpson(a, m, fa, flm, fm, left, eps / 2, level + 1) +
          adaptivesimpson(m, b, fm, frm, fb, right, eps / 2, level + 1);
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_least_squares_function.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 using Simplex = std::vector<vnl_amoeba_SimplexCorner>;
@@ -167,3 +169,5 @@ void vnl_amoeba::minimize(vnl_least_squares_function& f, vnl_vector<double>& x) 
   SumOfSquares cost(f);
   minimize(cost, x);
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr double kGolden = 1.618033988749895;  // the step growth between trials
 constexpr double kMaxJump = 100.0;             // parabolic steps go at most this many steps further
@@ -58,3 +60,5 @@ void vnl_bracket_minimum(vnl_cost_function& f, double& a, double& b, double& c, 
     fa = fb, fb = fc, fc = fu;
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -3,6 +3,8 @@
 
 #include "vnl/algo/vnl_bracket_minimum.h"
 
+inline namespace edgetrack_ports {
+
 double vnl_brent::minimize_given_bounds(double ax, double bx, double cx, double tol, double* xmin) {
   set_x_tolerance(tol);
   *xmin = vnl_brent_minimizer::minimize_given_bounds(ax, bx, cx);
@@ -32,3 +34,5 @@ double vnl_brent::minimize(double x) {
   minimize_given_bounds(cx, bx, ax, ftol, &x);
   return x;
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,6 +6,8 @@
 
 #include "vnl/algo/vnl_bracket_minimum.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr double kGoldenSection = 0.3819660112501051;  // (3 - sqrt 5) / 2
 constexpr double kAbsoluteTolerance = 1e-12;            // keeps the test meaningful near x = 0
@@ -82,3 +84,5 @@ double vnl_brent_minimizer::minimize_given_bounds_and_all_f(double ax, double bx
   f_at_last_minimum_ = fx;
   return x;
 }
+
+}  // inline namespace edgetrack_ports

@@ -8,6 +8,8 @@
 
 #include "inverse_iteration.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 using C = std::complex<double>;
@@ -138,3 +140,5 @@ void vnl_complex_eigensystem::compute(const vnl_matrix<C>& A, bool right, bool l
     if (left) L.set_row(k, vnl_algo_detail::inverse_iteration(At, W[k], norm));
   }
 }
+
+}  // inline namespace edgetrack_ports

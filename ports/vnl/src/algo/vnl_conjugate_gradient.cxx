@@ -7,6 +7,8 @@
 
 #include "wolfe_line_search.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 constexpr double kSufficientDecrease = 1e-4;  // c1, as usual
 constexpr double kCurvature = 0.1;            // c2: an accurate search, as conjugacy needs
@@ -72,3 +74,5 @@ void vnl_conjugate_gradient::diagnose_outcome(std::ostream& s) const {
     << num_iterations_ << " iterations, " << num_evaluations_ << " evaluations, final step " << final_step_size_
     << "; start value " << start_error_ << ", end value " << end_error_ << '\n';
 }
+
+}  // inline namespace edgetrack_ports

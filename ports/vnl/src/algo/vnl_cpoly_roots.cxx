@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 using C = std::complex<double>;
@@ -59,3 +61,5 @@ void vnl_cpoly_roots::compute(const vnl_vector<C>& a) {
     if (dp != C(0)) solns[k] -= p / dp;
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 
 #include "vnl/vnl_least_squares_function.h"
 
+inline namespace edgetrack_ports {
+
 bool vnl_discrete_diff_fwd(vnl_least_squares_function* lsf, double h, const vnl_vector<double>& x,
                            vnl_matrix<double>& J) {
   return vnl_discrete_diff_fwd(lsf, vnl_vector<double>(x.size(), h), x, J);
@@ -66,3 +68,5 @@ void vnl_discrete_diff_test_lsf(vnl_least_squares_function* lsf, const vnl_vecto
   std::cerr << "vnl_discrete_diff_test_lsf: e = " << (analytic - differences).fro_norm() << "\nvnl_discrete_diff_test_lsf: t = "
             << cosine << '\n';
 }
+
+}  // inline namespace edgetrack_ports

@@ -14,6 +14,8 @@
 #include "vnl/algo/vnl_fft_base.h"
 #include "vnl/algo/vnl_fft_prime_factors.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 /// N as 2^p 3^q 5^r; false when another prime divides N or N < 1.
@@ -173,3 +175,5 @@ template struct vnl_fft_base<1, float>;
 template struct vnl_fft_base<1, double>;
 template struct vnl_fft_base<2, float>;
 template struct vnl_fft_base<2, double>;
+
+}  // inline namespace edgetrack_ports

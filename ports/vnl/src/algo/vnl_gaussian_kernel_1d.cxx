@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+inline namespace edgetrack_ports {
+
 namespace {
 /// The x where the normalised density 1 / (sigma sqrt(2 pi)) exp(-x^2 / 2 sigma^2) is cutoff.
 double width_at(double sigma, double cutoff) {
@@ -19,3 +21,5 @@ vnl_gaussian_kernel_1d::vnl_gaussian_kernel_1d(double sigma, double cutoff)
 }
 
 double vnl_gaussian_kernel_1d::G(double x) const { return std::exp(-x * x * inscale_); }
+
+}  // inline namespace edgetrack_ports

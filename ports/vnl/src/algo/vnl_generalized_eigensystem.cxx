@@ -6,6 +6,8 @@
 #include "vnl/algo/vnl_cholesky.h"
 #include "vnl/algo/vnl_symmetric_eigensystem.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 /// Solves L X = R for lower-triangular L, in place on R.
@@ -52,3 +54,5 @@ vnl_generalized_eigensystem::vnl_generalized_eigensystem(const vnl_matrix<double
   V = eigenvectors;
   D = vnl_diag_matrix<double>(eigenvalues);
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 
 #include "wolfe_line_search.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 constexpr double kSufficientDecrease = 1e-4;
@@ -88,3 +90,5 @@ bool vnl_lbfgs::minimize(vnl_vector<double>& x) {
   end_error_ = here.f;
   return ok;
 }
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iostream>
 
+inline namespace edgetrack_ports {
+
 vnl_ldl_cholesky::vnl_ldl_cholesky(const vnl_matrix<double>& M, Operation mode)
     : L_(M.rows(), M.cols(), 0.0), d_(M.rows(), 0.0) {
   const unsigned n = M.rows();
@@ -117,3 +119,5 @@ double vnl_ldl_cholesky::xt_m_x(const vnl_vector<double>& x) const {
   }
   return sum;
 }
+
+}  // inline namespace edgetrack_ports

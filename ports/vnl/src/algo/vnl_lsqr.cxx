@@ -4,6 +4,8 @@
 #include <cmath>
 #include <ostream>
 
+inline namespace edgetrack_ports {
+
 int vnl_lsqr::minimize(vnl_vector<double>& x) {
   const unsigned m = ls_->get_number_of_residuals(), n = ls_->get_number_of_unknowns();
   x.set_size(n);
@@ -86,3 +88,5 @@ void vnl_lsqr::translate_return_code(std::ostream& os, int rc) {
   else
     os << "vnl_lsqr: " << kReasons[rc] << '\n';
 }
+
+}  // inline namespace edgetrack_ports

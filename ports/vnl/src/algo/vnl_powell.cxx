@@ -7,6 +7,8 @@
 #include "vnl/algo/vnl_brent_minimizer.h"
 #include "vnl/vnl_matrix.h"
 
+inline namespace edgetrack_ports {
+
 /// f along the line origin + lambda * direction, as a cost of one unknown.
 class vnl_powell_1dfun : public vnl_cost_function {
  public:
@@ -83,3 +85,5 @@ vnl_nonlinear_minimizer::ReturnCodes vnl_powell::minimize(vnl_vector<double>& p)
   }
   return TOO_MANY_ITERATIONS;
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 
 #include "inverse_iteration.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 using C = std::complex<double>;
@@ -184,3 +186,5 @@ vnl_real_eigensystem::vnl_real_eigensystem(const vnl_matrix<double>& M)
     }
   }
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <complex>
 
+inline namespace edgetrack_ports {
+
 namespace {
 
 using C = std::complex<double>;
@@ -215,3 +217,5 @@ std::vector<vnl_vector<double>*> vnl_rnpoly_solve::realroots(double tol) {
     if (i_[k]->squared_magnitude() < tol * tol) roots.push_back(r_[k]);
   return roots;
 }
+
+}  // inline namespace edgetrack_ports

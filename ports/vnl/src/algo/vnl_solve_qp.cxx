@@ -6,6 +6,8 @@
 
 #include "vnl/algo/vnl_svd.h"
 
+inline namespace edgetrack_ports {
+
 bool vnl_solve_qp_with_equality_constraints(const vnl_matrix<double>& H, const vnl_vector<double>& g,
                                             const vnl_matrix<double>& A, const vnl_vector<double>& b,
                                             vnl_vector<double>& x) {
@@ -79,3 +81,5 @@ bool vnl_solve_qp_non_neg_sum_one(const vnl_matrix<double>& H, const vnl_vector<
   return vnl_solve_qp_with_non_neg_constraints(H, g, vnl_matrix<double>(1, H.rows(), 1.0), vnl_vector<double>(1, 1.0),
                                                x, 1e-8, verbose);
 }
+
+}  // inline namespace edgetrack_ports

@@ -6,6 +6,8 @@
 #include <iostream>
 #include <limits>
 
+inline namespace edgetrack_ports {
+
 vnl_sparse_lu::vnl_sparse_lu(const vnl_sparse_matrix<double>& M, operation mode) : A_(M), mode_(mode) {
   if (M.rows() != M.cols()) std::cerr << "vnl_sparse_lu: the matrix is not square\n";
 }
@@ -170,3 +172,5 @@ double vnl_sparse_lu::max_error_bound() {
   if (!(r > 0)) return 0;
   return A_.rows() * std::numeric_limits<double>::epsilon() * largest_ / r;
 }
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/algo/vnl_generalized_eigensystem.h"
 #include "vnl/algo/vnl_symmetric_eigensystem.h"
 
+inline namespace edgetrack_ports {
+
 namespace {
 vnl_matrix<double> dense(const vnl_sparse_matrix<double>& s) {
   vnl_matrix<double> d(s.rows(), s.cols(), 0.0);
@@ -84,3 +86,5 @@ int vnl_sparse_symmetric_eigensystem::RestoreVectors(int n, int m, double* q, in
   std::copy(saved.begin(), saved.end(), q);
   return 0;
 }
+
+}  // inline namespace edgetrack_ports

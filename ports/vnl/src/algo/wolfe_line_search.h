@@ -11,6 +11,8 @@
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_vector.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_algo_detail {
 
 /// A point on the line: the step, x there, f and g there, and the slope g.d.
@@ -128,3 +130,5 @@ bool wolfe_line_search(Evaluate&& evaluate, const LinePoint& start, const vnl_ve
 }
 
 }  // namespace vnl_algo_detail
+
+}  // inline namespace edgetrack_ports

@@ -4,11 +4,17 @@
 /// its capacity, so a vector reused from frame to frame does not reallocate.
 #pragma once
 
+#ifdef _vpColVector_h_
+#error "edgetrack's drop-in visp3/core/vpColVector.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "real/real.h"
+
+inline namespace edgetrack_ports {
 
 class vpColVector {
  public:
@@ -68,3 +74,5 @@ class vpColVector {
 };
 
 inline vpColVector operator*(real s, const vpColVector& v) { return v * s; }
+
+}  // inline namespace edgetrack_ports

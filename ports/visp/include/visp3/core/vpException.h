@@ -3,8 +3,14 @@
 /// upstream throws (a tracker that cannot go on), with upstream's codes and message.
 #pragma once
 
+#ifdef _vpException_h_
+#error "edgetrack's drop-in visp3/core/vpException.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <exception>
 #include <string>
+
+inline namespace edgetrack_ports {
 
 class vpException : public std::exception {
  public:
@@ -32,3 +38,5 @@ class vpException : public std::exception {
   int code_;
   std::string message_;
 };
+
+}  // inline namespace edgetrack_ports

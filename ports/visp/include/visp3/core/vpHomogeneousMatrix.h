@@ -4,11 +4,17 @@
 /// vpPoint products, mean(), the comma initialiser.
 #pragma once
 
+#ifdef VPHOMOGENEOUSMATRIX_HH
+#error "edgetrack's drop-in visp3/core/vpHomogeneousMatrix.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
 #include "visp3/core/vpRotationMatrix.h"
 #include "visp3/core/vpThetaUVector.h"
 #include "visp3/core/vpTranslationVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpPoseVector;
 
@@ -63,3 +69,5 @@ class vpHomogeneousMatrix {
  private:
   real data_[4][4];
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,11 +6,17 @@
 /// read in place); a copy of such an image owns its pixels.
 #pragma once
 
+#ifdef vpImage_H
+#error "edgetrack's drop-in visp3/core/vpImage.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <algorithm>
 #include <cstddef>
 #include <vector>
 
 #include "visp3/core/vpRGBa.h"
+
+inline namespace edgetrack_ports {
 
 template <class Type>
 class vpImage {
@@ -87,3 +93,5 @@ class vpImage {
   unsigned int height = 0;
   unsigned int width = 0;
 };
+
+}  // inline namespace edgetrack_ports

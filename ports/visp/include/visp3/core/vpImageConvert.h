@@ -11,11 +11,17 @@
 /// Upstream computes the same weights in double and truncates; docs/ME.md gives the difference.
 #pragma once
 
+#ifdef vpIMAGECONVERT_H
+#error "edgetrack's drop-in visp3/core/vpImageConvert.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdint>
 #include <vector>
 
 #include "visp3/core/vpImage.h"
 #include "visp3/core/vpRGBa.h"
+
+inline namespace edgetrack_ports {
 
 class vpImageConvert {
  public:
@@ -83,3 +89,5 @@ class vpGreyOnDemand {
   int tiles_down_ = 0;
   unsigned int converted_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// j (= u), on `real`. Drawing and the vpRect helpers are not ported.
 #pragma once
 
+#ifdef vpImagePoint_H
+#error "edgetrack's drop-in visp3/core/vpImagePoint.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 #include <ostream>
 
 #include "real/real.h"
+
+inline namespace edgetrack_ports {
 
 class vpImagePoint {
  public:
@@ -96,3 +102,5 @@ inline vpImagePoint operator/(const vpImagePoint& a, real s) { return vpImagePoi
 inline std::ostream& operator<<(std::ostream& os, const vpImagePoint& ip) {
   return os << static_cast<double>(ip.get_i()) << ", " << static_cast<double>(ip.get_j());
 }
+
+}  // inline namespace edgetrack_ports

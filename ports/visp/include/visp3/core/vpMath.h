@@ -4,9 +4,15 @@
 /// In fixed-point builds the functions also take double (set-up code written for upstream).
 #pragma once
 
+#ifdef vpMATH_HH
+#error "edgetrack's drop-in visp3/core/vpMath.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 
 #include "real/real.h"
+
+inline namespace edgetrack_ports {
 
 class vpMath {
  public:
@@ -54,3 +60,5 @@ class vpMath {
   static real msinc(real sinx, real x);
   static int modulo(int a, int n) { return ((a % n) + n) % n; }
 };
+
+}  // inline namespace edgetrack_ports

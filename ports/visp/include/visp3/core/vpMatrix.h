@@ -7,11 +7,17 @@
 /// SVD library gives: GSL in Debian's build).
 #pragma once
 
+#ifdef vpMatrix_H
+#error "edgetrack's drop-in visp3/core/vpMatrix.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstddef>
 #include <vector>
 
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpMatrix {
  public:
@@ -70,3 +76,5 @@ class vpMatrix {
 };
 
 inline vpMatrix operator*(real s, const vpMatrix& A) { return A * s; }
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// on `real`. Not ported: quaternion extraction, file load/save, the formatted print().
 #pragma once
 
+#ifdef vpPOSEVECTOR_H
+#error "edgetrack's drop-in visp3/core/vpPoseVector.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "real/real.h"
 #include "visp3/core/vpRotationMatrix.h"
 #include "visp3/core/vpThetaUVector.h"
 #include "visp3/core/vpTranslationVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpHomogeneousMatrix;
 
@@ -45,3 +51,5 @@ class vpPoseVector {
  private:
   real data_[6] = {0, 0, 0, 0, 0, 0};
 };
+
+}  // inline namespace edgetrack_ports

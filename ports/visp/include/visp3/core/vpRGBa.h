@@ -3,6 +3,12 @@
 /// Only the members the moving-edge port and its callers use: the four channels and construction.
 #pragma once
 
+#ifdef vpRGBa_h
+#error "edgetrack's drop-in visp3/core/vpRGBa.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 class vpRGBa {
  public:
   enum AlphaDefault { alpha_default = 255 };
@@ -21,3 +27,5 @@ class vpRGBa {
   unsigned char B = 0;
   unsigned char A = alpha_default;
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,10 +4,16 @@
 /// The line and ellipse trackers use TUKEY. The buffers are members and keep their capacity.
 #pragma once
 
+#ifdef vpRobust_h
+#error "edgetrack's drop-in visp3/core/vpRobust.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <vector>
 
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpRobust {
  public:
@@ -34,3 +40,5 @@ class vpRobust {
   std::vector<real> sorted_;
   std::vector<real> normres_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,10 +4,16 @@
 /// Not ported: the Euler-angle and quaternion conversions, mean(), the comma initialiser.
 #pragma once
 
+#ifdef vpROTATIONMATRIX_H
+#error "edgetrack's drop-in visp3/core/vpRotationMatrix.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
 #include "visp3/core/vpMatrix.h"
 #include "visp3/core/vpTranslationVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpHomogeneousMatrix;
 class vpPoseVector;
@@ -60,3 +66,5 @@ class vpRotationMatrix {
  private:
   real data_[3][3];
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,8 +3,14 @@
 /// on `real`. Not ported: the Euler-angle and quaternion conversions.
 #pragma once
 
+#ifdef vpTHETAUVECTOR_H
+#error "edgetrack's drop-in visp3/core/vpThetaUVector.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
+
+inline namespace edgetrack_ports {
 
 class vpHomogeneousMatrix;
 class vpPoseVector;
@@ -47,3 +53,5 @@ class vpThetaUVector {
  private:
   real data_[3] = {0, 0, 0};
 };
+
+}  // inline namespace edgetrack_ports

@@ -2,7 +2,13 @@
 /// Mirrors ViSP's visp3/core/vpTrackingException.h (its codes follow vpException's in upstream).
 #pragma once
 
+#ifdef _vpTrackingException_H
+#error "edgetrack's drop-in visp3/core/vpTrackingException.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "visp3/core/vpException.h"
+
+inline namespace edgetrack_ports {
 
 class vpTrackingException : public vpException {
  public:
@@ -10,3 +16,5 @@ class vpTrackingException : public vpException {
 
   vpTrackingException(int code, const std::string& message) : vpException(code, message) {}
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,9 +3,15 @@
 /// Not ported: the comma initialiser, mean() and the row-vector products.
 #pragma once
 
+#ifdef vpTRANSLATIONVECTOR_H
+#error "edgetrack's drop-in visp3/core/vpTranslationVector.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "real/real.h"
 #include "visp3/core/vpColVector.h"
 #include "visp3/core/vpMatrix.h"
+
+inline namespace edgetrack_ports {
 
 class vpHomogeneousMatrix;
 class vpPoseVector;
@@ -61,3 +67,5 @@ class vpTranslationVector {
  private:
   real data_[3] = {0, 0, 0};
 };
+
+}  // inline namespace edgetrack_ports

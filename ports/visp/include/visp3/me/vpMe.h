@@ -7,10 +7,16 @@
 /// already round(100 * sign * area), an integer); the mask index is clamped to the table.
 #pragma once
 
+#ifdef vpMe_H
+#error "edgetrack's drop-in visp3/me/vpMe.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cstdint>
 #include <vector>
 
 #include "real/real.h"
+
+inline namespace edgetrack_ports {
 
 /// One mask_size x mask_size mask: `mask[a][b]` is the weight of row a, column b.
 class vpMeMask {
@@ -127,3 +133,5 @@ class vpMe {
   bool masks_antisymmetric_ = false;
   std::vector<int16_t> padded_masks_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -18,6 +18,10 @@
 /// from a centre and axes or from arrays of points; the members it makes public stay protected.
 #pragma once
 
+#ifdef vpMeEllipse_HH
+#error "edgetrack's drop-in visp3/me/vpMeEllipse.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <list>
 #include <vector>
 
@@ -26,6 +30,8 @@
 #include "visp3/core/vpImage.h"
 #include "visp3/core/vpImagePoint.h"
 #include "visp3/me/vpMeTracker.h"
+
+inline namespace edgetrack_ports {
 
 class vpMeEllipse : public vpMeTracker {
  public:
@@ -160,3 +166,5 @@ class vpMeEllipse : public vpMeTracker {
   /// ellipse; then the sites are sampled and tracked once.
   void startTracking(const vpImage<unsigned char>& I, const vpImagePoint* first, const vpImagePoint* last);
 };
+
+}  // inline namespace edgetrack_ports

@@ -14,6 +14,10 @@
 /// sites or fewer). Not ported: display(). Differences: docs/ME.md.
 #pragma once
 
+#ifdef vpMeLine_HH
+#error "edgetrack's drop-in visp3/me/vpMeLine.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <list>
 
 #include "real/real.h"
@@ -21,6 +25,8 @@
 #include "visp3/core/vpImagePoint.h"
 #include "visp3/me/vpMeSite.h"
 #include "visp3/me/vpMeTracker.h"
+
+inline namespace edgetrack_ports {
 
 class vpMeLine : public vpMeTracker {
  public:
@@ -70,3 +76,5 @@ class vpMeLine : public vpMeTracker {
   /// or (j, i); marks sites of weight below 0.2 M_ESTIMATOR.
   void fitLine(bool j_on_i, real& x0, real& x1);
 };
+
+}  // inline namespace edgetrack_ports

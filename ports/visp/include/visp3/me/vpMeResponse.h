@@ -16,6 +16,8 @@
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
 
+inline namespace edgetrack_ports {
+
 class vpMeResponse {
  public:
   /// The response of mask `mask_index` of `me`, times `sign` (+1 or -1), in I. I must outlive it.
@@ -198,3 +200,5 @@ class vpMeResponse {
   bool antisymmetric_;
   int first_ = 0, last_i_ = 0, last_j_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

@@ -19,12 +19,18 @@
 /// mask index is kept for the next convolution() with the same alpha.
 #pragma once
 
+#ifdef vpMeSite_H
+#error "edgetrack's drop-in visp3/me/vpMeSite.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cmath>
 
 #include "real/real.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
 #include "visp3/me/vpMeResponse.h"
+
+inline namespace edgetrack_ports {
 
 class vpMeSite {
  public:
@@ -133,3 +139,5 @@ class vpMeSite {
   real mask_alpha_ = 0;
   unsigned int mask_number_ = 0, mask_angle_step_ = 0, mask_index_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

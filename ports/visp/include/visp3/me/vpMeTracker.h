@@ -7,12 +7,18 @@
 /// the vpMe is only read (setMe still takes a pointer, as upstream); no display code.
 #pragma once
 
+#ifdef vpMeTracker_HH
+#error "edgetrack's drop-in visp3/me/vpMeTracker.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <list>
 
 #include "visp3/core/vpImage.h"
 #include "visp3/core/vpImagePoint.h"
 #include "visp3/me/vpMe.h"
 #include "visp3/me/vpMeSite.h"
+
+inline namespace edgetrack_ports {
 
 class vpMeTracker {
  public:
@@ -59,3 +65,5 @@ class vpMeTracker {
   const vpImage<bool>* m_mask = nullptr;
   vpMeSite::vpMeSiteDisplayType selectDisplay = vpMeSite::NONE;
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,8 +4,14 @@
 /// Richardson's correction), down to `depth` levels.
 #pragma once
 
+#ifdef VNL_ADAPTSIMPSON_INTEGRAL_H_
+#error "edgetrack's drop-in vnl/algo/vnl_adaptsimpson_integral.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_definite_integral.h"
 #include "vnl/vnl_integrant_fnct.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_adaptsimpson_integral : public vnl_definite_integral {
  public:
@@ -16,3 +22,5 @@ class vnl_adaptsimpson_integral : public vnl_definite_integral {
   double adaptivesimpson(double a, double b, double fa, double fm, double fb, double whole, double eps, int level);
   int depth_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// square matrix, adj(A) A = det(A) I; each cofactor is a vnl_determinant of a minor.
 #pragma once
 
+#ifdef vnl_adjugate_h_
+#error "edgetrack's drop-in vnl/algo/vnl_adjugate.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/algo/vnl_determinant.h"
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 void vnl_adjugate(const vnl_matrix<T>& A, vnl_matrix<T>* out) {
@@ -39,3 +45,5 @@ vnl_matrix<T> vnl_adjugate(const vnl_matrix<T>& A) {
   vnl_adjugate(A, &result);
   return result;
 }
+
+}  // inline namespace edgetrack_ports

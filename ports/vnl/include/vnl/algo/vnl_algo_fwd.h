@@ -2,6 +2,12 @@
 /// Mirrors VXL's core/vnl/algo/vnl_algo_fwd.h: forward declarations of the vnl_algo classes.
 #pragma once
 
+#ifdef vnl_algo_fwd_h_
+#error "edgetrack's drop-in vnl/algo/vnl_algo_fwd.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
+inline namespace edgetrack_ports {
+
 template <class T>
 class vnl_svd;
 template <class T>
@@ -25,3 +31,5 @@ class vnl_conjugate_gradient;
 class vnl_cpoly_roots;
 class vnl_lbfgs;
 class vnl_levenberg_marquardt;
+
+}  // inline namespace edgetrack_ports

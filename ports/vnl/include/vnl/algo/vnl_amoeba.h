@@ -7,7 +7,13 @@
 /// Upstream's process-wide `default_verbose` is not provided (no shared mutable state here).
 #pragma once
 
+#ifdef vnl_amoeba_h_
+#error "edgetrack's drop-in vnl/algo/vnl_amoeba.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_cost_function;
 class vnl_least_squares_function;
@@ -59,3 +65,5 @@ struct vnl_amoeba_SimplexCorner {
     return (s1.fv > s2.fv) - (s1.fv < s2.fv);
   }
 };
+
+}  // inline namespace edgetrack_ports

@@ -5,8 +5,14 @@
 /// bracket_minimum returns a bracket with ax > bx > cx or the reverse, f(bx) below both ends.
 #pragma once
 
+#ifdef vnl_brent_h_
+#error "edgetrack's drop-in vnl/algo/vnl_brent.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/algo/vnl_brent_minimizer.h"
 #include "vnl/vnl_cost_function.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_brent : public vnl_brent_minimizer {
  public:
@@ -23,3 +29,5 @@ class vnl_brent : public vnl_brent_minimizer {
  private:
   vnl_cost_function* functor_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -5,8 +5,14 @@
 /// minimum from x with vnl_bracket_minimum.
 #pragma once
 
+#ifdef vnl_brent_minimizer_h_
+#error "edgetrack's drop-in vnl/algo/vnl_brent_minimizer.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_nonlinear_minimizer.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_brent_minimizer : public vnl_nonlinear_minimizer_of<double> {
  public:
@@ -28,3 +34,5 @@ class vnl_brent_minimizer : public vnl_nonlinear_minimizer_of<double> {
   vnl_cost_function* f_;
   double f_at_last_minimum_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

@@ -5,7 +5,13 @@
 /// sum (a-b)^2/(a+b), optionally on normalised histograms. Computed in double, as upstream.
 #pragma once
 
+#ifdef vnl_chi_squared_h_
+#error "edgetrack's drop-in vnl/algo/vnl_chi_squared.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_gamma.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 double vnl_chi_squared_cumulative(T chisq, long dof) {
@@ -43,3 +49,5 @@ template <class T>
 double vnl_chi_squared_statistic_12(const T* A, const T* B, int n, bool normalize) {
   return vnl_chi_squared_detail::statistic(A, B, n, normalize, [](double a, double b) { return a + b; });
 }
+
+}  // inline namespace edgetrack_ports

@@ -8,8 +8,14 @@
 /// computed exactly from the factor, where dpoco estimates it; both are the same quantity.
 #pragma once
 
+#ifdef vnl_cholesky_h_
+#error "edgetrack's drop-in vnl/algo/vnl_cholesky.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_cholesky_of {
@@ -42,3 +48,5 @@ class vnl_cholesky_of {
 };
 
 using vnl_cholesky = vnl_cholesky_of<double>;
+
+}  // inline namespace edgetrack_ports

@@ -9,6 +9,8 @@
 #include "vnl/algo/vnl_cholesky.h"
 #include "vnl/vnl_math.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 vnl_cholesky_of<T>::vnl_cholesky_of(const vnl_matrix<T>& M, Operation mode) : L_(M.rows(), M.cols()) {
   using std::sqrt;
@@ -101,3 +103,5 @@ vnl_matrix<T> vnl_cholesky_of<T>::upper_triangle() const {
 }
 
 #define VNL_CHOLESKY_INSTANTIATE(T) template class vnl_cholesky_of<T>
+
+}  // inline namespace edgetrack_ports

@@ -6,10 +6,16 @@
 /// for the vectors (upstream: LAPACK zgeev). The order of the eigenvalues is not upstream's.
 #pragma once
 
+#ifdef vnl_complex_eigensystem_h_
+#error "edgetrack's drop-in vnl/algo/vnl_complex_eigensystem.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_complex_eigensystem {
  public:
@@ -29,3 +35,5 @@ class vnl_complex_eigensystem {
  private:
   void compute(const vnl_matrix<std::complex<double>>& A, bool right, bool left);
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,11 +6,17 @@
 /// 1e-5) within maxfev iterations, and fails when no step lowers f along a descent direction.
 #pragma once
 
+#ifdef vnl_conjugate_gradient_h_
+#error "edgetrack's drop-in vnl/algo/vnl_conjugate_gradient.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_nonlinear_minimizer.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_conjugate_gradient : public vnl_nonlinear_minimizer {
  public:
@@ -32,3 +38,5 @@ class vnl_conjugate_gradient : public vnl_nonlinear_minimizer {
   vnl_cost_function* f_ = nullptr;
   double final_step_size_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

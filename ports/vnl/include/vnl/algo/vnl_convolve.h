@@ -7,10 +7,16 @@
 /// matrix forms it never defines; they are left out here.
 #pragma once
 
+#ifdef vnl_convolve_h_
+#error "edgetrack's drop-in vnl/algo/vnl_convolve.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/algo/vnl_fft_1d.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 namespace vnl_convolve_detail {
 
@@ -82,3 +88,5 @@ vnl_vector<U> vnl_convolve_cyclic(const vnl_vector<T1>& v1, const vnl_vector<T2>
     for (unsigned int i = 0; i < n; ++i) r[k] += U(v1[(k + n - i) % n]) * U(v2[i]);
   return r;
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,9 +5,15 @@
 /// of the companion matrix). The order of the roots is not upstream's.
 #pragma once
 
+#ifdef vnl_cpoly_roots_h_
+#error "edgetrack's drop-in vnl/algo/vnl_cpoly_roots.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_cpoly_roots {
  public:
@@ -20,3 +26,5 @@ class vnl_cpoly_roots {
   unsigned N;
   void compute(const vnl_vector<std::complex<double>>& a);
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,6 +4,10 @@
 /// scale rows and columns to unit norm first, for range) is honoured the same way.
 #pragma once
 
+#ifdef vnl_algo_determinant_h_
+#error "edgetrack's drop-in vnl/algo/vnl_determinant.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 #include <cmath>
 
@@ -11,6 +15,8 @@
 #include "vnl/vnl_det.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 T vnl_determinant(const T* row0, const T* row1) {
@@ -62,3 +68,5 @@ template <class T, unsigned m, unsigned n>
 T vnl_determinant(const vnl_matrix_fixed<T, m, n>& M, bool balance = false) {
   return vnl_determinant(M.as_matrix(), balance);
 }
+
+}  // inline namespace edgetrack_ports

@@ -5,8 +5,14 @@
 /// Each returns false as soon as the function reports a failure.
 #pragma once
 
+#ifdef vnl_discrete_diff_h_
+#error "edgetrack's drop-in vnl/algo/vnl_discrete_diff.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_least_squares_function;
 
@@ -24,3 +30,5 @@ bool vnl_discrete_diff_sym(vnl_least_squares_function* lsf, const vnl_vector<dou
 /// Prints to stderr how far lsf's gradf is from symmetric differences with step 1e-4: the
 /// Frobenius norm of the difference and the cosine between the two Jacobians.
 void vnl_discrete_diff_test_lsf(vnl_least_squares_function* lsf, const vnl_vector<double>& x);
+
+}  // inline namespace edgetrack_ports

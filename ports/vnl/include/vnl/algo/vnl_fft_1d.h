@@ -3,11 +3,17 @@
 /// complex values (see vnl_fft_base.h for the sign; no normalisation, so bwd(fwd(x)) = N x).
 #pragma once
 
+#ifdef vnl_fft_1d_h_
+#error "edgetrack's drop-in vnl/algo/vnl_fft_1d.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 #include <vector>
 
 #include "vnl/algo/vnl_fft_base.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 struct vnl_fft_1d : public vnl_fft_base<1, T> {
@@ -26,3 +32,5 @@ struct vnl_fft_1d : public vnl_fft_base<1, T> {
   void bwd_transform(std::complex<T>* signal) { transform(signal, -1); }
   void bwd_transform(vnl_vector<std::complex<T>>& signal) { transform(signal, -1); }
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// M and N each 2^p 3^q 5^r (see vnl_fft_base.h for the sign; no normalisation).
 #pragma once
 
+#ifdef vnl_fft_2d_h_
+#error "edgetrack's drop-in vnl/algo/vnl_fft_2d.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/algo/vnl_fft_base.h"
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 struct vnl_fft_2d : public vnl_fft_base<2, T> {
@@ -22,3 +28,5 @@ struct vnl_fft_2d : public vnl_fft_base<2, T> {
   unsigned rows() const { return static_cast<unsigned>(base::factors_[0].number()); }
   unsigned cols() const { return static_cast<unsigned>(base::factors_[1].number()); }
 };
+
+}  // inline namespace edgetrack_ports

@@ -5,9 +5,15 @@
 /// dir = -1 the conjugate; neither divides by N.
 #pragma once
 
+#ifdef vnl_fft_base_h_
+#error "edgetrack's drop-in vnl/algo/vnl_fft_base.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/algo/vnl_fft_prime_factors.h"
+
+inline namespace edgetrack_ports {
 
 template <int D, class T>
 struct vnl_fft_base {
@@ -17,3 +23,5 @@ struct vnl_fft_base {
  protected:
   vnl_fft_prime_factors<T> factors_[D];
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,8 +4,14 @@
 /// prime factor (or is not positive). Not copyable, as upstream.
 #pragma once
 
+#ifdef vnl_fft_prime_factors_h_
+#error "edgetrack's drop-in vnl/algo/vnl_fft_prime_factors.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <array>
 #include <vector>
+
+inline namespace edgetrack_ports {
 
 template <class T>
 struct vnl_fft_prime_factors {
@@ -31,3 +37,5 @@ struct vnl_fft_prime_factors {
   std::array<long, 3> pqr_{};
   long info_ = -1;
 };
+
+}  // inline namespace edgetrack_ports

@@ -4,7 +4,13 @@
 /// cutoff, scaled so that the half sums to 0.5. G(x) = exp(-x^2 / 2 sigma^2), unnormalised.
 #pragma once
 
+#ifdef vnl_gaussian_kernel_1d_h_
+#error "edgetrack's drop-in vnl/algo/vnl_gaussian_kernel_1d.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_gaussian_kernel_1d {
  public:
@@ -17,3 +23,5 @@ class vnl_gaussian_kernel_1d {
   vnl_vector<double> vec_;
   double inscale_;
 };
+
+}  // inline namespace edgetrack_ports

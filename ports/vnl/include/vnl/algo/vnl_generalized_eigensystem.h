@@ -6,8 +6,14 @@
 /// is not positive definite.
 #pragma once
 
+#ifdef vnl_generalized_eigensystem_h_
+#error "edgetrack's drop-in vnl/algo/vnl_generalized_eigensystem.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_diag_matrix.h"
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_generalized_eigensystem {
  public:
@@ -18,3 +24,5 @@ class vnl_generalized_eigensystem {
   /// The eigenvalues.
   vnl_diag_matrix<double> D;
 };
+
+}  // inline namespace edgetrack_ports

@@ -8,6 +8,8 @@
 
 #include "vnl/vnl_math.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_jacobi {
 /// t = tan(theta) of the rotation that zeroes gamma in [alpha gamma; gamma beta]: the root of
 /// t^2 + 2 zeta t - 1 = 0 of smaller magnitude, zeta = (beta - alpha) / (2 gamma). For |zeta|
@@ -37,3 +39,5 @@ T rounding_floor(unsigned terms) {
 /// The sweep limit; cyclic Jacobi converges quadratically, in well under 20 sweeps.
 constexpr int kMaxSweeps = 60;
 }  // namespace vnl_jacobi
+
+}  // inline namespace edgetrack_ports

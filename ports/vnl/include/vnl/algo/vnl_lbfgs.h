@@ -6,9 +6,15 @@
 /// search finds no lower point or after maxfev evaluations. x is the best point seen.
 #pragma once
 
+#ifdef vnl_lbfgs_h_
+#error "edgetrack's drop-in vnl/algo/vnl_lbfgs.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_nonlinear_minimizer.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_lbfgs : public vnl_nonlinear_minimizer {
  public:
@@ -27,3 +33,5 @@ class vnl_lbfgs : public vnl_nonlinear_minimizer {
  private:
   vnl_cost_function* f_ = nullptr;
 };
+
+}  // inline namespace edgetrack_ports

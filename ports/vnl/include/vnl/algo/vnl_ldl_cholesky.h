@@ -7,8 +7,14 @@
 /// with estimate_condition, rcond() is 1 / (|M|_1 |M^-1|_1), computed exactly.
 #pragma once
 
+#ifdef vnl_ldl_cholesky_h_
+#error "edgetrack's drop-in vnl/algo/vnl_ldl_cholesky.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_ldl_cholesky {
  public:
@@ -51,3 +57,5 @@ class vnl_ldl_cholesky {
  private:
   void inplace_solve(double* x) const;
 };
+
+}  // inline namespace edgetrack_ports

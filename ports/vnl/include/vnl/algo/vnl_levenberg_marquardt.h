@@ -9,6 +9,10 @@
 /// count residual evaluations; get_num_jacobian_evaluations() gives MINPACK's iterations.
 #pragma once
 
+#ifdef vnl_levenberg_marquardt_h_
+#error "edgetrack's drop-in vnl/algo/vnl_levenberg_marquardt.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 #include "vnl/vnl_least_squares_function.h"
@@ -16,6 +20,8 @@
 #include "vnl/vnl_nonlinear_minimizer.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_levenberg_marquardt_of : public vnl_nonlinear_minimizer_of<T> {
@@ -77,3 +83,5 @@ class vnl_levenberg_marquardt : public vnl_levenberg_marquardt_of<double> {
 /// Upstream's one-call form: minimises f from initial_estimate and returns the estimate.
 vnl_vector<double> vnl_levenberg_marquardt_minimize(vnl_least_squares_function& f,
                                                     const vnl_vector<double>& initial_estimate);
+
+}  // inline namespace edgetrack_ports

@@ -10,6 +10,8 @@
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_least_squares_function.hxx"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 vnl_levenberg_marquardt_of<T>::vnl_levenberg_marquardt_of(vnl_least_squares_function_of<T>& f) : f_(&f) {
   this->maxfev = 400 * static_cast<int>(f.get_number_of_unknowns());
@@ -233,3 +235,5 @@ const vnl_matrix<T>& vnl_levenberg_marquardt_of<T>::get_JtJ() {
 }
 
 #define VNL_LEVENBERG_MARQUARDT_INSTANTIATE(T) template class vnl_levenberg_marquardt_of<T>
+
+}  // inline namespace edgetrack_ports

@@ -7,10 +7,16 @@
 /// ill-conditioned, 7 the iteration limit.
 #pragma once
 
+#ifdef vnl_lsqr_h_
+#error "edgetrack's drop-in vnl/algo/vnl_lsqr.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 #include "vnl/vnl_linear_system.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_lsqr {
  public:
@@ -34,3 +40,5 @@ class vnl_lsqr {
   double A_condition_estimate_ = 0;
   long return_code_ = 0;
 };
+
+}  // inline namespace edgetrack_ports

@@ -2,10 +2,16 @@
 /// Mirrors VXL's core/vnl/algo/vnl_matrix_update.h: the rank-one update M += a b^T in place.
 #pragma once
 
+#ifdef vnl_matrix_update_h_
+#error "edgetrack's drop-in vnl/algo/vnl_matrix_update.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <cassert>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 void vnl_matrix_update(vnl_matrix<T>& M, const vnl_vector<T>& a, const vnl_vector<T>& b) {
@@ -14,3 +20,5 @@ void vnl_matrix_update(vnl_matrix<T>& M, const vnl_vector<T>& a, const vnl_vecto
     for (std::size_t j = 0; j < M.cols(); ++j) M(i, j) += a[i] * b[j];
   }
 }
+
+}  // inline namespace edgetrack_ports

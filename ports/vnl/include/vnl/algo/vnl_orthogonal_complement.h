@@ -3,9 +3,15 @@
 /// orthonormal columns span the space orthogonal to v (from the SVD of v as a row).
 #pragma once
 
+#ifdef vnl_orthogonal_complement_h_
+#error "edgetrack's drop-in vnl/algo/vnl_orthogonal_complement.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 vnl_matrix<T> vnl_orthogonal_complement(const vnl_vector<T>& v) {
@@ -14,3 +20,5 @@ vnl_matrix<T> vnl_orthogonal_complement(const vnl_vector<T>& v) {
   row.set_row(0, v);
   return vnl_svd<T>(row).V().extract(n, n - 1, 0, 1);
 }
+
+}  // inline namespace edgetrack_ports

@@ -7,9 +7,15 @@
 /// iterations (TOO_MANY_ITERATIONS), or when report_iter asks to (FAILED_USER_REQUEST).
 #pragma once
 
+#ifdef vnl_powell_h_
+#error "edgetrack's drop-in vnl/algo/vnl_powell.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_cost_function.h"
 #include "vnl/vnl_nonlinear_minimizer.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_powell : public vnl_nonlinear_minimizer {
  public:
@@ -30,3 +36,5 @@ class vnl_powell : public vnl_nonlinear_minimizer {
   double linmin_xtol_ = 1e-4;
   double initial_step_ = 1.0;
 };
+
+}  // inline namespace edgetrack_ports

@@ -6,8 +6,14 @@
 /// reflection (a row of R and the matching column of Q may both change sign).
 #pragma once
 
+#ifdef vnl_qr_h_
+#error "edgetrack's drop-in vnl/algo/vnl_qr.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_qr {
@@ -44,3 +50,5 @@ template <class T>
 T vnl_qr_determinant(const vnl_matrix<T>& m) {
   return vnl_qr<T>(m).determinant();
 }
+
+}  // inline namespace edgetrack_ports

@@ -8,6 +8,8 @@
 #include "vnl/algo/vnl_qr.h"
 #include "vnl/vnl_math.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 vnl_qr<T>::vnl_qr(const vnl_matrix<T>& M) : Q_(M.rows(), M.rows()), R_(M) {
   using std::sqrt;
@@ -84,3 +86,5 @@ vnl_matrix<T> vnl_qr<T>::inverse() const {
 }
 
 #define VNL_QR_INSTANTIATE(T) template class vnl_qr<T>
+
+}  // inline namespace edgetrack_ports

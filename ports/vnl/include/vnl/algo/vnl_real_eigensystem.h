@@ -10,10 +10,16 @@
 /// eigenvector for each copy.
 #pragma once
 
+#ifdef vnl_real_eigensystem_h_
+#error "edgetrack's drop-in vnl/algo/vnl_real_eigensystem.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <complex>
 
 #include "vnl/vnl_diag_matrix.h"
 #include "vnl/vnl_matrix.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_real_eigensystem {
  public:
@@ -23,3 +29,5 @@ class vnl_real_eigensystem {
   vnl_matrix<std::complex<double>> V;
   vnl_diag_matrix<std::complex<double>> D;
 };
+
+}  // inline namespace edgetrack_ports

@@ -10,11 +10,17 @@
 /// exactly 0 once Newton's method in real arithmetic converges from its real part.
 #pragma once
 
+#ifdef vnl_rnpoly_solve_h_
+#error "edgetrack's drop-in vnl/algo/vnl_rnpoly_solve.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <memory>
 #include <vector>
 
 #include "vnl/vnl_real_npolynomial.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_rnpoly_solve {
  public:
@@ -34,3 +40,5 @@ class vnl_rnpoly_solve {
   std::vector<vnl_vector<double>*> i_;
   std::vector<std::unique_ptr<vnl_vector<double>>> storage_;
 };
+
+}  // inline namespace edgetrack_ports

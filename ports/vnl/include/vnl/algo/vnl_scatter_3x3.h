@@ -5,8 +5,14 @@
 /// computed on demand. As upstream, an asymmetric scatter gets no eigensystem (a warning).
 #pragma once
 
+#ifdef vnl_scatter_3x3_h_
+#error "edgetrack's drop-in vnl/algo/vnl_scatter_3x3.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_scatter_3x3 : public vnl_matrix_fixed<T, 3, 3> {
@@ -41,3 +47,5 @@ class vnl_scatter_3x3 : public vnl_matrix_fixed<T, 3, 3> {
   vnl_matrix_fixed<T, 3, 3> V_;
   vnl_vector_fixed<T, 3> D;
 };
+
+}  // inline namespace edgetrack_ports

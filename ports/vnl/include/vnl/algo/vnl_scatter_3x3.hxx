@@ -8,6 +8,8 @@
 #include "vnl/algo/vnl_scatter_3x3.h"
 #include "vnl/algo/vnl_symmetric_eigensystem.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 void vnl_scatter_3x3<T>::add_outer_product(const vnl_vector_fixed<T, 3>& v) {
   for (unsigned i = 0; i < 3; ++i) {
@@ -72,3 +74,5 @@ void vnl_scatter_3x3<T>::compute_eigensystem() {
 }
 
 #define VNL_SCATTER_3X3_INSTANTIATE(T) template class vnl_scatter_3x3<T>
+
+}  // inline namespace edgetrack_ports

@@ -9,8 +9,14 @@
 /// infeasible start or a singular system).
 #pragma once
 
+#ifdef vnl_solve_qp_h_
+#error "edgetrack's drop-in vnl/algo/vnl_solve_qp.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 bool vnl_solve_qp_with_equality_constraints(const vnl_matrix<double>& H, const vnl_vector<double>& g,
                                             const vnl_matrix<double>& A, const vnl_vector<double>& b,
@@ -23,3 +29,5 @@ bool vnl_solve_qp_with_non_neg_constraints(const vnl_matrix<double>& H, const vn
 /// x must satisfy sum(x) = 1 and x(i) >= 0 on entry.
 bool vnl_solve_qp_non_neg_sum_one(const vnl_matrix<double>& H, const vnl_vector<double>& g, vnl_vector<double>& x,
                                   bool verbose = true);
+
+}  // inline namespace edgetrack_ports

@@ -9,11 +9,17 @@
 /// (upstream: Sparse's own roundoff estimate, so other numbers).
 #pragma once
 
+#ifdef vnl_sparse_lu_h_
+#error "edgetrack's drop-in vnl/algo/vnl_sparse_lu.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <map>
 #include <vector>
 
 #include "vnl/vnl_sparse_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_sparse_lu {
  public:
@@ -53,3 +59,5 @@ class vnl_sparse_lu {
   std::vector<std::map<unsigned, double>> L_;  ///< strictly lower part, unit diagonal implied
   std::vector<std::map<unsigned, double>> U_;  ///< upper part with the diagonal
 };
+
+}  // inline namespace edgetrack_ports

@@ -9,10 +9,16 @@
 /// success, non-zero for bad input (too many pairs, sizes that differ, B not positive definite).
 #pragma once
 
+#ifdef vnl_sparse_symmetric_eigensystem_h_
+#error "edgetrack's drop-in vnl/algo/vnl_sparse_symmetric_eigensystem.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <vector>
 
 #include "vnl/vnl_sparse_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 class vnl_sparse_symmetric_eigensystem {
  public:
@@ -44,3 +50,5 @@ class vnl_sparse_symmetric_eigensystem {
   void keep(const vnl_matrix<double>& V, const vnl_vector<double>& D, int nEV, bool smallest, bool magnitude,
             double sigma);
 };
+
+}  // inline namespace edgetrack_ports

@@ -11,12 +11,18 @@
 /// codes may. It works in T throughout, so a fixed-point `real` SVD has no floating point.
 #pragma once
 
+#ifdef vnl_svd_h_
+#error "edgetrack's drop-in vnl/algo/vnl_svd.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include <iosfwd>
 
 #include "vnl/vnl_diag_matrix.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_numeric_traits.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class T>
 class vnl_svd {
@@ -101,3 +107,5 @@ class vnl_svd {
 /// Prints U, W and V.
 template <class T>
 std::ostream& operator<<(std::ostream& s, const vnl_svd<T>& svd);
+
+}  // inline namespace edgetrack_ports

@@ -11,6 +11,8 @@
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/vnl_math.h"
 
+inline namespace edgetrack_ports {
+
 namespace vnl_svd_detail {
 /// Rotates columns p and q of m by (c, s): (p, q) <- (c p - s q, s p + c q).
 template <class T>
@@ -258,3 +260,5 @@ std::ostream& operator<<(std::ostream& s, const vnl_svd<T>& svd) {
 #define VNL_SVD_INSTANTIATE(T) \
   template class vnl_svd<T>;   \
   template std::ostream& operator<<(std::ostream&, const vnl_svd<T>&)
+
+}  // inline namespace edgetrack_ports

@@ -3,9 +3,15 @@
 /// descending order) and the right singular vectors V of M, from our vnl_svd.
 #pragma once
 
+#ifdef vnl_svd_economy_h_
+#error "edgetrack's drop-in vnl/algo/vnl_svd_economy.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 template <class real_t>
 class vnl_svd_economy {
@@ -30,3 +36,5 @@ class vnl_svd_economy {
   vnl_matrix<real_t> V_;
   vnl_vector<singval_t> sv_;
 };
+
+}  // inline namespace edgetrack_ports

@@ -3,10 +3,16 @@
 /// fixed-size results: U (R x C), W (C values, descending), V (C x C). Computed by our vnl_svd.
 #pragma once
 
+#ifdef vnl_svd_fixed_h_
+#error "edgetrack's drop-in vnl/algo/vnl_svd_fixed.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/algo/vnl_svd.h"
 #include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
+
+inline namespace edgetrack_ports {
 
 template <class T, unsigned R, unsigned C>
 class vnl_svd_fixed {
@@ -69,3 +75,5 @@ class vnl_svd_fixed {
   vnl_diag_matrix_fixed<singval_t, C> Winverse_;
   vnl_matrix_fixed<T, C, C> V_;
 };
+
+}  // inline namespace edgetrack_ports

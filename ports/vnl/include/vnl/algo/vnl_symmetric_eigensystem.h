@@ -6,9 +6,15 @@
 /// repeated eigenvalue any orthonormal basis of its space is an answer, for both codes).
 #pragma once
 
+#ifdef vnl_symmetric_eigensystem_h_
+#error "edgetrack's drop-in vnl/algo/vnl_symmetric_eigensystem.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
+#endif
+
 #include "vnl/vnl_diag_matrix.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_vector.h"
+
+inline namespace edgetrack_ports {
 
 /// The eigenvalues l1 <= l2 <= l3 of the symmetric 3x3 matrix [M11 M12 M13; . M22 M23; . . M33]
 /// (upstream computes them in closed form; we use the same Jacobi iteration).
@@ -44,3 +50,5 @@ class vnl_symmetric_eigensystem {
   vnl_vector<T> solve(const vnl_vector<T>& b);
   void solve(const vnl_vector<T>& b, vnl_vector<T>* x) { *x = solve(b); }
 };
+
+}  // inline namespace edgetrack_ports

@@ -10,6 +10,8 @@
 #include "vnl/algo/vnl_jacobi_rotation.h"
 #include "vnl/algo/vnl_symmetric_eigensystem.h"
 
+inline namespace edgetrack_ports {
+
 template <class T>
 bool vnl_symmetric_eigensystem_compute(const vnl_matrix<T>& A, vnl_matrix<T>& V, vnl_vector<T>& D) {
   using std::sqrt;
@@ -119,3 +121,5 @@ vnl_vector<T> vnl_symmetric_eigensystem<T>::solve(const vnl_vector<T>& b) {
   template class vnl_symmetric_eigensystem<T>;                                                     \
   template bool vnl_symmetric_eigensystem_compute(const vnl_matrix<T>&, vnl_matrix<T>&, vnl_vector<T>&); \
   template void vnl_symmetric_eigensystem_compute_eigenvals(T, T, T, T, T, T, T&, T&, T&)
+
+}  // inline namespace edgetrack_ports
