@@ -22,6 +22,8 @@ DECLARE(test_line_in_triangle);
 DECLARE(test_detector_core);
 DECLARE(test_template_files);
 DECLARE(test_order_statistic);
+DECLARE(test_lens);
+DECLARE(test_camera_file);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -44,6 +46,8 @@ void register_tests() {
   REGISTER(test_detector_core);
   REGISTER(test_template_files);
   REGISTER(test_order_statistic);
+  REGISTER(test_lens);
+  REGISTER(test_camera_file);
 }
 
 DEFINE_MAIN

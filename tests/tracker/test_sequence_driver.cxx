@@ -28,6 +28,8 @@ DECLARE(test_back_and_forth);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
 DECLARE(test_normal_mask);
+DECLARE(test_lens_tracking_cube);
+DECLARE(test_lens_tracking_wood_toy);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -56,6 +58,8 @@ void register_tests() {
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);
   REGISTER(test_normal_mask);
+  REGISTER(test_lens_tracking_cube);
+  REGISTER(test_lens_tracking_wood_toy);
 }
 
 DEFINE_MAIN
