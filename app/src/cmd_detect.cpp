@@ -48,6 +48,7 @@ int detect_main(int argc, char** argv) {
       {"--help", false, "this text"},
   };
   for (const OptionSpec& spec : template_range_specs()) specs.push_back(spec);
+  for (const OptionSpec& spec : intrinsics_specs()) specs.push_back(spec);
   auto parsed = Args::parse(argc, argv, 1, specs);
   if (!parsed.ok()) return report("detect", parsed.error()) + 1;
   const Args& a = parsed.value();
@@ -71,6 +72,9 @@ int detect_main(int argc, char** argv) {
   edgetrack::PinholeCamera camera = config.value().config.camera;
   if (camera.width == 0) camera.width = image.value().width;
   if (camera.height == 0) camera.height = image.value().height;
+  auto calibrated = apply_intrinsics(a, camera);
+  if (!calibrated.ok()) return report("detect", calibrated.error());
+  camera = calibrated.value();
   if (camera.width != image.value().width || camera.height != image.value().height)
     return report("detect", {a.text("--image"), 0,
                              "image size " + std::to_string(image.value().width) + "x" +

@@ -25,6 +25,7 @@ int templates_main(int argc, char** argv) {
       {"--help", false, "this text"},
   };
   for (const OptionSpec& spec : template_range_specs()) specs.push_back(spec);
+  for (const OptionSpec& spec : intrinsics_specs()) specs.push_back(spec);
   auto parsed = Args::parse(argc, argv, 1, specs);
   if (!parsed.ok()) return report("templates", parsed.error()) + 1;
   const Args& a = parsed.value();
@@ -43,7 +44,9 @@ int templates_main(int argc, char** argv) {
   if (!params.ok()) return report("templates", params.error()) + 1;
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("templates", model.error());
-  auto camera = read_camera(a.text("--camera"), width, height);
+  auto read = read_camera(a.text("--camera"), width, height);
+  if (!read.ok()) return report("templates", read.error());
+  auto camera = apply_intrinsics(a, read.value());
   if (!camera.ok()) return report("templates", camera.error());
   if (camera.value().width == 0 || camera.value().height == 0)
     return report("templates", {a.text("--camera"), 0, "the camera has no image size: give --size WIDTHxHEIGHT"});

@@ -75,35 +75,40 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
 
 namespace {
 
-/// Through a lens, a line's pieces span 8 pinhole pixels (a bend of |k1| r^2 = 0.3 leaves them
-/// within 0.05 px of the curve), a face's triangles 24 (within 0.3 px: the faces only hide
-/// lines, which are tested within a pixel).
-constexpr int kLinePiecePixels = 8, kMostLinePieces = 32;
-constexpr int kFacePiecePixels = 24, kMostFacePieces = 8;
+/// Through a lens, a line is cut into pieces whose curve stays within 0.1 px of their chords, a
+/// face's triangles within 0.5 px (the faces only hide lines, which are tested within a pixel):
+/// a bend (sagitta) s over a side leaves s / n^2 over each of n pieces.
+constexpr float kLineBendPixels = 0.1f, kFaceBendPixels = 0.5f;
+constexpr int kMostLinePieces = 32, kMostFacePieces = 8;
 
 }  // namespace
 
-int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, int pixels, int most) const {
+int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, float bend_pixels, int most) const {
   if (!camera_.distorted()) return 1;
+  using std::ceil;
   using std::fabs;
-  // The pinhole image's extent, in pixels, where every point is at least 1 cm in front.
-  const real near(0.01);
-  real extent(0);
+  using std::sqrt;
+  const real near(0.01);  // what is nearer is clipped: cut it as finely as allowed
+  real bend(0);
   for (int i = 0; i < count; ++i) {
-    if (corners[i].z < near || corners[(i + 1) % count].z < near) return most;
     const Vec3 &p = corners[i], &q = corners[(i + 1) % count];
-    const real du = camera_.px * (p.x / p.z - q.x / q.z), dv = camera_.py * (p.y / p.z - q.y / q.z);
-    extent = std::max(extent, fabs(du) + fabs(dv));
+    if (p.z < near || q.z < near) return most;
+    // How far the lens moves the side's middle off the chord of its ends.
+    const Vec2 a = camera_.project(p), b = camera_.project(q), m = camera_.project(real(0.5) * (p + q));
+    const Vec2 chord = b - a;
+    const real length = norm(chord);
+    if (!(length > real(0))) continue;
+    bend = std::max(bend, fabs(chord.x * (m.y - a.y) - chord.y * (m.x - a.x)) / length);
   }
-  const int pieces = static_cast<int>(extent / real(pixels)) + 1;
-  return std::min(pieces, most);
+  const real pieces = ceil(sqrt(bend / real(bend_pixels)));
+  return pieces >= real(most) ? most : std::max(1, static_cast<int>(pieces));
 }
 
 void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner) {
   // Through a lens the line is a curve: drawn as a polyline of pieces short enough that each
   // lies within a fraction of a pixel of it.
   const Vec3 ends[2] = {a_in_camera, b_in_camera};
-  const int pieces = lens_pieces(ends, 2, kLinePiecePixels, kMostLinePieces);
+  const int pieces = lens_pieces(ends, 2, kLineBendPixels, kMostLinePieces);
   for (int k = 0; k < pieces; ++k) {
     const Vec3 p = pieces == 1 ? a_in_camera : a_in_camera + (real(k) / real(pieces)) * (b_in_camera - a_in_camera);
     const Vec3 q = pieces == 1 ? b_in_camera
@@ -116,7 +121,7 @@ void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera,
 }
 
 void EdgeIdBuffer::add_face_triangle(const Vec3 (&corners)[3]) {
-  const int n = lens_pieces(corners, 3, kFacePiecePixels, kMostFacePieces);
+  const int n = lens_pieces(corners, 3, kFaceBendPixels, kMostFacePieces);
   ScreenVertex polygon[kMaxClippedVertices];
   if (n == 1) {
     add_occluders(polygon, clip_and_project_triangle(camera_, corners, polygon), screen_, 0);

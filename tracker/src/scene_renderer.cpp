@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cmath>
 
+#include "edgetrack/lens_resampling.h"
 #include "edgetrack/raster.h"
 
 namespace edgetrack {
@@ -53,7 +54,10 @@ bool ray_meets_cylinder(const Vec3& a, const Vec3& b, const real& r, const Vec3&
 
 SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& style)
     : camera_(camera), fine_camera_(camera.pinhole().scaled(style.supersample)), style_(style) {
-  if (camera.distorted()) map_lens();
+  if (camera.distorted()) {
+    lens_.emplace(camera, style.supersample, style.supersample);
+    fine_camera_ = lens_->pinhole_camera();
+  }
   // Value noise: random greys on a coarse grid, bilinearly interpolated in integers.
   const int cell = style.texture_cell;
   const int grid_w = camera.width / cell + 2, grid_h = camera.height / cell + 2;
@@ -75,72 +79,6 @@ SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& styl
   }
   depth_.resize(static_cast<size_t>(fine_camera_.width) * fine_camera_.height);
   face_.resize(depth_.size());
-}
-
-void SceneRenderer::map_lens() {
-  using std::fabs;
-  using std::floor;
-  // The lens's inverse at the nodes of a grid every kLensGrid pixels, interpolated between them
-  // (within 0.02 px of the exact inverse for |k1| r^2 up to 0.3): Newton's method at every
-  // sample of every pixel would take minutes under the emulator. A node where the lens has no
-  // inverse (beyond its fold) sees nothing.
-  constexpr int kLensGrid = 4;
-  const int nodes_x = (camera_.width - 1) / kLensGrid + 2, nodes_y = (camera_.height - 1) / kLensGrid + 2;
-  std::vector<Vec2> node(static_cast<size_t>(nodes_x) * nodes_y);
-  std::vector<uint8_t> node_seen(node.size(), 0);
-  real reach(0);  // the farthest a node moves back through the lens
-  for (int j = 0; j < nodes_y; ++j)
-    for (int i = 0; i < nodes_x; ++i) {
-      const Vec2 seen{real(i * kLensGrid), real(j * kLensGrid)};
-      const Vec2 d = camera_.to_normalised(seen);
-      const Vec2 n = camera_.invert_distortion(d);
-      const Vec2 miss = camera_.distort(n) - d;
-      const size_t k = static_cast<size_t>(j) * nodes_x + i;
-      if (!(fabs(miss.x) + fabs(miss.y) < real(1e-4))) continue;
-      node[k] = camera_.to_pixel(n);
-      node_seen[k] = 1;
-      reach = std::max(reach, std::max(fabs(node[k].x - seen.x), fabs(node[k].y - seen.y)));
-    }
-  // The pinhole image grown by that margin reaches every point the lens shows.
-  lens_margin_ = std::min(static_cast<int>(reach) + 2, std::max(camera_.width, camera_.height));
-  PinholeCamera wide = camera_.pinhole();
-  wide.u0 = wide.u0 + real(lens_margin_);
-  wide.v0 = wide.v0 + real(lens_margin_);
-  wide.width += 2 * lens_margin_;
-  wide.height += 2 * lens_margin_;
-  const int s = style_.supersample;
-  fine_camera_ = wide.scaled(s);
-  const int fw = fine_camera_.width, fh = fine_camera_.height;
-  const real shift = real(lens_margin_), fine_scale(s), fine_shift = real(s - 1) / 2;
-  lens_source_.assign(static_cast<size_t>(camera_.width) * camera_.height * s * s, LensSample{});
-  size_t index = 0;
-  for (int y = 0; y < camera_.height; ++y)
-    for (int x = 0; x < camera_.width; ++x)
-      for (int sy = 0; sy < s; ++sy)
-        for (int sx = 0; sx < s; ++sx, ++index) {
-          const Vec2 seen{real(x) + (real(sx) + real(0.5)) / real(s) - real(0.5),
-                          real(y) + (real(sy) + real(0.5)) / real(s) - real(0.5)};
-          const int i = std::max(0, std::min(nodes_x - 2, static_cast<int>(floor(seen.x / real(kLensGrid)))));
-          const int j = std::max(0, std::min(nodes_y - 2, static_cast<int>(floor(seen.y / real(kLensGrid)))));
-          const size_t k = static_cast<size_t>(j) * nodes_x + i;
-          if (!(node_seen[k] && node_seen[k + 1] && node_seen[k + nodes_x] && node_seen[k + nodes_x + 1])) continue;
-          const real fx = (seen.x - real(i * kLensGrid)) / real(kLensGrid);
-          const real fy = (seen.y - real(j * kLensGrid)) / real(kLensGrid);
-          const Vec2 top = node[k] + fx * (node[k + 1] - node[k]);
-          const Vec2 bottom = node[k + nodes_x] + fx * (node[k + nodes_x + 1] - node[k + nodes_x]);
-          const Vec2 pinhole = top + fy * (bottom - top);
-          // The wide image's pixel, then the supersampled one (PinholeCamera::scaled's mapping),
-          // read bilinearly from its four neighbours (nearest samples alone shift edges by up to
-          // a quarter pixel: measured, twice the wood toy's error).
-          const real fine_x = (pinhole.x + shift) * fine_scale + fine_shift;
-          const real fine_y = (pinhole.y + shift) * fine_scale + fine_shift;
-          const int u = static_cast<int>(floor(fine_x)), v = static_cast<int>(floor(fine_y));
-          if (u < 0 || v < 0 || u + 1 >= fw || v + 1 >= fh) continue;
-          LensSample& sample = lens_source_[index];
-          sample.index = v * fw + u;
-          sample.fx = static_cast<uint16_t>(floor((fine_x - real(u)) * real(kLensWeightOne) + real(0.5)));
-          sample.fy = static_cast<uint16_t>(floor((fine_y - real(v)) * real(kLensWeightOne) + real(0.5)));
-        }
 }
 
 void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model, uint32_t noise_seed,
@@ -232,7 +170,6 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
   frame.height = camera_.height;
   frame.pixels.resize(static_cast<size_t>(frame.width) * frame.height);
   const int s = style_.supersample, samples = s * s;
-  const bool lens = camera_.distorted();
   const int noise_range = 2 * style_.noise + 1;
   uint32_t state = noise_seed ? noise_seed : 1;
   for (int y = 0; y < camera_.height; ++y) {
@@ -240,21 +177,10 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
       const int bg = background_[static_cast<size_t>(y) * camera_.width + x];
       const auto grey = [&](int id) { return id >= 0 ? shade[id] : id == kClutterFace ? additions.clutter_grey : bg; };
       int sum = 0;
-      if (lens) {
-        const LensSample* source = &lens_source_[(static_cast<size_t>(y) * camera_.width + x) * samples];
-        int64_t weighted = 0;  // in 1 / kLensWeightOne^2 grey levels
-        for (int k = 0; k < samples; ++k) {
-          const LensSample& l = source[k];
-          if (l.index < 0) {
-            weighted += int64_t(bg) * kLensWeightOne * kLensWeightOne;
-            continue;
-          }
-          const int16_t* f = &face_[static_cast<size_t>(l.index)];
-          const int64_t top = int64_t(grey(f[0])) * (kLensWeightOne - l.fx) + int64_t(grey(f[1])) * l.fx;
-          const int64_t bottom = int64_t(grey(f[fw])) * (kLensWeightOne - l.fx) + int64_t(grey(f[fw + 1])) * l.fx;
-          weighted += top * (kLensWeightOne - l.fy) + bottom * l.fy;
-        }
-        sum = static_cast<int>(weighted / (int64_t(kLensWeightOne) * kLensWeightOne));
+      if (lens_) {
+        const int16_t* faces = face_.data();
+        const int64_t one = LensResampling::kWeightOne;
+        sum = static_cast<int>(lens_->weighted_sum(x, y, [&](int32_t i) { return grey(faces[i]); }, bg) / (one * one));
       } else {
         for (int sy = 0; sy < s; ++sy)
           for (int sx = 0; sx < s; ++sx) sum += grey(face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)]);

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The test-image renderer: a model drawn flat-shaded over a textured background with noise, as
-/// an RGB565 frame, through the camera's lens when it has one (drawn through the pinhole
-/// supersampled, each sample then taken where the lens's inverse puts it) (faces, tessellated cylinder sides, circles as discs), with the portable rasteriser, so tracking tests with known ground truth run
-/// everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
+/// an RGB565 frame (faces, tessellated cylinder sides, circles as discs), through the camera's
+/// lens when it has one (lens_resampling.h), with the portable rasteriser, so tracking tests
+/// with known ground truth run everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/frame_view.h"
+#include "edgetrack/lens_resampling.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
@@ -54,20 +56,9 @@ class SceneRenderer {
  private:
   /// Draws the lines into the supersampled depth and face buffers as face kClutterFace.
   void draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model);
-  /// Through a lens: where each sample of each pixel reads the supersampled pinhole buffer, and
-  /// the margin of pixels that buffer has around the image.
-  void map_lens();
   PinholeCamera camera_;
-  PinholeCamera fine_camera_;  ///< the camera at the supersampled size, without the lens
-  /// Where a sample of a pixel seen through the lens reads the supersampled pinhole buffer: the
-  /// top-left of four neighbours (-1: none) and its offsets to them in 1 / kLensWeightOne.
-  struct LensSample {
-    int32_t index = -1;
-    uint16_t fx = 0, fy = 0;
-  };
-  static constexpr int kLensWeightOne = 256;
-  int lens_margin_ = 0;
-  std::vector<LensSample> lens_source_;  ///< per pixel and sample, through a lens
+  PinholeCamera fine_camera_;  ///< the camera at the supersampled size, without the lens (with a margin through one)
+  std::optional<LensResampling> lens_;  ///< through a lens: where each sample reads the pinhole buffer
   SceneStyle style_;
   std::vector<uint8_t> background_;  ///< grey texture, one value per pixel
   std::vector<int32_t> depth_;       ///< supersampled inverse depth
