@@ -99,9 +99,11 @@ bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t
     if (!(p.z > real(0))) return false;
     x[i] = p.x;
     y[i] = p.y;
-    const real iz = real(1) / p.z;
-    inv_z[i] = iz;
-    const Vec2 normalised{p.x * iz, p.y * iz};
+    // One divisor for the three quotients: X / Z and Y / Z to the scalar's resolution, not
+    // 1 / Z's times X (in S40.23, 1 / Z of millimetres keeps only 16 significant bits).
+    const Divisor<real> by_z(p.z);
+    inv_z[i] = by_z.divide(real(1));
+    const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
     const Vec2 d = camera.distort(normalised);
     const LensJacobian j = camera.lens_jacobian(normalised);
     const real distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
