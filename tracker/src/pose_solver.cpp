@@ -104,8 +104,8 @@ bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t
     const Divisor<real> by_z(p.z);
     inv_z[i] = by_z.divide(real(1));
     const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
-    const Vec2 d = camera.distort(normalised);
-    const LensJacobian j = camera.lens_jacobian(normalised);
+    LensJacobian j;
+    const Vec2 d = camera.distort(normalised, j);
     const real distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
     const real w = weight ? weight[i] : real(1);
     delta[i] = distance;

@@ -74,6 +74,23 @@ struct PinholeCamera {
   /// Normalised coordinates through the lens, and its derivative there.
   Vec2 distort(const Vec2& normalised) const;
   LensJacobian lens_jacobian(const Vec2& normalised) const;
+  /// Both at once (the pose step's residuals and Jacobian, every match of every evaluation):
+  /// ViSP's model inline, sharing r^2 and its factor.
+  Vec2 distort(const Vec2& n, LensJacobian& j) const {
+    if (lens.model != LensModel::kVisp) {
+      j = lens_jacobian(n);
+      return distort(n);
+    }
+    const real r2 = n.x * n.x + n.y * n.y;
+    const real factor = real(1) + lens.kud * r2;
+    const real twice_k = real(2) * lens.kud;
+    const real kx = twice_k * n.x;
+    j.xx = factor + kx * n.x;
+    j.yy = factor + twice_k * n.y * n.y;
+    j.xy = kx * n.y;
+    j.yx = j.xy;
+    return {n.x * factor, n.y * factor};
+  }
   /// Distorted normalised coordinates back through the lens: with kdu for ViSP's model, by
   /// inverting the forward model for OpenCV's.
   Vec2 undistort(const Vec2& distorted_normalised) const;
