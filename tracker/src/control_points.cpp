@@ -2,6 +2,7 @@
 /// Control point sampling along projected edges (equation (1)) and the Edge-ID visibility filter.
 #include "edgetrack/control_points.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "edgetrack/contours.h"
@@ -25,11 +26,11 @@ struct Window {
   bool contains(const Vec2& p) const { return p.x >= lo_x && p.x <= hi_x && p.y >= lo_y && p.y <= hi_y; }
 };
 
-/// Pieces of a projected segment's polyline through a lens: its length and its points'
-/// parameters. A piece every 4 pinhole pixels keeps the length within 0.1 % for |k1| r^2 up to
-/// 0.3 (the chord of a bend of 2 % over 4 px); at most kCurvePieces.
+/// Pieces of a projected segment's polyline through a lens, for its length and its points'
+/// parameters: as many as keep the curve within 0.02 px of them (a bend s over the whole
+/// segment leaves s / n^2 over each of n pieces; a piece then errs on its length by under
+/// 1e-3 px), at most kCurvePieces.
 constexpr int kCurvePieces = 64;
-constexpr int kPixelsPerPiece = 4;
 
 /// Equation (1) along the image of segment a-b through the lens, a curve: n = floor(curve
 /// length / step) points at the centres of n equal lengths of it, each the image of its 3D
@@ -41,13 +42,22 @@ void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, 
   // The pinhole image of the segment is straight; t runs evenly along it, and the lens moves
   // each of its points.
   const PinholeCamera pinhole = camera.pinhole();
+  using std::ceil;
+  using std::fabs;
+  using std::sqrt;
   const Vec2 qa = pinhole.project(ca), qb = pinhole.project(cb);
   const Vec2 chord = qb - qa;
-  int pieces = static_cast<int>(floor(norm(chord) / real(kPixelsPerPiece))) + 1;
-  if (pieces > kCurvePieces) pieces = kCurvePieces;
+  // The bend: how far the lens puts the middle of the pinhole line off the chord of its ends.
+  const Vec2 da = camera.distort_pixel(qa), db = camera.distort_pixel(qb);
+  const Vec2 dm = camera.distort_pixel(qa + real(0.5) * chord), ends = db - da;
+  const real ends_length = norm(ends);
+  const real bend = ends_length > real(0) ? fabs(ends.x * (dm.y - da.y) - ends.y * (dm.x - da.x)) / ends_length
+                                          : real(0);
+  const real wanted = ceil(sqrt(bend / real(0.02)));
+  const int pieces = wanted >= real(kCurvePieces) ? kCurvePieces : std::max(1, static_cast<int>(wanted));
   real lengths[kCurvePieces + 1];
   lengths[0] = real(0);
-  Vec2 previous = camera.distort_pixel(qa);
+  Vec2 previous = da;
   for (int k = 1; k <= pieces; ++k) {
     const Vec2 next = camera.distort_pixel(qa + (real(k) / real(pieces)) * chord);
     lengths[k] = lengths[k - 1] + norm(next - previous);

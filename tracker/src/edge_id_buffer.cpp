@@ -77,13 +77,14 @@ namespace {
 
 /// Through a lens, a line is cut into pieces whose curve stays within 0.1 px of their chords, a
 /// face's triangles within 0.5 px (the faces only hide lines, which are tested within a pixel):
-/// a bend (sagitta) s over a side leaves s / n^2 over each of n pieces.
-constexpr float kLineBendPixels = 0.1f, kFaceBendPixels = 0.5f;
+/// a bend (sagitta) s over a side leaves s / n^2 over each of n pieces. (The bends are given
+/// where they are used, as literals: a `real` made from a variable float would be soft-float
+/// arithmetic on the ARM target.)
 constexpr int kMostLinePieces = 32, kMostFacePieces = 8;
 
 }  // namespace
 
-int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, float bend_pixels, int most) const {
+int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, const real& bend_pixels, int most) const {
   if (!camera_.distorted()) return 1;
   using std::ceil;
   using std::fabs;
@@ -100,7 +101,7 @@ int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, float bend_pixels,
     if (!(length > real(0))) continue;
     bend = std::max(bend, fabs(chord.x * (m.y - a.y) - chord.y * (m.x - a.x)) / length);
   }
-  const real pieces = ceil(sqrt(bend / real(bend_pixels)));
+  const real pieces = ceil(sqrt(bend / bend_pixels));
   return pieces >= real(most) ? most : std::max(1, static_cast<int>(pieces));
 }
 
@@ -108,7 +109,7 @@ void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera,
   // Through a lens the line is a curve: drawn as a polyline of pieces short enough that each
   // lies within a fraction of a pixel of it.
   const Vec3 ends[2] = {a_in_camera, b_in_camera};
-  const int pieces = lens_pieces(ends, 2, kLineBendPixels, kMostLinePieces);
+  const int pieces = lens_pieces(ends, 2, real(0.1), kMostLinePieces);
   for (int k = 0; k < pieces; ++k) {
     const Vec3 p = pieces == 1 ? a_in_camera : a_in_camera + (real(k) / real(pieces)) * (b_in_camera - a_in_camera);
     const Vec3 q = pieces == 1 ? b_in_camera
@@ -121,7 +122,7 @@ void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera,
 }
 
 void EdgeIdBuffer::add_face_triangle(const Vec3 (&corners)[3]) {
-  const int n = lens_pieces(corners, 3, kFaceBendPixels, kMostFacePieces);
+  const int n = lens_pieces(corners, 3, real(0.5), kMostFacePieces);
   ScreenVertex polygon[kMaxClippedVertices];
   if (n == 1) {
     add_occluders(polygon, clip_and_project_triangle(camera_, corners, polygon), screen_, 0);

@@ -72,7 +72,7 @@ class EdgeIdBuffer {
   /// Through a lens, how many pieces each side of a segment (count 2) or triangle (count 3) is
   /// cut into so that its curve stays within `bend_pixels` of the pieces, at most `most`; 1 for
   /// a pinhole.
-  int lens_pieces(const Vec3* corners, int count, float bend_pixels, int most) const;
+  int lens_pieces(const Vec3* corners, int count, const real& bend_pixels, int most) const;
   void add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
   /// A face's triangle as occluders (through a lens, cut into smaller ones).
   void add_face_triangle(const Vec3 (&corners)[3]);
