@@ -53,6 +53,7 @@ int detect_main(int argc, char** argv) {
       {},
   };
   for (const OptionSpec& spec : template_range_specs()) line.options.push_back(spec);
+  for (const OptionSpec& spec : intrinsics_specs()) line.options.push_back(spec);
   Args a;
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   int raw_width = 0, raw_height = 0;
@@ -67,6 +68,9 @@ int detect_main(int argc, char** argv) {
   edgetrack::PinholeCamera camera = config.value().config.camera;
   if (camera.width == 0) camera.width = image.value().width;
   if (camera.height == 0) camera.height = image.value().height;
+  auto calibrated = apply_intrinsics(a, camera);
+  if (!calibrated.ok()) return report("detect", calibrated.error());
+  camera = calibrated.value();
   if (camera.width != image.value().width || camera.height != image.value().height)
     return report("detect", {a.text("--image"), 0,
                              "image size " + std::to_string(image.value().width) + "x" +

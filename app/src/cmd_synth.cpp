@@ -8,10 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "args.h"
 #include "commands.h"
 #include "configuration.h"
+#include "edgetrack/lens_resampling.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/scene_extras.h"
@@ -89,6 +91,40 @@ struct SynthOptions {
   bool occluder = false, rgb565 = false, pgm = false, reverse = false;
 };
 
+/// ViSP's kdu for a lens with kud: the least-squares inverse x = x_d (1 + kdu r_d^2) over a grid
+/// of the image's pixels (ViSP's calibration estimates both; a generated sequence has kud alone).
+double fitted_kdu(const PinholeCamera& camera) {
+  double along = 0, square = 0;
+  for (int j = 0; j <= 16; ++j)
+    for (int i = 0; i <= 16; ++i) {
+      const edgetrack::Vec2 d = camera.to_normalised({real(camera.width * i / 16.0), real(camera.height * j / 16.0)});
+      const edgetrack::Vec2 n = camera.invert_distortion(d);
+      const edgetrack::Vec2 miss = camera.distort(n) - d;
+      if (std::fabs(static_cast<double>(miss.x)) + std::fabs(static_cast<double>(miss.y)) > 1e-6) continue;  // beyond the fold
+      const double xd = static_cast<double>(d.x), yd = static_cast<double>(d.y), r2 = xd * xd + yd * yd;
+      along += xd * r2 * (static_cast<double>(n.x) - xd) + yd * r2 * (static_cast<double>(n.y) - yd);
+      square += (xd * r2) * (xd * r2) + (yd * r2) * (yd * r2);
+    }
+  return square > 0 ? along / square : 0;
+}
+
+/// The image `pinhole` (drawn with lens.pinhole_camera()) as `camera`'s lens shows it.
+RgbImage through_lens(const edgetrack::LensResampling& lens, const PinholeCamera& camera, const RgbImage& pinhole) {
+  RgbImage seen;
+  seen.width = camera.width;
+  seen.height = camera.height;
+  seen.rgb.resize(static_cast<size_t>(seen.width) * seen.height * 3);
+  const int64_t scale = int64_t(lens.samples()) * lens.samples() * edgetrack::LensResampling::kWeightOne *
+                        edgetrack::LensResampling::kWeightOne;
+  for (int y = 0; y < seen.height; ++y)
+    for (int x = 0; x < seen.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const int64_t sum = lens.weighted_sum(x, y, [&](int32_t i) { return pinhole.rgb[static_cast<size_t>(i) * 3 + c]; }, 0);
+        seen.pixel(x, y)[c] = static_cast<uint8_t>((sum + scale / 2) / scale);
+      }
+  return seen;
+}
+
 /// The options, or an Error: one naming no file is a bad option value (exit status 2), one
 /// naming a file (the camera XML) a bad input (exit status 1).
 Result<SynthOptions> read_options(const Args& a) {
@@ -135,6 +171,21 @@ Result<SynthOptions> read_options(const Args& a) {
     if (!read.ok()) return read.error();
     o.camera = read.value();
   }
+  auto calibrated = apply_intrinsics(a, o.camera);
+  if (!calibrated.ok()) return calibrated.error();
+  o.camera = calibrated.value();
+  if (a.has("--kud")) {
+    auto kud = a.number("--kud");
+    if (!kud.ok()) return kud.error();
+    // Beyond 0.5 a QVGA corner folds back (no inverse); a wide lens's is about -0.1 to -0.3.
+    if (kud.value() < -0.5 || kud.value() > 0.5) return Error{"", 0, "--kud must be -0.5..0.5"};
+    o.camera.lens = edgetrack::LensDistortion{};
+    o.camera.lens.model = edgetrack::LensModel::kVisp;
+    o.camera.lens.kud = real(kud.value());
+    o.camera.lens.kdu = real(fitted_kdu(o.camera));
+  }
+  if (o.camera.distorted() && (o.cover > 0 || a.has("--hide")))
+    return Error{"", 0, "--cover and --hide draw their board in image columns: not through a lens (--kud, --intrinsics)"};
   if (!usable_image_size(static_cast<long long>(o.camera.width) * o.supersample,
                          static_cast<long long>(o.camera.height) * o.supersample))
     return Error{"", 0, "the image rendered at --supersample " + std::to_string(o.supersample) + " would be " +
@@ -183,7 +234,11 @@ SceneExtras backdrop_scene(const edgetrack::EdgeModel& m, const Se3& first_pose,
 /// Renders and writes every frame and the truth rows; returns the occluder's covered shares.
 Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeModel& m, const std::vector<Se3>& poses,
                                 SceneExtras extras, const std::string& pattern) {
-  auto renderer = GlRenderer::create(o.camera, o.supersample);
+  // Through a lens: GL draws the pinhole image with a margin at twice the size, read through the
+  // lens at 2 x 2 samples a pixel.
+  std::optional<edgetrack::LensResampling> lens;
+  if (o.camera.distorted()) lens.emplace(o.camera, 2, 2);
+  auto renderer = GlRenderer::create(lens ? lens->pinhole_camera() : o.camera, o.supersample);
   if (!renderer.ok()) return renderer.error();
   auto truth = PoseTableWriter::open(o.out + "/truth.csv", false);
   if (!truth.ok()) return truth.error();
@@ -208,6 +263,7 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
       if (o.cover > 0) covered.add(static_cast<double>(extras.band.covered_share));
     }
     RgbImage image = renderer.value()->render_scene(m, pose, extras);
+    if (lens) image = through_lens(*lens, o.camera, image);
     degrade(image, o.noise, o.blur, static_cast<uint64_t>(o.seed) * 7919u + static_cast<uint64_t>(k));
     const std::string path = expand_pattern(pattern, k);
     Result<bool> written = true;
@@ -230,7 +286,8 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
 int synth_main(int argc, char** argv) {
   const CommandLine line = {
       "synth",
-      "--out DIR [--model FILE] [--camera FILE --size WIDTHxHEIGHT] [--trajectory paper|FILE] [--frames N] "
+      "--out DIR [--model FILE] [--camera FILE --size WIDTHxHEIGHT] [--intrinsics FILE | --kud K] [--trajectory paper|FILE] "
+      "[--frames N] "
       "[--speed K] [--reverse] [--noise SIGMA] [--blur SIGMA] [--occluder] [--cover SHARE] [--hide FIRST:LAST] "
       "[--clutter MM] [--rgb565 | --pgm]",
       {
@@ -238,6 +295,9 @@ int synth_main(int argc, char** argv) {
           {"--model", "FILE", "model, .cao or .obj (the default is the paper's 60 mm cube)", data_dir() + "/models/cube60.cao"},
           {"--camera", "FILE", "ViSP camera XML (default: QVGA, px = py = 220, centre 160,120)", ""},
           {"--size", "WIDTHxHEIGHT", "image size for --camera (default: 320x240)", ""},
+          intrinsics_specs()[0],
+          intrinsics_specs()[1],
+          {"--kud", "K", "frames through ViSP's radial lens x_d = x (1 + kud r^2), -0.5..0.5; writes intrinsics.xml", ""},
           {"--trajectory", "paper|FILE", "paper or a CSV with the header of truth.csv", "paper"},
           {"--frames", "N", "number of frames", "60"},
           {"--speed", "K", "the same path K times faster: frame k shows trajectory pose K k, interpolated", "1"},
@@ -285,6 +345,12 @@ int synth_main(int argc, char** argv) {
   if (!pos.ok()) return report("synth", pos.error());
   auto xml = write_camera_xml(o.out + "/camera.xml", o.camera);
   if (!xml.ok()) return report("synth", xml.error());
+  if (o.camera.lens.model == edgetrack::LensModel::kVisp) {
+    auto intrinsics = write_visp_camera_file(o.out + "/intrinsics.xml", o.camera);
+    if (!intrinsics.ok()) return report("synth", intrinsics.error());
+    std::printf("synth: through ViSP's lens kud = %.6g (kdu = %.6g fitted): %s/intrinsics.xml for --intrinsics\n",
+                static_cast<double>(o.camera.lens.kud), static_cast<double>(o.camera.lens.kdu), o.out.c_str());
+  }
   std::printf("synth: %d frames of %dx%d in %s, largest image motion %.2f px/frame\n", o.frames, o.camera.width,
               o.camera.height, pattern.c_str(), largest_vertex_motion(m, o.camera, poses.value()));
   if (o.cover > 0)

@@ -31,6 +31,7 @@ int templates_main(int argc, char** argv) {
       {},
   };
   for (const OptionSpec& spec : template_range_specs()) line.options.push_back(spec);
+  for (const OptionSpec& spec : intrinsics_specs()) line.options.push_back(spec);
   Args a;
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
   if (auto empty = check_output_names({{"--out", a.text("--out")}})) return report("templates", *empty) + 1;
@@ -41,7 +42,9 @@ int templates_main(int argc, char** argv) {
   if (!params.ok()) return report("templates", params.error()) + 1;
   auto model = edgetrack::load_model(a.text("--model"));
   if (!model.ok()) return report("templates", model.error());
-  auto camera = read_camera(a.text("--camera"), width, height);
+  auto read = read_camera(a.text("--camera"), width, height);
+  if (!read.ok()) return report("templates", read.error());
+  auto camera = apply_intrinsics(a, read.value());
   if (!camera.ok()) return report("templates", camera.error());
   if (camera.value().width == 0 || camera.value().height == 0)
     return report("templates", {a.text("--camera"), 0, "the camera has no image size: give --size WIDTHxHEIGHT"});

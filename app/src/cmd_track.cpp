@@ -178,6 +178,8 @@ const CommandLine& track_command_line() {
       {
           {"--model", "FILE", "model, ViSP .cao or Wavefront .obj (metres)", ""},
           {"--camera", "FILE", "ViSP XML read as ViSP's loadConfigFile: <camera>, <ecm>, <face>, <lod> (docs/APP.md)", ""},
+          intrinsics_specs()[0],
+          intrinsics_specs()[1],
           {"--init-pose", "FILE", "initial camera_from_model, a ViSP pose file: .pos (6 numbers) or a 4x4 homogeneous matrix", ""},
           {"--init", "FILE", "ViSP .init file of 3D points, with --init-points: initial pose from points", ""},
           {"--init-points", "FILE", "image positions of the .init points, one 'u v' line each (pixels)", ""},
@@ -297,6 +299,9 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   PinholeCamera full_camera = config.value().config.camera;
   if (full_camera.width == 0) full_camera.width = in.full_width;
   if (full_camera.height == 0) full_camera.height = in.full_height;
+  auto calibrated = apply_intrinsics(a, full_camera);
+  if (!calibrated.ok()) return report("track", calibrated.error());
+  full_camera = calibrated.value();
   if (full_camera.width != in.full_width || full_camera.height != in.full_height)
     return report("track", {in.frame.name, 0,
                             "image size " + std::to_string(in.full_width) + "x" + std::to_string(in.full_height) +

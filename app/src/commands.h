@@ -50,5 +50,8 @@ edgetrack::Result<bool> check_in_front(const edgetrack::EdgeModel& model, const 
 
 /// Writes the camera as a ViSP-style XML file with its image size (read_camera in configuration.h reads it).
 edgetrack::Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeCamera& camera);
+/// `camera` (ViSP's lens or none) as ViSP's vpXmlParserCamera writes a camera file: the model
+/// without distortion, and with it when the camera has ViSP's lens.
+edgetrack::Result<bool> write_visp_camera_file(const std::string& path, const edgetrack::PinholeCamera& camera);
 
 }  // namespace edgetrack_app

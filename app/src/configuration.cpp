@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "edgetrack/camera_file.h"
+
 using edgetrack::Result;
 using edgetrack::TrackerConfig;
 
@@ -58,6 +60,25 @@ Result<edgetrack::PinholeCamera> read_camera(const std::string& path, int width,
   if (camera.height == 0) camera.height = height;
   if (camera.width <= 0 || camera.height <= 0) return edgetrack::Error{path, 0, "the camera has no image size (give --size)"};
   return camera;
+}
+
+const std::vector<OptionSpec>& intrinsics_specs() {
+  static const std::vector<OptionSpec> specs = {
+      {"--intrinsics", "FILE",
+       "calibration file, ViSP's camera XML or OpenCV's YAML/XML, with the lens distortion; it replaces the camera of "
+       "the ViSP XML (docs/FORMATS.md)", ""},
+      {"--intrinsics-name", "NAME", "with --intrinsics: the ViSP camera <name> to take", ""},
+  };
+  return specs;
+}
+
+Result<edgetrack::PinholeCamera> apply_intrinsics(const Args& a, const edgetrack::PinholeCamera& camera) {
+  if (!a.has("--intrinsics")) {
+    if (a.has("--intrinsics-name")) return edgetrack::Error{"", 0, "--intrinsics-name needs --intrinsics"};
+    return camera;
+  }
+  return edgetrack::read_camera_file(a.text("--intrinsics"),
+                                     edgetrack::CameraChoice{a.text("--intrinsics-name"), camera.width, camera.height});
 }
 
 }  // namespace edgetrack_app

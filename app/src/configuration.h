@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "args.h"
 #include "edgetrack/result.h"
 #include "edgetrack/visp_config.h"
 
@@ -28,5 +29,12 @@ void print_notes(const std::vector<std::string>& notes);
 
 /// The camera of one file, its image size from the file or else width x height.
 edgetrack::Result<edgetrack::PinholeCamera> read_camera(const std::string& path, int width, int height);
+
+/// `--intrinsics FILE` and `--intrinsics-name NAME`, for every command that reads a camera.
+const std::vector<OptionSpec>& intrinsics_specs();
+/// `camera` (from the ViSP XML) replaced, when --intrinsics is given, by the calibration file's
+/// camera (camera_file.h), which takes precedence: the file's camera named --intrinsics-name and
+/// of camera's image size when that is known (width and height not 0).
+edgetrack::Result<edgetrack::PinholeCamera> apply_intrinsics(const Args& a, const edgetrack::PinholeCamera& camera);
 
 }  // namespace edgetrack_app

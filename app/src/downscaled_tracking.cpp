@@ -10,7 +10,7 @@ edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int 
   if (factor <= 1) return camera;
   const real f(factor), half(0.5);
   return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
-          camera.width / factor, camera.height / factor};
+          camera.width / factor, camera.height / factor, camera.lens};
 }
 
 void downscale_settings(edgetrack::TrackerParams& params, int factor) {

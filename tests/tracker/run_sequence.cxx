@@ -53,14 +53,16 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
   SequenceRun run;
   const Result<EdgeModel> model = load_model(model_path(scene));
   if (!model.ok()) return run;
-  const PinholeCamera camera = qvga_camera();
+  PinholeCamera lens_camera = qvga_camera();
+  lens_camera.lens = spec.lens;
+  const PinholeCamera camera = spec.lens_given ? lens_camera : lens_camera.pinhole();
   run.truth = spec.poses.empty() ? true_poses(scene, frames, spec.subsample) : spec.poses;
   if (static_cast<int>(run.truth.size()) != frames) return run;
   const EdgeModel nothing;
   Result<Tracker> tracker = Tracker::create(model.value(), camera, run.truth[0], params);
   if (!tracker.ok()) return run;
   run.loaded = true;
-  SceneRenderer renderer(camera, SceneStyle{});
+  SceneRenderer renderer(lens_camera, SceneStyle{});
   Rgb565Frame frame;
   const std::vector<Segment3> clutter = parallel_clutter(model.value(), real(spec.clutter));
   SceneAdditions additions;

@@ -30,6 +30,10 @@ struct SequenceSpec {
   /// this many metres beside every model edge (0: none).
   double cover = 0;
   double clutter = 0;
+  /// The lens the frames are seen through (none: the pinhole), and whether the tracker is given
+  /// it (or tracks with the pinhole alone, as a user who leaves the distortion out).
+  edgetrack::LensDistortion lens;
+  bool lens_given = true;
 };
 
 struct SequenceRun {

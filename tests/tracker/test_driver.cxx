@@ -26,6 +26,8 @@ DECLARE(test_xml_document);
 DECLARE(test_template_bounds);
 DECLARE(test_status_statistics);
 DECLARE(test_pose_files);
+DECLARE(test_lens);
+DECLARE(test_camera_file);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -52,6 +54,8 @@ void register_tests() {
   REGISTER(test_template_bounds);
   REGISTER(test_status_statistics);
   REGISTER(test_pose_files);
+  REGISTER(test_lens);
+  REGISTER(test_camera_file);
 }
 
 DEFINE_MAIN

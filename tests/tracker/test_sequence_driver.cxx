@@ -29,6 +29,8 @@ DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
 DECLARE(test_normal_mask);
 DECLARE(test_api_door);
+DECLARE(test_lens_tracking_cube);
+DECLARE(test_lens_tracking_wood_toy);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -58,6 +60,8 @@ void register_tests() {
   REGISTER(test_edge_contrast);
   REGISTER(test_normal_mask);
   REGISTER(test_api_door);
+  REGISTER(test_lens_tracking_cube);
+  REGISTER(test_lens_tracking_wood_toy);
 }
 
 DEFINE_MAIN

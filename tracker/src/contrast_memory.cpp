@@ -43,6 +43,7 @@ real depth_in_camera(const Se3& camera_from_model, const Vec3& point) {
 bool projects_near(const PinholeCamera& camera, const Vec3& p, const Vec2& normal, const Vec2& found,
                    const real& within) {
   using std::fabs;
+  if (camera.distorted()) return fabs(dot(normal, camera.project(p) - found)) < within;
   const real along_times_z = normal.x * (camera.px * p.x + (camera.u0 - found.x) * p.z) +
                              normal.y * (camera.py * p.y + (camera.v0 - found.y) * p.z);
   return fabs(along_times_z) < within * p.z;

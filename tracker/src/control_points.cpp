@@ -2,6 +2,7 @@
 /// Control point sampling along projected edges (equation (1)) and the Edge-ID visibility filter.
 #include "edgetrack/control_points.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "edgetrack/contours.h"
@@ -25,6 +26,66 @@ struct Window {
   bool contains(const Vec2& p) const { return p.x >= lo_x && p.x <= hi_x && p.y >= lo_y && p.y <= hi_y; }
 };
 
+/// Pieces of a projected segment's polyline through a lens, for its length and its points'
+/// parameters: as many as keep the curve within 0.02 px of them (a bend s over the whole
+/// segment leaves s / n^2 over each of n pieces; a piece then errs on its length by under
+/// 1e-3 px), at most kCurvePieces.
+constexpr int kCurvePieces = 64;
+
+/// Equation (1) along the image of segment a-b through the lens, a curve: n = floor(curve
+/// length / step) points at the centres of n equal lengths of it, each the image of its 3D
+/// point (on the curve, not on a chord), with the curve's own direction there.
+void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, int primitive,
+                  const PinholeCamera& camera, const SamplingParams& params, const Window& window,
+                  std::vector<ControlPoint>& points) {
+  using std::floor;
+  // The pinhole image of the segment is straight; t runs evenly along it, and the lens moves
+  // each of its points.
+  const PinholeCamera pinhole = camera.pinhole();
+  using std::ceil;
+  using std::fabs;
+  using std::sqrt;
+  const Vec2 qa = pinhole.project(ca), qb = pinhole.project(cb);
+  const Vec2 chord = qb - qa;
+  // The bend: how far the lens puts the middle of the pinhole line off the chord of its ends.
+  const Vec2 da = camera.distort_pixel(qa), db = camera.distort_pixel(qb);
+  const Vec2 dm = camera.distort_pixel(qa + real(0.5) * chord), ends = db - da;
+  const real ends_length = norm(ends);
+  const real bend = ends_length > real(0) ? fabs(ends.x * (dm.y - da.y) - ends.y * (dm.x - da.x)) / ends_length
+                                          : real(0);
+  const real wanted = ceil(sqrt(bend / real(0.02)));
+  const int pieces = wanted >= real(kCurvePieces) ? kCurvePieces : std::max(1, static_cast<int>(wanted));
+  real lengths[kCurvePieces + 1];
+  lengths[0] = real(0);
+  Vec2 previous = da;
+  for (int k = 1; k <= pieces; ++k) {
+    const Vec2 next = camera.distort_pixel(qa + (real(k) / real(pieces)) * chord);
+    lengths[k] = lengths[k - 1] + norm(next - previous);
+    previous = next;
+  }
+  const real length = lengths[pieces];
+  const int n = static_cast<int>(floor(length / params.step));  // equation (1)
+  if (n <= 0) return;
+  const real wa = real(1) / ca.z, wb = real(1) / cb.z;
+  int piece = 0;
+  for (int k = 0; k < n; ++k) {
+    const real target = real(2 * k + 1) * length / real(2 * n);  // the centre of part k of n
+    while (piece + 1 < pieces && lengths[piece + 1] < target) ++piece;
+    const real span = lengths[piece + 1] - lengths[piece];
+    const real within = span > real(0) ? (target - lengths[piece]) / span : real(0);
+    const real t = (real(piece) + within) / real(pieces);
+    const Vec2 pinhole_pixel = qa + t * chord;
+    const Vec2 pixel = camera.distort_pixel(pinhole_pixel);
+    if (!window.contains(pixel)) continue;
+    const Vec2 along = camera.distort_direction(pinhole_pixel, chord);
+    const real along_length = norm(along);
+    if (!(along_length > real(0))) continue;
+    const real s = t * wb / ((real(1) - t) * wa + t * wb);
+    points.push_back(make_point(primitive, a + s * (b - a), pixel,
+                                Vec2{along.x / along_length, along.y / along_length}));
+  }
+}
+
 /// Equation (1) on the part in view of the 3D segment a-b (model frame) of primitive `primitive`.
 void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
                     const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
@@ -42,6 +103,10 @@ void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, 
       b = a0 + t1 * (b - a0);
       cb = ca0 + t1 * (cb - ca0);
     }
+  }
+  if (camera.distorted()) {
+    sample_curve(a, b, ca, cb, primitive, camera, params, window, points);
+    return;
   }
   const Vec2 pa = camera.project(ca), pb = camera.project(cb);
   const Vec2 d = pb - pa;
@@ -99,7 +164,8 @@ void sample_circle(const Circle& circle, int primitive, const PinholeCamera& cam
     // of centimetres keep a hundred steps and turned the direction by 5 mrad.
     const Vec3 tangent = normalized(cross(normal_in_camera, camera_from_model.rotation() * (point - circle.centre)));
     const real x_over_z = p.x / p.z, y_over_z = p.y / p.z;
-    const Vec2 along{camera.px * (tangent.x - x_over_z * tangent.z), camera.py * (tangent.y - y_over_z * tangent.z)};
+    Vec2 along{camera.px * (tangent.x - x_over_z * tangent.z), camera.py * (tangent.y - y_over_z * tangent.z)};
+    if (camera.distorted()) along = camera.distort_direction(camera.to_pixel(Vec2{x_over_z, y_over_z}), along);
     const real along_length = norm(along);
     if (!(along_length > real(0))) continue;
     const Vec2 direction{along.x / along_length, along.y / along_length};

@@ -1,14 +1,88 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// The pinhole camera.
+/// The pinhole camera and its lens models.
 #include "edgetrack/pinhole_camera.h"
 
 namespace edgetrack {
+namespace {
+
+/// Newton steps that invert the forward model: from the distorted point itself, each step
+/// squares the error; 6 reach every `real`'s resolution for |k r^2| up to 0.3 and beyond.
+constexpr int kInversionSteps = 6;
+
+}  // namespace
+
+Vec2 PinholeCamera::distort(const Vec2& n) const {
+  const real r2 = n.x * n.x + n.y * n.y;
+  if (lens.model == LensModel::kVisp) {
+    const real factor = real(1) + lens.kud * r2;
+    return {n.x * factor, n.y * factor};
+  }
+  if (lens.model == LensModel::kOpenCv) {
+    const real radial = real(1) + r2 * (lens.k1 + r2 * (lens.k2 + r2 * lens.k3));
+    const real xy2 = real(2) * n.x * n.y;
+    return {n.x * radial + lens.p1 * xy2 + lens.p2 * (r2 + real(2) * n.x * n.x),
+            n.y * radial + lens.p1 * (r2 + real(2) * n.y * n.y) + lens.p2 * xy2};
+  }
+  return n;
+}
+
+LensJacobian PinholeCamera::lens_jacobian(const Vec2& n) const {
+  const real r2 = n.x * n.x + n.y * n.y;
+  LensJacobian j;
+  if (lens.model == LensModel::kVisp) {
+    // x (1 + kud r^2): d/dx = 1 + kud r^2 + 2 kud x^2, d/dy = 2 kud x y.
+    const real factor = real(1) + lens.kud * r2;
+    const real twice_k = real(2) * lens.kud;
+    j.xx = factor + twice_k * n.x * n.x;
+    j.yy = factor + twice_k * n.y * n.y;
+    j.xy = twice_k * n.x * n.y;
+    j.yx = j.xy;
+  } else if (lens.model == LensModel::kOpenCv) {
+    const real radial = real(1) + r2 * (lens.k1 + r2 * (lens.k2 + r2 * lens.k3));
+    // d radial / d r^2, times 2 gives d radial / dx = 2 x radial'.
+    const real slope = lens.k1 + r2 * (real(2) * lens.k2 + real(3) * lens.k3 * r2);
+    const real twice_slope = real(2) * slope;
+    j.xx = radial + twice_slope * n.x * n.x + real(2) * lens.p1 * n.y + real(6) * lens.p2 * n.x;
+    j.yy = radial + twice_slope * n.y * n.y + real(6) * lens.p1 * n.y + real(2) * lens.p2 * n.x;
+    j.xy = twice_slope * n.x * n.y + real(2) * lens.p1 * n.x + real(2) * lens.p2 * n.y;
+    j.yx = twice_slope * n.x * n.y + real(2) * lens.p1 * n.x + real(2) * lens.p2 * n.y;
+  }
+  return j;
+}
+
+Vec2 PinholeCamera::undistort(const Vec2& d) const {
+  if (lens.model == LensModel::kVisp) {
+    const real factor = real(1) + lens.kdu * (d.x * d.x + d.y * d.y);
+    return {d.x * factor, d.y * factor};
+  }
+  return invert_distortion(d);
+}
+
+Vec2 PinholeCamera::invert_distortion(const Vec2& d) const {
+  if (!distorted()) return d;
+  Vec2 n = d;
+  for (int step = 0; step < kInversionSteps; ++step) {
+    const Vec2 e = distort(n) - d;
+    const LensJacobian j = lens_jacobian(n);
+    const real det = j.xx * j.yy - j.xy * j.yx;
+    if (!(det > real(0))) break;  // beyond the fold of the lens: no inverse there
+    n = n - Vec2{(j.yy * e.x - j.xy * e.y) / det, (j.xx * e.y - j.yx * e.x) / det};
+  }
+  return n;
+}
+
+Vec2 PinholeCamera::distort_direction(const Vec2& pinhole, const Vec2& along) const {
+  const LensJacobian j = lens_jacobian(to_normalised(pinhole));
+  // In pixels: diag(px, py) J diag(1 / px, 1 / py) along.
+  const real ax = along.x / px, ay = along.y / py;
+  return {px * (j.xx * ax + j.xy * ay), py * (j.yx * ax + j.yy * ay)};
+}
 
 PinholeCamera PinholeCamera::scaled(int factor) const {
   // Pixel centres sit at integer coordinates, so pixel (0, 0) covers [-0.5, 0.5): in an image
   // `factor` times larger, the same ray lands at factor * (u + 0.5) - 0.5.
   const real shift = real(factor - 1) / 2;
-  return {px * factor, py * factor, u0 * factor + shift, v0 * factor + shift, width * factor, height * factor};
+  return {px * factor, py * factor, u0 * factor + shift, v0 * factor + shift, width * factor, height * factor, lens};
 }
 
 }  // namespace edgetrack

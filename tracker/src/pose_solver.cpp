@@ -76,6 +76,34 @@ bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, cons
   return true;
 }
 
+/// distances_to_lines through a lens: delta = a x_d + b y_d + c with (x_d, y_d) the distorted
+/// (X / Z, Y / Z), and the Jacobian's (a, b) J_lens (times the weight) kept for gradf. Apart
+/// from the lens, the same operations as the pinhole's (a x + b y + c there).
+bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t, const real* zx, const real* zy,
+                            const real* zz, const real* a, const real* b, const real* c, const real* weight, real* x,
+                            real* y, real* inv_z, real* delta, real* fx, real* grad_a, real* grad_b) {
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
+    if (!(p.z > real(0))) return false;
+    x[i] = p.x;
+    y[i] = p.y;
+    // One divisor for the three quotients: X / Z and Y / Z to the scalar's resolution, not
+    // 1 / Z's times X (in S40.23, 1 / Z of millimetres keeps only 16 significant bits).
+    const Divisor<real> by_z(p.z);
+    inv_z[i] = by_z.divide(real(1));
+    const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
+    LensJacobian j;
+    const Vec2 d = camera.distort(normalised, j);
+    const real distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
+    const real w = weight ? weight[i] : real(1);
+    delta[i] = distance;
+    fx[i] = weight ? w * distance : distance;
+    grad_a[i] = w * sum_of_products(a[i], j.xx, b[i], j.yx);
+    grad_b[i] = w * sum_of_products(a[i], j.xy, b[i], j.yy);
+  }
+  return true;
+}
+
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
 /// in the workspace's memory.
 class PointToLineProblem {
@@ -84,8 +112,9 @@ class PointToLineProblem {
   /// roots of the least-squares weights.
   /// The workspace's model_mm and unweighted hold `matches`' terms (prepare_matches).
   PointToLineProblem(const std::vector<EdgeMatch>& matches, const std::vector<real>& weights, const Se3& start,
-                     PoseWorkspace& w)
-      : start_(start),
+                     const PinholeCamera& camera, PoseWorkspace& w)
+      : camera_(camera),
+        start_(start),
         start_translation_mm_(to_millimetres(start.translation())),
         count_(matches.size()),
         weighted_(!weights.empty()),
@@ -100,6 +129,8 @@ class PointToLineProblem {
       w.moved[k].resize(count_);
     }
     w.inverse_depth.resize(count_);
+    if (camera.distorted())
+      for (int k = 0; k < 2; ++k) w.lens_gradient[k].resize(count_);
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     // The points in millimetres and the distances' coefficients are the solve_pose call's
@@ -211,9 +242,16 @@ class PointToLineProblem {
                   z[1].data(), z[2].data());
     }
     const std::vector<real>* z = turned_;
-    if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(), u[2].data(),
-                            weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta, fx))
+    if (camera_.distorted()) {
+      if (!distances_through_lens(count_, camera_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
+                                  u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
+                                  fx, w_.lens_gradient[0].data(), w_.lens_gradient[1].data()))
+        return false;
+    } else if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
+                                   u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
+                                   fx)) {
       return false;
+    }
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
     evaluated_ = true;
     return true;
@@ -226,14 +264,16 @@ class PointToLineProblem {
     if (!evaluated_at(x) && !f(x, scratch())) return false;
     const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
     const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
-    const std::vector<real>* k = w_.gradient;
+    // Through a lens, (a, b) J_lens at the last evaluation in place of (a, b).
+    const std::vector<real>* k = camera_.distorted() ? w_.lens_gradient : w_.gradient;
     const std::vector<real>* z = turned_;
     const std::vector<real>* p = w_.moved;
     const real* const inverse_depth = w_.inverse_depth.data();
     real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
     for (size_t i = 0; i < count_; ++i) {
       const real inv_z = inverse_depth[i];
-      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b.
+      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b (through a
+      // lens the chain rule's (a, b) J_lens, d(x, y) / d p being the same).
       const real gx = k[0][i] * inv_z;
       const real gy = k[1][i] * inv_z;
       const real gz = -sum_of_products(gx, p[0][i], gy, p[1][i]) * inv_z;
@@ -263,6 +303,7 @@ class PointToLineProblem {
     return true;
   }
 
+  const PinholeCamera& camera_;
   Se3 start_;
   Vec3 start_translation_mm_;
   size_t count_;
@@ -306,11 +347,11 @@ struct SolveResult {
 /// distances at the new pose; otherwise they are left as they were. The workspace holds the
 /// matches' terms (PointToLineProblem::prepare_matches). workspace.residuals are left at LM's
 /// last estimate, for the solution's end RMS.
-SolveResult solve_once(const std::vector<EdgeMatch>& matches, const Se3& start, const PoseParams& params,
-                       int max_evaluations, bool first, PoseWorkspace& workspace) {
+SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& start,
+                       const PoseParams& params, int max_evaluations, bool first, PoseWorkspace& workspace) {
   constexpr int n = 6;
   const int m = static_cast<int>(matches.size());
-  PointToLineProblem problem(matches, workspace.weights, start, workspace);
+  PointToLineProblem problem(matches, workspace.weights, start, camera, workspace);
   if (first) problem.measure_start();
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
@@ -466,7 +507,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
-  const SolveResult first = solve_once(matches, start, params, params.max_evaluations, true, workspace);
+  const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, true, workspace);
   add_counts(first, solution);
   if (!first.solved || !robust) measure_end_rms(workspace, solution);
   if (!first.solved) return solution;
@@ -490,7 +531,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     workspace.before_round = distances;
     const SolveResult robust_solve =
-        solve_once(matches, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
+        solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
     add_counts(robust_solve, solution);
     if (!robust_solve.solved) break;
     moved = !same_bits(robust_solve.pose, solution.camera_from_model);

@@ -58,8 +58,14 @@ Perturbation perturbation_of(const EdgeModel& model) {
 /// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
 void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
                     const Vec2& n, real g[kDof]) {
-  const real nu = n.x * camera.px * inv_z;
-  const real nv = n.y * camera.py * inv_z;
+  real nu = n.x * camera.px * inv_z;
+  real nv = n.y * camera.py * inv_z;
+  if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
+    const LensJacobian j = camera.lens_jacobian(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z});
+    const real along_x = n.x * camera.px, along_y = n.y * camera.py;
+    nu = (along_x * j.xx + along_y * j.yx) * inv_z;
+    nv = (along_x * j.xy + along_y * j.yy) * inv_z;
+  }
   const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
   // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).
   const Vec3 turn = -cross(a, offset_mm);
@@ -141,7 +147,9 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
     const Vec3 in_camera = to_millimetres(pose * match.point.point_in_model);
     if (in_camera.z <= real(0)) continue;
     const real inv_z = real(1) / in_camera.z;
-    const Vec2 pixel{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
+    const Vec2 pixel = camera.distorted()
+                           ? camera.project(in_camera)
+                           : Vec2{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
     const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square

@@ -24,6 +24,11 @@ struct Projected {
 
 Projected project(const PinholeCamera& camera, const Vec3& p) {
   const real w = real(1) / p.z;
+  if (camera.distorted()) {
+    // Through the lens at the vertices; callers cut what is long into pieces (edge_id_buffer.h).
+    const Vec2 pixel = camera.to_pixel(camera.distort(Vec2{p.x * w, p.y * w}));
+    return {pixel.x, pixel.y, w};
+  }
   return {camera.u0 + camera.px * p.x * w, camera.v0 + camera.py * p.y * w, w};
 }
 

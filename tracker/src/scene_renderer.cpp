@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cmath>
 
+#include "edgetrack/lens_resampling.h"
 #include "edgetrack/raster.h"
 
 namespace edgetrack {
@@ -52,7 +53,11 @@ bool ray_meets_cylinder(const Vec3& a, const Vec3& b, const real& r, const Vec3&
 }  // namespace
 
 SceneRenderer::SceneRenderer(const PinholeCamera& camera, const SceneStyle& style)
-    : camera_(camera), fine_camera_(camera.scaled(style.supersample)), style_(style) {
+    : camera_(camera), fine_camera_(camera.pinhole().scaled(style.supersample)), style_(style) {
+  if (camera.distorted()) {
+    lens_.emplace(camera, style.supersample, style.supersample);
+    fine_camera_ = lens_->pinhole_camera();
+  }
   // Value noise: random greys on a coarse grid, bilinearly interpolated in integers.
   const int cell = style.texture_cell;
   const int grid_w = camera.width / cell + 2, grid_h = camera.height / cell + 2;
@@ -170,12 +175,16 @@ void SceneRenderer::render(const EdgeModel& model, const Se3& camera_from_model,
   for (int y = 0; y < camera_.height; ++y) {
     for (int x = 0; x < camera_.width; ++x) {
       const int bg = background_[static_cast<size_t>(y) * camera_.width + x];
+      const auto grey = [&](int id) { return id >= 0 ? shade[id] : id == kClutterFace ? additions.clutter_grey : bg; };
       int sum = 0;
-      for (int sy = 0; sy < s; ++sy)
-        for (int sx = 0; sx < s; ++sx) {
-          const int id = face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)];
-          sum += id >= 0 ? shade[id] : id == kClutterFace ? additions.clutter_grey : bg;
-        }
+      if (lens_) {
+        const int16_t* faces = face_.data();
+        const int64_t one = LensResampling::kWeightOne;
+        sum = static_cast<int>(lens_->weighted_sum(x, y, [&](int32_t i) { return grey(faces[i]); }, bg) / (one * one));
+      } else {
+        for (int sy = 0; sy < s; ++sy)
+          for (int sx = 0; sx < s; ++sx) sum += grey(face_[static_cast<size_t>(y * s + sy) * fw + (x * s + sx)]);
+      }
       if (x >= additions.band.x_begin && x < additions.band.x_end) sum = additions.occluder_grey * samples;
       const int noise = static_cast<int>(next_random(state) % static_cast<uint32_t>(noise_range)) - style_.noise;
       frame.pixels[static_cast<size_t>(y) * camera_.width + x] = grey_to_rgb565((sum + samples / 2) / samples + noise);

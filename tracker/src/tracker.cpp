@@ -48,6 +48,10 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
   for (const ControlPoint& p : points) {
     const Vec3 in_camera = pose * p.point_in_model;
     if (in_camera.z <= real(0)) continue;
+    if (camera.distorted()) {  // through a lens the shift needs the projection itself (depth stays 1)
+      worst_numerator = std::max(worst_numerator, fabs(dot(p.normal, camera.project(in_camera) - p.pixel)));
+      continue;
+    }
     const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
     const real numerator = fabs(sum_of_products(p.normal.x * camera.px, in_camera.x, p.normal.y * camera.py,
                                                 in_camera.y, offset, in_camera.z));

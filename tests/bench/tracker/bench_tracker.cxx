@@ -6,8 +6,9 @@
 /// window per step of Tracker::track instead (4 per frame, in the paper's order). "whole" makes
 /// the grey step convert whole frames (the paper's way) instead of on demand.
 /// "normal" solves the pose on the 6 x 6 normal equations (PoseSolver::kNormalEquations); a
-/// ViSP XML file applies its tracker settings (step, range, masks, faces) to the sequence's camera.
-///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml]
+/// ViSP XML file applies its tracker settings (step, range, masks, faces) to the sequence's camera
+/// ("-": none); a kud renders the frames through ViSP's radial lens and gives the tracker the lens.
+///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml|-] [kud]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -43,7 +44,11 @@ int main(int argc, char* argv[]) {
     std::fprintf(stderr, "%s\n", model.error().text().c_str());
     return 1;
   }
-  const PinholeCamera camera = qvga_camera();
+  PinholeCamera camera = qvga_camera();
+  if (argc > 8) {
+    camera.lens.model = LensModel::kVisp;
+    camera.lens.kud = real(std::atof(argv[8]));
+  }
   const std::vector<Se3> truth = true_poses(scene, frames);
   SceneRenderer renderer(camera, SceneStyle{});
   std::vector<Rgb565Frame> images(static_cast<size_t>(frames));
@@ -51,7 +56,7 @@ int main(int argc, char* argv[]) {
 
   const std::string windows = argc > 3 ? argv[3] : "frame", grey = argc > 4 ? argv[4] : "on-demand";
   if ((windows != "frame" && windows != "steps") || (grey != "on-demand" && grey != "whole")) {
-    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml]\n");
+    std::fprintf(stderr, "usage: bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml|-] [kud]\n");
     return 2;
   }
   const bool per_step = windows == "steps", whole = grey == "whole";
@@ -64,7 +69,7 @@ int main(int argc, char* argv[]) {
     return 2;
   }
   if (solver == "normal") params.pose.solver = PoseSolver::kNormalEquations;
-  if (argc > 7) {  // a ViSP configuration's tracker settings, on the sequence's own camera
+  if (argc > 7 && std::string(argv[7]) != "-") {  // a ViSP configuration's tracker settings, on the sequence's own camera
     TrackerConfig config;
     config.params = params;
     const Result<ConfigNotes> applied = apply_visp_config(argv[7], config);

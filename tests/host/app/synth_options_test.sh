@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The evaluation options of `edgetrack synth`, one case per call: synth_options_test.sh EDGETRACK
 # TMPDIR CASE. What synth measures and prints (motion, covered share, clutter offset) must be
-# what was asked for, --reverse turns back over the same poses; bad values are refused with one line; a fast sequence is tracked.
+# what was asked for, --reverse turns back over the same poses; bad values are refused with one line; a fast sequence is tracked;
+# a sequence through a lens (--kud) is tracked with its intrinsics.xml (--intrinsics), and a bad calibration refused.
 set -u
 edgetrack=$1
 work=$2/$3
@@ -62,6 +63,30 @@ case $name in
     mm=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/eval.txt")
     [ "$lost" = 0 ] || fail "$lost frames lost"
     less "$mm" 0.5 || fail "mean camera position error $mm mm, expected under 0.5 mm" ;;
+  track_through_lens)
+    # A barrel lens (kud = -0.25): tracked with synth's intrinsics.xml the error stays that of
+    # a pinhole sequence; without it, the pinhole alone is millimetres off.
+    synth --out "$work/seq" --kud -0.25 >/dev/null || fail "synth --kud failed"
+    grep -q "<kud>-0.25</kud>" "$work/seq/intrinsics.xml" || fail "intrinsics.xml lacks the lens"
+    for given in with without; do
+      lens=()
+      [ "$given" = with ] && lens=(--intrinsics "$work/seq/intrinsics.xml")
+      "$edgetrack" track --model "$(dirname "$0")/../../../data/models/cube60.cao" --camera "$work/seq/camera.xml" \
+        "${lens[@]}" --init-pose "$work/seq/first.pos" --images "$work/seq/frames/frame%04d.ppm" \
+        --poses "$work/$given.csv" --quiet >/dev/null || fail "track $given the lens failed"
+      "$edgetrack" eval --poses "$work/$given.csv" --truth "$work/seq/truth.csv" >"$work/$given.txt" || fail "eval failed"
+    done
+    with=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/with.txt")
+    without=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/without.txt")
+    echo "mean camera position error: $with mm with --intrinsics, $without mm without"
+    less "$with" 0.3 || fail "$with mm with the lens given, expected under 0.3 mm"
+    less 1 "$without" || fail "$without mm without the lens, expected over 1 mm" ;;
+  error_intrinsics_rational)
+    printf '%%YAML:1.0\nimage_width: 320\nimage_height: 240\ncamera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n   data: [ 220., 0., 160., 0., 220., 120., 0., 0., 1. ]\ndistortion_coefficients: !!opencv-matrix\n   rows: 8\n   cols: 1\n   dt: d\n   data: [ -0.2, 0.05, 0., 0., 0., 0.3, 0., 0. ]\n' >"$work/rational.yml"
+    synth --out "$work/seq" >/dev/null || fail "synth failed"
+    expect_error "rational.yml:9: distortion_coefficients' rational" "$edgetrack" track \
+      --model "$(dirname "$0")/../../../data/models/cube60.cao" --camera "$work/seq/camera.xml" \
+      --intrinsics "$work/rational.yml" --init-pose "$work/seq/first.pos" --images "$work/seq/frames/frame%04d.ppm" ;;
   error_synth_bad_cover)
     expect_error "--cover must be a share" "$edgetrack" synth --out "$work/seq" --cover 1.5 ;;
   error_synth_bad_speed)

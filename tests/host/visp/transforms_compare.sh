@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Runs transforms.cpp built against upstream ViSP and against ports/visp and checks that every
-# printed number agrees within TOLERANCE (absolute; the numbers are rotation entries, radians and
-# metres of order 1). Prints the largest difference. A theta u (tu, and pose 3..5) whose theta
-# is within RESOLUTION of pi (the real's ulp; 0 for double) may come back as -theta u, the same
+# Runs transforms.cpp (or lens_conversions.cpp) built against upstream ViSP and against ours and
+# checks that every printed number agrees within TOLERANCE (absolute; the numbers are rotation
+# entries, radians and metres of order 1, or pixels). Prints the largest difference. A theta u
+# (tu, and pose 3..5) whose theta is within RESOLUTION of pi (the real's ulp; 0 for double) may come back as -theta u, the same
 # rotation: below that ulp sin(theta), which gives the axis its sign, is not representable.
 #   transforms_compare.sh UPSTREAM_EXE PORTS_EXE TOLERANCE RESOLUTION
 set -euo pipefail

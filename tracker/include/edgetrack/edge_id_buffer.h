@@ -69,7 +69,13 @@ class EdgeIdBuffer {
   /// everywhere after assign), so that both are 0 everywhere.
   void clear_lines();
   void reserve_for(const EdgeModel& model);
+  /// Through a lens, how many pieces each side of a segment (count 2) or triangle (count 3) is
+  /// cut into so that its curve stays within `bend_pixels` of the pieces, at most `most`; 1 for
+  /// a pinhole.
+  int lens_pieces(const Vec3* corners, int count, const real& bend_pixels, int most) const;
   void add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
+  /// A face's triangle as occluders (through a lens, cut into smaller ones).
+  void add_face_triangle(const Vec3 (&corners)[3]);
   void collect_segments(const EdgeModel& model, const Se3& camera_from_model);
   void add_occluders(const ScreenVertex* polygon, int count, const PixelRect& clip, int16_t owner);
   void collect_faces(const EdgeModel& model, const Se3& camera_from_model);

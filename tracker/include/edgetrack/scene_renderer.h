@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The test-image renderer: a model drawn flat-shaded over a textured background with noise, as
-/// an RGB565 frame (faces, tessellated cylinder sides, circles as discs), with the portable rasteriser, so tracking tests with known ground truth run
-/// everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
+/// an RGB565 frame (faces, tessellated cylinder sides, circles as discs), through the camera's
+/// lens when it has one (lens_resampling.h), with the portable rasteriser, so tracking tests
+/// with known ground truth run everywhere (QEMU included). Also the ground-truth visibility of a 3D point, by ray casting.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "edgetrack/edge_model.h"
 #include "edgetrack/frame_view.h"
+#include "edgetrack/lens_resampling.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/scene_extras.h"
 #include "edgetrack/se3.h"
@@ -54,7 +57,8 @@ class SceneRenderer {
   /// Draws the lines into the supersampled depth and face buffers as face kClutterFace.
   void draw_clutter(const std::vector<Segment3>& clutter, const Se3& camera_from_model);
   PinholeCamera camera_;
-  PinholeCamera fine_camera_;  ///< the camera at the supersampled size
+  PinholeCamera fine_camera_;  ///< the camera at the supersampled size, without the lens (with a margin through one)
+  std::optional<LensResampling> lens_;  ///< through a lens: where each sample reads the pinhole buffer
   SceneStyle style_;
   std::vector<uint8_t> background_;  ///< grey texture, one value per pixel
   std::vector<int32_t> depth_;       ///< supersampled inverse depth
