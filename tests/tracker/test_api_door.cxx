@@ -124,6 +124,13 @@ static void test_api_door() {
   c.u0 = as_real(1e300);
   TEST("u0 of 1e300 is refused", refused(c, start, defaults), true);
   c = camera;
+  c.lens.model = LensModel::kVisp;
+  c.lens.kud = as_real(1e300);
+  TEST("a lens coefficient of 1e300 is refused", refused(c, start, defaults), true);
+  c = camera;
+  c.lens.model = static_cast<LensModel>(7);
+  TEST("a lens model outside LensModel is refused", refused(c, start, defaults), true);
+  c = camera;
   c.width = c.height = 46341;
   TEST("a camera of 46341 x 46341 is refused, not allocated", refused(c, start, defaults), true);
   c = camera;

@@ -47,6 +47,19 @@ std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
       return refuse(std::string(c.name) + " must be within +-" + text(kMaxPrincipalPointPx) + " pixels, not " +
                     text(static_cast<double>(c.value)));
   }
+  const LensDistortion& lens = camera.lens;
+  if (lens.model != LensModel::kNone && lens.model != LensModel::kVisp && lens.model != LensModel::kOpenCv)
+    return refuse("lens model is none of LensModel's");
+  const struct {
+    const char* name;
+    const real& value;
+  } coefficients[7] = {{"kud", lens.kud}, {"kdu", lens.kdu}, {"k1", lens.k1}, {"k2", lens.k2},
+                       {"p1", lens.p1},   {"p2", lens.p2},   {"k3", lens.k3}};
+  for (const auto& c : coefficients) {
+    if (!finite_within(c.value, kMaxLensCoefficient))
+      return refuse(std::string("lens coefficient ") + c.name + " must be within +-" + text(kMaxLensCoefficient) +
+                    ", not " + text(static_cast<double>(c.value)));
+  }
   return std::nullopt;
 }
 
