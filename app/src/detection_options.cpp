@@ -24,6 +24,12 @@ Result<bool> distance_range(const std::string& option, const std::string& text, 
     return Error{"", 0, option + " '" + text + "': expected MIN:MAX in metres, 0 < MIN < MAX <= 100"};
   params.views.distance_min = real(low);
   params.views.distance_max = real(high);
+  // A fixed-point real rounds a tiny MIN to 0, which would mean "the default range".
+  if (!(params.views.distance_min > real(0)) || !(params.views.distance_max > params.views.distance_min))
+    return Error{"", 0,
+                 option + " '" + text + "': MIN and MAX round to " +
+                     std::to_string(static_cast<double>(params.views.distance_min)) + " and " +
+                     std::to_string(static_cast<double>(params.views.distance_max)) + " m in this build's real"};
   return true;
 }
 

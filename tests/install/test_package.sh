@@ -167,6 +167,8 @@ fi
 # installed command line's poses.
 if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
   beside_last=24
+  # ViSP prints thetaU from the matrix in double; edgetrack track's CSV has the real's own thetaU.
+  case $real in double) beside_tol=1e-6 ;; s40_23) beside_tol=2e-5 ;; *) beside_tol=1e-3 ;; esac
   configure "$source/tests/install/visp_beside" "$work/visp_beside" >"$work/visp_beside.log" 2>&1 &&
     cmake --build "$work/visp_beside" >>"$work/visp_beside.log" 2>&1 ||
     { cat "$work/visp_beside.log"; fail "the ViSP program with edgetrack does not build with find_package"; }
@@ -187,14 +189,14 @@ if [ "$mode" = prefix ] && [ -z "$toolchain" ]; then
   for program in "$work/visp_beside/visp_beside" "$work/visp_beside_pc"; do
     "$program" "$mbt/cube.cao" "$camera" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" 0 $beside_last >"$program.out" ||
       fail "$program failed ($shared symbols of the ports have the same names as ViSP's)"
-    awk -v frames=$((beside_last + 1)) '
+    awk -v frames=$((beside_last + 1)) -v tol=$beside_tol '
       FNR == NR { if (FNR > 1) { for (i = 2; i <= 7; i++) pose[$1, i] = $i } ; next }
       {
         n++
         if ($1 != "frame" || $2 != n - 1) { print "line " n ": not frame " n - 1 ": " $0; bad++; next }
         for (i = 2; i <= 7; i++) {
           d = $(i + 1) - pose[$2, i]
-          if (d > 1e-6 || d < -1e-6) { print "frame " $2 ": coordinate " i - 1 " is " $(i + 1) ", edgetrack track says " pose[$2, i]; bad++ }
+          if (d > tol || d < -tol) { print "frame " $2 ": coordinate " i - 1 " is " $(i + 1) ", edgetrack track says " pose[$2, i]; bad++ }
         }
       }
       END { if (n != frames) { print n " frames printed, expected " frames; bad++ } ; exit bad > 0 }

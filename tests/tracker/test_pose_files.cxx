@@ -15,16 +15,23 @@ using namespace edgetrack;
 
 namespace {
 
-/// Writes `pose` as vpHomogeneousMatrix::save does: four rows of four numbers.
+/// Writes `pose` as vpHomogeneousMatrix::save does: four rows of four numbers. The rotation is
+/// made from the pose's thetaU in double (Rodrigues), orthonormal to double's precision as a
+/// ViSP program's is, whatever the `real` (S47.16's own matrix is off by its resolution).
 void write_matrix(const std::string& path, const Se3& pose) {
+  const Vec3 tu = pose.theta_u(), t = pose.translation();
+  const double w[3] = {static_cast<double>(tu.x), static_cast<double>(tu.y), static_cast<double>(tu.z)};
+  const double translation[3] = {static_cast<double>(t.x), static_cast<double>(t.y), static_cast<double>(t.z)};
+  const double angle = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  const double k[3] = {w[0] / angle, w[1] / angle, w[2] / angle};
+  const double c = std::cos(angle), s = std::sin(angle);
+  const double cross[3][3] = {{0, -k[2], k[1]}, {k[2], 0, -k[0]}, {-k[1], k[0], 0}};
   std::ofstream file(path);
   char row[160];
   for (int r = 0; r < 3; ++r) {
-    const Vec3 t = pose.translation();
-    const double translation[3] = {static_cast<double>(t.x), static_cast<double>(t.y), static_cast<double>(t.z)};
-    std::snprintf(row, sizeof row, "%.10g %.10g %.10g %.10g\n", static_cast<double>(pose.rotation().m[r][0]),
-                  static_cast<double>(pose.rotation().m[r][1]), static_cast<double>(pose.rotation().m[r][2]),
-                  translation[r]);
+    double m[3];
+    for (int col = 0; col < 3; ++col) m[col] = (r == col ? c : 0) + s * cross[r][col] + (1 - c) * k[r] * k[col];
+    std::snprintf(row, sizeof row, "%.10g %.10g %.10g %.10g\n", m[0], m[1], m[2], translation[r]);
     file << row;
   }
   file << "0 0 0 1\n";

@@ -35,7 +35,7 @@ static void test_template_bounds() {
   const Result<long long> defaults = checked_view_count(range, camera, extent);
   TEST("the default range: 162 directions x 18 in-plane steps per distance",
        defaults.ok() && defaults.value() % (162 * 18) == 0 && defaults.value() <= kMaxTemplateViews, true);
-  range.distance_min = real(1e-6);
+  range.distance_min = real(1e-3);
   range.distance_max = real(100);
   TEST("a nearest distance inside the model is refused", refused_with(checked_view_count(range, camera, extent), "inside the model"),
        true);

@@ -143,7 +143,7 @@ void status_block() {
   TEST("a file with <edgetrack><status> and <status> is read", read.ok(), true);
   TEST_NEAR("  the tracked scale", config.params.status.tracked_scale_px, 1.5, 1e-6);
   TEST_EQUAL("  the learning frames", config.params.status.learn_frames, 8);
-  TEST_NEAR("  the least inlier share", config.params.status.least_inlier_share, 0.3, 1e-6);
+  TEST_NEAR("  the least inlier share", config.params.status.least_inlier_share, 0.3, 1e-4);  // S47.16: 1.5e-5 steps
   TEST_EQUAL("  and ViSP's range beside them", config.params.me.range, 6u);
 }
 

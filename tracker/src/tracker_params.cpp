@@ -120,8 +120,9 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
     return unfiled("the pose's robust evaluations", "1..10000", pose.robust_evaluations);
   if (pose.robust_rounds < 0 || pose.robust_rounds > 100) return unfiled("the pose's robust rounds", "0..100", pose.robust_rounds);
   if (pose.min_points < 1) return unfiled("the pose's least points", "at least 1", pose.min_points);
-  if (!(pose.x_tolerance > real(0)) || !(pose.f_tolerance > real(0)) || pose.g_tolerance < real(0))
-    return SettingProblem{"", "the pose's tolerances must be positive"};
+  // MINPACK's tolerances are nonnegative: S47.16 rounds the default x_tolerance (1e-6) to 0.
+  if (!(pose.x_tolerance >= real(0)) || !(pose.f_tolerance >= real(0)) || !(pose.g_tolerance >= real(0)))
+    return SettingProblem{"", "the pose's tolerances must be at least 0"};
   if (pose.tukey_c < real(0) || pose.tukey_floor < real(0) || pose.rounds_settled_px < real(0))
     return SettingProblem{"", "Tukey's c and floor and the pose's rounds_settled_px must be at least 0"};
   const MotionParams& motion = params.motion;

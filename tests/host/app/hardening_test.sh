@@ -148,7 +148,7 @@ case $name in
     expect_error "$work/one.pgm: the downscaled image is under 16 x 16" "$edgetrack" detect --model "$mbt/cube.cao" \
       --camera "$mbt/cube.xml" --image "$work/one.pgm"
     expect_error "puts the camera inside the model" timeout 20 "$edgetrack" templates --model "$mbt/cube.cao" \
-      --camera "$mbt/cube.xml" --size 640x480 --distance 1e-300:100 --out "$work/t.txt"
+      --camera "$mbt/cube.xml" --size 640x480 --distance 0.001:100 --out "$work/t.txt"
     expect_error "more than the 74560 a template file holds" timeout 20 "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$mbt/cube.xml" --size 640x480 --subdivisions 4 --in-plane 360 --out "$work/t.txt"
     printf '<conf><camera><px>1e308</px></camera></conf>\n' >"$work/px.xml"
