@@ -16,8 +16,11 @@ foreach(target IN LISTS edgetrack_port_targets ITEMS tracker)
                                                INSTALL_RPATH "$ORIGIN")
   endif()
 endforeach()
-# The installed command line finds shared libraries installed beside it (a no-op when static).
-set_target_properties(edgetrack PROPERTIES INSTALL_RPATH "$ORIGIN/${EDGETRACK_INSTALL_LIBDIR_FROM_BINDIR}")
+# The installed command line finds shared libraries installed beside it. Only with shared
+# libraries: a static ARM executable has no RUNPATH entry for the install to rewrite.
+if(BUILD_SHARED_LIBS)
+  set_target_properties(edgetrack PROPERTIES INSTALL_RPATH "$ORIGIN/${EDGETRACK_INSTALL_LIBDIR_FROM_BINDIR}")
+endif()
 
 set(EDGETRACK_MAINTAINER "edgetrack developers <edgetrack-dev@users.noreply.github.com>")
 set(EDGETRACK_TOOLS_PACKAGE edgetrack)
