@@ -105,7 +105,7 @@ static void test_api_door() {
   Rgb565Frame image;
   renderer.render(model.value(), start, 7u, image);
   const FrameView good = rgb565_view(image);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  [[maybe_unused]] const double nan = std::numeric_limits<double>::quiet_NaN();
 
   // Named cases of #32, each refused.
   auto refused = [&](const PinholeCamera& c, const Se3& pose, const TrackerParams& params) {

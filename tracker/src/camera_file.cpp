@@ -11,16 +11,17 @@
 
 #include "edgetrack/input_file.h"
 #include "edgetrack/number_text.h"
+#include "edgetrack/tracker_inputs.h"
 #include "edgetrack/xml_document.h"
 
 namespace edgetrack {
 namespace {
 
-constexpr FieldRange kFocal{"focal length (pixels)", 1e-3, 1e6};
-constexpr FieldRange kCentre{"principal point (pixels)", -1e6, 1e6};
-constexpr FieldRange kSize{"image size (pixels)", 1, 100000};
-/// Distortion coefficients of real lenses stay within a few units.
-constexpr FieldRange kCoefficient{"distortion coefficient", -100, 100};
+// The tracker's own limits (tracker_inputs.h, image_limits.h), so that what reads is tracked.
+constexpr FieldRange kFocal{"focal length (pixels)", 1e-3, kMaxFocalPx};
+constexpr FieldRange kCentre{"principal point (pixels)", -kMaxPrincipalPointPx, kMaxPrincipalPointPx};
+constexpr FieldRange kSize{"image size (pixels)", 1, kMaxImageSide};
+constexpr FieldRange kCoefficient{"distortion coefficient", -kMaxLensCoefficient, kMaxLensCoefficient};
 constexpr FieldRange kMatrixSize{"matrix size", 1, 16};
 
 /// A number already read (a matrix entry) refused at `line` when outside `range`.

@@ -19,8 +19,8 @@ namespace edgetrack {
 /// +-kMaxPrincipalPointPx of the image's corner.
 constexpr double kMaxFocalPx = 1e6;
 constexpr double kMaxPrincipalPointPx = 1e6;
-/// Lens coefficients (pinhole_camera.h) lie within +-kMaxLensCoefficient, as the calibration
-/// readers accept them.
+/// Lens coefficients (pinhole_camera.h) lie within +-kMaxLensCoefficient (real lenses stay
+/// within a few units), as the calibration reader accepts them.
 constexpr double kMaxLensCoefficient = 100;
 /// Model coordinates lie within +-kMaxModelCoordinate metres, as the model readers accept them.
 constexpr double kMaxModelCoordinate = 1e6;
