@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "configuration.h"
 #include "detection_options.h"
+#include "downscaled_tracking.h"
 #include "edgetrack/detector/detector.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
@@ -76,6 +77,11 @@ int detect_main(int argc, char** argv) {
                              "image size " + std::to_string(image.value().width) + "x" +
                                  std::to_string(image.value().height) + " does not match the camera's " +
                                  std::to_string(camera.width) + "x" + std::to_string(camera.height)});
+  // A large image is detected on a reduced copy; the pose found is the full-size camera's.
+  int factor = 1;
+  camera = detection_camera(camera, "detect", factor);
+  FramePixels reduced;
+  const edgetrack::FrameView frame = tracked_frame(image.value(), factor, reduced);
   auto templates = templates_for(a, model.value(), camera);
   if (!templates.ok()) {
     edgetrack::Error error = templates.error();
@@ -87,7 +93,7 @@ int detect_main(int argc, char** argv) {
                                               edgetrack::DetectorParams{}, config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
   const auto start = std::chrono::steady_clock::now();
-  const auto detected = detector.value().detect(image.value().view());
+  const auto detected = detector.value().detect(frame);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!detected.ok()) return report("detect", {a.text("--image"), 0, detected.error().message});
   const edgetrack::Detection& detection = detected.value();

@@ -11,7 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "$1" && pwd) seconds=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(cao obj pos points camera_xml netpbm raw_rgb565 pose_table)
+[ ${#targets[@]} -gt 0 ] || targets=(cao obj pos points camera_xml netpbm raw_rgb565 pose_table templates camera_file api)
 found=0
 echo "| target | seconds | executions | corpus files | peak RSS (MB) | slowest input (whole s) | findings |"
 echo "|---|---:|---:|---:|---:|---:|---|"

@@ -138,6 +138,11 @@ PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
           camera.width / factor, camera.height / factor, camera.lens};
 }
 
+int detection_reduction(const PinholeCamera& camera) {
+  const int side = camera.width < camera.height ? camera.width : camera.height;
+  return side <= kMaxDetectionSide ? 1 : (side + kMaxDetectionSide - 1) / kMaxDetectionSide;
+}
+
 PinholeCamera TemplateSet::matching_camera() const { return downscaled_camera(camera, params.downscale); }
 
 size_t TemplateSet::memory_bytes() const {

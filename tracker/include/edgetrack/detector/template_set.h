@@ -75,6 +75,20 @@ Se3 template_pose(const Template& t, const ModelExtent& extent);
 /// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5).
 PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
 
+/// The longest shorter image side detection runs on at full size. A template's features lie
+/// within 255 pixels of its corner (a byte each) in the matching image, so that beyond about
+/// 1280 pixels no view of the default range fits one; and the refinement's settings
+/// (DetectorParams) are pixels chosen on frames of QVGA to VGA size: the generated cube of
+/// tests/host/app (detect_large_image) rendered at 960x720 and 1280x960 is not found at full
+/// size and is found at 640x480.
+constexpr int kMaxDetectionSide = 640;
+
+/// The factor a frame of `camera`'s size is reduced by for detection (templates, matching and
+/// refinement alike): 1 up to kMaxDetectionSide pixels on its shorter side, else the smallest
+/// integer that brings the side there. A pose found with the reduced camera
+/// (downscaled_camera) is the full-size camera's: the reduced camera sees the same rays.
+int detection_reduction(const PinholeCamera& camera);
+
 /// A short text that changes when the model's geometry changes: a hash of its vertices (in
 /// micrometres), faces, edges and curved primitives.
 std::string model_fingerprint(const EdgeModel& model);
