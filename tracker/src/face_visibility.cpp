@@ -76,16 +76,20 @@ bool clip_to_view(const Vec3& a, const Vec3& b, const PinholeCamera& camera, con
 }
 
 FaceVisibility::FaceVisibility(const EdgeModel& model)
-    : face_visible_(model.faces.size(), 0), edge_tracked_(model.edges.size(), 0) {
-  size_t most = 0;
+    : face_visible_(model.faces.size(), 0), edge_tracked_(static_cast<size_t>(primitive_count(model)), 0),
+      edge_count_(model.edges.size()) {
+  size_t most = 4;  // a circle's bounding square
   for (const Face& face : model.faces) most = std::max(most, face.vertices.size());
   polygon_.reserve(most + 6);  // each clipping plane adds at most one vertex
   clipped_.reserve(most + 6);
+  reset();
 }
 
 void FaceVisibility::reset() {
   std::fill(face_visible_.begin(), face_visible_.end(), 0);
-  std::fill(edge_tracked_.begin(), edge_tracked_.end(), 0);
+  // Edges follow their faces; cylinders are always tracked, circles unless level of detail drops them.
+  std::fill(edge_tracked_.begin(), edge_tracked_.begin() + static_cast<long>(edge_count_), 0);
+  std::fill(edge_tracked_.begin() + static_cast<long>(edge_count_), edge_tracked_.end(), 1);
 }
 
 real FaceVisibility::clipped_area(const EdgeModel& model, int face, const PinholeCamera& camera,
@@ -93,6 +97,21 @@ real FaceVisibility::clipped_area(const EdgeModel& model, int face, const Pinhol
   polygon_.clear();
   for (int v : model.faces[static_cast<size_t>(face)].vertices)
     polygon_.push_back(camera_from_model * model.vertices[static_cast<size_t>(v)]);
+  return clipped_polygon_area(camera, clipping);
+}
+
+real FaceVisibility::clipped_square_area(const Circle& circle, const PinholeCamera& camera,
+                                         const Se3& camera_from_model, const ViewClipping& clipping) {
+  // ViSP's polygon of a circle: the square about it in its plane, two sides along the direction
+  // from its centre to its first plane point (where the rim starts).
+  const Vec3 x = circle.rim[0] - circle.centre, z = circle.radius * normalized(cross(x, circle.normal));
+  polygon_.clear();
+  for (const Vec3& corner : {circle.centre + x + z, circle.centre + x - z, circle.centre - x - z, circle.centre - x + z})
+    polygon_.push_back(camera_from_model * corner);
+  return clipped_polygon_area(camera, clipping);
+}
+
+real FaceVisibility::clipped_polygon_area(const PinholeCamera& camera, const ViewClipping& clipping) {
   HalfSpace planes[6];
   const int n = view_half_spaces(camera, clipping, planes);
   for (int i = 0; i < n && !polygon_.empty(); ++i) {
@@ -134,24 +153,38 @@ void FaceVisibility::update(const EdgeModel& model, const PinholeCamera& camera,
                                    was_visible ? cos_disappear : cos_appear, params);
   }
   const ViewClipping clipping = view_clipping(params);
+  // A free line with level of detail: tracked when its clipped image is at least the threshold.
+  const auto long_enough = [&](const Vec3& model_a, const Vec3& model_b, const PrimitiveAttributes& attributes) {
+    if (!attributes.use_lod.value_or(params.use_lod)) return true;
+    const Vec3 a = camera_from_model * model_a, b = camera_from_model * model_b;
+    real t0, t1;
+    return clip_to_view(a, b, camera, clipping, t0, t1) &&
+           norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >=
+               attributes.min_line_length.value_or(params.min_line_length);
+  };
   for (size_t e = 0; e < model.edges.size(); ++e) {
     const Edge& edge = model.edges[e];
     bool tracked = false;
     if (edge.faces[0] < 0 && edge.faces[1] < 0) {
-      tracked = true;
-      if (edge.attributes.use_lod.value_or(params.use_lod)) {
-        const Vec3 a = camera_from_model * model.vertices[static_cast<size_t>(edge.a)];
-        const Vec3 b = camera_from_model * model.vertices[static_cast<size_t>(edge.b)];
-        real t0, t1;
-        tracked = clip_to_view(a, b, camera, clipping, t0, t1) &&
-                  norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >=
-                      edge.attributes.min_line_length.value_or(params.min_line_length);
-      }
+      tracked = long_enough(model.vertices[static_cast<size_t>(edge.a)], model.vertices[static_cast<size_t>(edge.b)],
+                            edge.attributes);
     } else {
       for (int f : edge.faces)
         if (f >= 0 && face_visible_[static_cast<size_t>(f)]) tracked = true;
     }
     edge_tracked_[e] = tracked;
+  }
+  // A circle by its square (ViSP's four-point polygon about it): with level of detail, tracked
+  // when the square's clipped image covers at least the area threshold. A cylinder stays
+  // tracked: ViSP gives it the polygons of its axis and of a box about it, but tracks it while
+  // one of the box's faces is visible, and those have no orientation, which makes them visible
+  // before any level-of-detail test (vpMbtPolygon::isVisible).
+  for (size_t k = 0; k < model.circles.size(); ++k) {
+    const Circle& circle = model.circles[k];
+    edge_tracked_[static_cast<size_t>(circle_primitive(model, static_cast<int>(k)))] =
+        !circle.attributes.use_lod.value_or(params.use_lod) ||
+        clipped_square_area(circle, camera, camera_from_model, clipping) >=
+            circle.attributes.min_polygon_area.value_or(params.min_polygon_area);
   }
 }
 

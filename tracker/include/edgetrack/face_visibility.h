@@ -62,7 +62,10 @@ class FaceVisibility {
 
   /// Updates every face's state for the pose, then the edges: an edge bordering faces is
   /// tracked when at least one of them is visible (vpMbEdgeTracker); a free line always, or with
-  /// use_lod when its clipped image is at least min_line_length long.
+  /// use_lod when its clipped image is at least min_line_length long; a circle always, or with
+  /// use_lod when the image of the square about it in its plane (ViSP's polygon of a circle)
+  /// covers at least min_polygon_area; a cylinder always (ViSP: its polygons have no
+  /// orientation, and level of detail never hides them).
   void update(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
               const FaceVisibilityParams& params);
 
@@ -70,9 +73,8 @@ class FaceVisibility {
   void reset();
 
   bool face_visible(int face) const { return face_visible_[static_cast<size_t>(face)] != 0; }
-  /// Whether primitive `edge` is tracked: an edge by the rule above; a cylinder's generator or a
-  /// circle (the primitives numbered after the edges) always, as ViSP's polygons without an
-  /// orientation are.
+  /// Whether primitive `edge` (an edge, or a cylinder's generator or a circle, numbered after the
+  /// edges: edge_model.h) is tracked, by the rules above.
   bool edge_tracked(int edge) const {
     return static_cast<size_t>(edge) >= edge_tracked_.size() || edge_tracked_[static_cast<size_t>(edge)] != 0;
   }
@@ -82,9 +84,14 @@ class FaceVisibility {
                    const real& cos_limit, const FaceVisibilityParams& params);
   real clipped_area(const EdgeModel& model, int face, const PinholeCamera& camera, const Se3& camera_from_model,
                     const ViewClipping& clipping);
+  real clipped_square_area(const Circle& circle, const PinholeCamera& camera, const Se3& camera_from_model,
+                           const ViewClipping& clipping);
+  /// The image area of polygon_ (camera frame) clipped to the view.
+  real clipped_polygon_area(const PinholeCamera& camera, const ViewClipping& clipping);
 
   std::vector<unsigned char> face_visible_;
-  std::vector<unsigned char> edge_tracked_;
+  std::vector<unsigned char> edge_tracked_;  ///< per primitive: edges, cylinder sides, circles
+  size_t edge_count_ = 0;
   std::vector<Vec3> polygon_;  ///< scratch for the face clipping, sized once
   std::vector<Vec3> clipped_;
 };

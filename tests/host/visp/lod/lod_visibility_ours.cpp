@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// lod_visibility_upstream.cpp's output from edgetrack: the configuration applied, the model
 /// loaded, a fresh FaceVisibility updated at each pose, then "kept POSE NAME visible|hidden" for each
-/// named face and free line.
+/// named face, free line, cylinder and circle.
 //   lod_visibility_ours CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
 #include <cstdio>
 #include <cstdlib>
@@ -41,6 +41,13 @@ int main(int argc, char** argv) {
       std::printf("kept %d %s %s\n", index, edge.attributes.name.c_str(),
                   visibility.edge_tracked(static_cast<int>(e)) ? "visible" : "hidden");
     }
+    for (size_t c = 0; c < model.value().cylinders.size(); ++c)
+      std::printf("kept %d %s %s\n", index, model.value().cylinders[c].attributes.name.c_str(),
+                  visibility.edge_tracked(cylinder_primitive(model.value(), static_cast<int>(c), 0)) ? "visible"
+                                                                                                   : "hidden");
+    for (size_t k = 0; k < model.value().circles.size(); ++k)
+      std::printf("kept %d %s %s\n", index, model.value().circles[k].attributes.name.c_str(),
+                  visibility.edge_tracked(circle_primitive(model.value(), static_cast<int>(k))) ? "visible" : "hidden");
     ++index;
   }
   return 0;

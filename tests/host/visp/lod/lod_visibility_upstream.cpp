@@ -2,11 +2,13 @@
 /// Which faces and lines Debian's ViSP 3.5 edge tracker keeps for a model with per-primitive
 /// level-of-detail parameters: for each pose of POSES, a fresh vpMbEdgeTracker (configuration
 /// loaded before the model, as ViSP's examples do) initialised at that pose on a blank image,
-/// then "kept POSE NAME visible|hidden" for each of its polygons. lod_visibility_ours.cpp prints the
-/// same from edgetrack.
+/// then "kept POSE NAME visible|hidden" for each of its polygons (but a cylinder's and a circle's,
+/// named cylinder_* and circle_*) and for each cylinder and circle. lod_visibility_ours.cpp prints
+/// the same from edgetrack.
 //   lod_visibility_upstream CONFIG.xml MODEL.cao POSES WIDTH HEIGHT
 #include <cstdio>
 #include <cstdlib>
+#include <list>
 #include <string>
 
 #include "pose_lines.h"
@@ -28,8 +30,19 @@ int main(int argc, char** argv) {
     vpImage<unsigned char> image(height, width, 128);
     tracker.initFromPose(image, cMo);
     vpMbHiddenFaces<vpMbtPolygon>& faces = tracker.getFaces();
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      std::printf("kept %d %s %s\n", index, faces[i]->getName().c_str(), faces[i]->isVisible() ? "visible" : "hidden");
+    for (unsigned int i = 0; i < faces.size(); ++i) {
+      const std::string name = faces[i]->getName();
+      if (name.rfind("cylinder_", 0) == 0 || name.rfind("circle_", 0) == 0) continue;
+      std::printf("kept %d %s %s\n", index, name.c_str(), faces[i]->isVisible() ? "visible" : "hidden");
+    }
+    std::list<vpMbtDistanceCylinder*> cylinders;
+    tracker.getLcylinder(cylinders);
+    for (const vpMbtDistanceCylinder* cylinder : cylinders)
+      std::printf("kept %d %s %s\n", index, cylinder->getName().c_str(), cylinder->isVisible() ? "visible" : "hidden");
+    std::list<vpMbtDistanceCircle*> circles;
+    tracker.getLcircle(circles);
+    for (const vpMbtDistanceCircle* circle : circles)
+      std::printf("kept %d %s %s\n", index, circle->getName().c_str(), circle->isVisible() ? "visible" : "hidden");
     ++index;
   }
   return 0;
