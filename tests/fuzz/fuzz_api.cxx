@@ -37,7 +37,7 @@ bool all_finite(const Se3& pose) {
   return all;
 }
 
-/// `ordinary` into a real as a caller would convert it: fixed point saturates what it cannot hold.
+/// `value` into a real as a caller would convert it: fixed point saturates what it cannot hold.
 real as_real(double value) {
 #if defined(EDGETRACK_REAL_S47_16) || defined(EDGETRACK_REAL_S40_23)
   if (!std::isfinite(value) || std::fabs(value) > 1e12) value = value > 0 ? 1e12 : value < 0 ? -1e12 : 0;
