@@ -153,21 +153,19 @@ void FaceVisibility::update(const EdgeModel& model, const PinholeCamera& camera,
                                    was_visible ? cos_disappear : cos_appear, params);
   }
   const ViewClipping clipping = view_clipping(params);
-  // A free line with level of detail: tracked when its clipped image is at least the threshold.
-  const auto long_enough = [&](const Vec3& model_a, const Vec3& model_b, const PrimitiveAttributes& attributes) {
-    if (!attributes.use_lod.value_or(params.use_lod)) return true;
-    const Vec3 a = camera_from_model * model_a, b = camera_from_model * model_b;
-    real t0, t1;
-    return clip_to_view(a, b, camera, clipping, t0, t1) &&
-           norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >=
-               attributes.min_line_length.value_or(params.min_line_length);
-  };
   for (size_t e = 0; e < model.edges.size(); ++e) {
     const Edge& edge = model.edges[e];
     bool tracked = false;
     if (edge.faces[0] < 0 && edge.faces[1] < 0) {
-      tracked = long_enough(model.vertices[static_cast<size_t>(edge.a)], model.vertices[static_cast<size_t>(edge.b)],
-                            edge.attributes);
+      tracked = true;
+      if (edge.attributes.use_lod.value_or(params.use_lod)) {
+        const Vec3 a = camera_from_model * model.vertices[static_cast<size_t>(edge.a)];
+        const Vec3 b = camera_from_model * model.vertices[static_cast<size_t>(edge.b)];
+        real t0, t1;
+        tracked = clip_to_view(a, b, camera, clipping, t0, t1) &&
+                  norm(camera.project(a + t1 * (b - a)) - camera.project(a + t0 * (b - a))) >=
+                      edge.attributes.min_line_length.value_or(params.min_line_length);
+      }
     } else {
       for (int f : edge.faces)
         if (f >= 0 && face_visible_[static_cast<size_t>(f)]) tracked = true;
