@@ -77,9 +77,11 @@ int detect_main(int argc, char** argv) {
                              "image size " + std::to_string(image.value().width) + "x" +
                                  std::to_string(image.value().height) + " does not match the camera's " +
                                  std::to_string(camera.width) + "x" + std::to_string(camera.height)});
-  // A large image is detected on a reduced copy; the pose found is the full-size camera's.
+  // A large image is detected on a reduced copy when the templates are made now; a template file
+  // fixes the camera, and with it the size, detection runs at (track --init-auto reads the same
+  // files on full-size frames). The pose found is the full-size camera's.
   int factor = 1;
-  camera = detection_camera(camera, "detect", factor);
+  if (!a.has("--templates")) camera = detection_camera(camera, "detect", factor);
   FramePixels reduced;
   const edgetrack::FrameView frame = tracked_frame(image.value(), factor, reduced);
   auto templates = templates_for(a, model.value(), camera);

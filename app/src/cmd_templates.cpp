@@ -49,9 +49,7 @@ int templates_main(int argc, char** argv) {
   if (camera.value().width == 0 || camera.value().height == 0)
     return report("templates", {a.text("--camera"), 0, "the camera has no image size: give --size WIDTHxHEIGHT"});
   const auto start = std::chrono::steady_clock::now();
-  int factor = 1;
-  const edgetrack::PinholeCamera detected_with = detection_camera(camera.value(), "templates", factor);
-  auto set = edgetrack::make_template_set(model.value(), detected_with, params.value());
+  auto set = edgetrack::make_template_set(model.value(), camera.value(), params.value());
   if (!set.ok()) return report("templates", {a.text("--model"), 0, set.error().message});
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   auto written = write_atomically(a.text("--out"), [&](const std::string& partial) {

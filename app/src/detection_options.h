@@ -31,8 +31,7 @@ edgetrack::Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker
 
 /// The camera detection runs with for images of `camera`'s size (edgetrack::detection_reduction):
 /// `camera` itself, or the camera of frames `factor` times smaller, with a line on stdout saying
-/// so (`command`: the command's name). `templates` and `detect` agree on it, so a template file
-/// made for a large camera is one `detect` reads.
+/// so (`command`: the command's name).
 edgetrack::PinholeCamera detection_camera(const edgetrack::PinholeCamera& camera, const char* command, int& factor);
 
 /// The templates of `--templates FILE` when given (checked against the model and the camera),

@@ -57,7 +57,7 @@ case $name in
   detect_large_image)
     # A frame of 1280x960 (its shorter side above the detector's 640 px) is detected on a copy
     # half its size, and the pose, the full-size camera's, puts the cube's centre within 2 mm of
-    # the truth. templates makes its file for the same reduced camera, which detect then reads.
+    # the truth.
     printf '<?xml version="1.0"?>\n<conf><camera><u0>640</u0><v0>480</v0><px>880</px><py>880</py></camera></conf>\n' \
       >"$work/large.xml"
     "$edgetrack" synth --out "$work/seq" --camera "$work/large.xml" --size 1280x960 --frames 1 \
@@ -70,11 +70,7 @@ case $name in
     pos_as_row "$work/seq/first.pos" >"$work/truth.csv"
     read -r worst mean < <(centre_offsets "$work/found.csv" "$work/truth.csv" "0 0 0")
     echo "centre $worst mm from the truth"
-    less "$worst" 2.0 || fail "the centre is 2 mm or more from the truth"
-    "$edgetrack" templates "${args[@]}" --out "$work/t.txt" --subdivisions 1 >/dev/null || fail "templates failed"
-    "$edgetrack" detect "${args[@]}" --image "$work/seq/frames/frame0000.ppm" --templates "$work/t.txt" >/dev/null
-    status=$?
-    [ "$status" -eq 0 ] || [ "$status" -eq 3 ] || fail "detect refused the templates made for the large camera ($status)" ;;
+    less "$worst" 2.0 || fail "the centre is 2 mm or more from the truth" ;;
   detect_not_found)
     # A flat grey frame: "not found", exit status 3, no pose file.
     { printf 'P5\n320 240\n255\n'; head -c $((320 * 240)) /dev/zero | tr '\0' '\200'; } >"$work/flat.pgm"
