@@ -27,7 +27,7 @@ edgetrack::Se3 pose_at_time(const std::vector<edgetrack::Se3>& poses, double t);
 
 /// The renders one frame is made of: their times (frame intervals from the frame's own) and, per
 /// image row, each render's weight. Renders are evenly spaced, no farther apart than
-/// kMaxRenderStepPx of image motion; a row's weights average the renders over its exposure,
+/// kMaxRenderStepPx of image motion (or kMaxRenders of them over a longer motion); a row's weights average the renders over its exposure,
 /// each render standing for its time by linear interpolation between neighbours, so that with
 /// no shutter time a row is the scene at its read time interpolated between the two nearest.
 struct ExposurePlan {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// `edgetrack synth` (host): renders a ground-truth sequence with OSMesa, the paper's OGRE step:
 /// the model lit over a cluttered backdrop, anti-aliased, with optional noise, blur and a moving
-/// occluder; writes the frames, truth.csv, the first pose (.pos) and the camera XML.
+/// occluder, a lens and a camera's effects (camera_timing.h, camera_response.h); writes the frames,
+/// truth.csv, the first pose (.pos) and the camera XML.
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
