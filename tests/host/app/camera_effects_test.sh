@@ -47,7 +47,7 @@ case $name in
     # A barrel lens, 12 px per frame, the shutter open and the rows read over the whole frame
     # interval, a 40 % exposure step and JPEG at 50: tracked with the lens given, none lost and
     # the lens still worth giving. The error is the rolling shutter's shear and the saturated
-    # ramps of blurred edges after the step (docs/results/camera.md), not the lens.
+    # ramps of blurred edges after the step (tests/bench/camera_eval/results_causes.sh), not the lens.
     synth --out "$work/seq" --frames 12 --pgm --kud -0.25 --speed 4.2 --shutter 1 --readout 1 \
       --exposure 0:1,5:1,6:1.4 --jpeg 50 >/dev/null || fail "synth failed"
     track_with_and_without_lens "$work/seq" "frame%04d.pgm"
