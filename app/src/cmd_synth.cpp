@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// `edgetrack synth` (host): renders a ground-truth sequence with OSMesa, the paper's OGRE step:
 /// the model lit over a cluttered backdrop, anti-aliased, with optional noise, blur and a moving
-/// occluder; writes the frames, truth.csv, the first pose (.pos) and the camera XML.
+/// occluder, a lens and a camera's effects (camera_timing.h, camera_response.h); writes the frames,
+/// truth.csv, the first pose (.pos) and the camera XML.
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <optional>
 
 #include "args.h"
+#include "camera_response.h"
+#include "camera_timing.h"
 #include "commands.h"
 #include "configuration.h"
 #include "edgetrack/lens_resampling.h"
@@ -89,6 +92,9 @@ struct SynthOptions {
   int hide_first = -1, hide_last = -1;  ///< --hide: frames the board covers the whole object on
   double speed = 1, noise = 2, blur = 0.6, cover = 0, clutter_mm = 0;
   bool occluder = false, rgb565 = false, pgm = false, reverse = false;
+  SensorTiming timing;        ///< --shutter, --readout: motion blur and rolling shutter
+  ExposureSchedule exposure;  ///< --exposure: brightness over the sequence
+  int jpeg_quality = 0;       ///< --jpeg: 0 for none
 };
 
 /// ViSP's kdu for a lens with kud: the least-squares inverse x = x_d (1 + kdu r_d^2) over a grid
@@ -123,6 +129,26 @@ RgbImage through_lens(const edgetrack::LensResampling& lens, const PinholeCamera
         seen.pixel(x, y)[c] = static_cast<uint8_t>((sum + scale / 2) / scale);
       }
   return seen;
+}
+
+/// --shutter, --readout, --exposure and --jpeg into `o`.
+Result<bool> read_camera_effects(const Args& a, SynthOptions& o) {
+  auto shutter = a.number("--shutter"), readout = a.number("--readout");
+  auto jpeg = a.integer("--jpeg");
+  for (const auto* bad : {&shutter.error(), &readout.error(), &jpeg.error()})
+    if (!bad->message.empty()) return *bad;
+  o.timing = {shutter.value(), readout.value()};
+  // A shutter open longer than the frame interval, or rows read over more than one, is no camera.
+  if (o.timing.shutter < 0 || o.timing.shutter > 1) return Error{"", 0, "--shutter must be 0..1 frame intervals"};
+  if (o.timing.readout < 0 || o.timing.readout > 1) return Error{"", 0, "--readout must be 0..1 frame intervals"};
+  o.jpeg_quality = jpeg.value();
+  if (o.jpeg_quality < 0 || o.jpeg_quality > 100) return Error{"", 0, "--jpeg must be a quality 1..100, or 0 for none"};
+  if (a.has("--exposure")) {
+    auto exposure = ExposureSchedule::parse(a.text("--exposure"));
+    if (!exposure.ok()) return exposure.error();
+    o.exposure = exposure.value();
+  }
+  return true;
 }
 
 /// The options, or an Error: one naming no file is a bad option value (exit status 2), one
@@ -184,6 +210,8 @@ Result<SynthOptions> read_options(const Args& a) {
     o.camera.lens.kud = real(kud.value());
     o.camera.lens.kdu = real(fitted_kdu(o.camera));
   }
+  auto camera_effects = read_camera_effects(a, o);
+  if (!camera_effects.ok()) return camera_effects.error();
   if (o.camera.distorted() && (o.cover > 0 || a.has("--hide")))
     return Error{"", 0, "--cover and --hide draw their board in image columns: not through a lens (--kud, --intrinsics)"};
   if (!usable_image_size(static_cast<long long>(o.camera.width) * o.supersample,
@@ -233,7 +261,7 @@ SceneExtras backdrop_scene(const edgetrack::EdgeModel& m, const Se3& first_pose,
 
 /// Renders and writes every frame and the truth rows; returns the occluder's covered shares.
 Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeModel& m, const std::vector<Se3>& poses,
-                                SceneExtras extras, const std::string& pattern) {
+                                const ExposurePlan& plan, SceneExtras extras, const std::string& pattern) {
   // Through a lens: GL draws the pinhole image with a margin at twice the size, read through the
   // lens at 2 x 2 samples a pixel.
   std::optional<edgetrack::LensResampling> lens;
@@ -262,9 +290,17 @@ Result<CoverStats> write_frames(const SynthOptions& o, const edgetrack::EdgeMode
       }
       if (o.cover > 0) covered.add(static_cast<double>(extras.band.covered_share));
     }
-    RgbImage image = renderer.value()->render_scene(m, pose, extras);
-    if (lens) image = through_lens(*lens, o.camera, image);
+    RgbImage image = expose(plan, [&](double offset) {
+      RgbImage render = renderer.value()->render_scene(m, pose_at_time(poses, k + offset), extras);
+      return lens ? through_lens(*lens, o.camera, render) : render;
+    });
+    if (!o.exposure.empty()) apply_exposure(image, o.exposure.factor(k));
     degrade(image, o.noise, o.blur, static_cast<uint64_t>(o.seed) * 7919u + static_cast<uint64_t>(k));
+    if (o.jpeg_quality > 0) {
+      auto compressed = jpeg_round_trip(image, o.jpeg_quality);
+      if (!compressed.ok()) return compressed.error();
+      image = std::move(compressed.value());
+    }
     const std::string path = expand_pattern(pattern, k);
     Result<bool> written = true;
     if (o.rgb565) {
@@ -289,7 +325,7 @@ int synth_main(int argc, char** argv) {
       "--out DIR [--model FILE] [--camera FILE --size WIDTHxHEIGHT] [--intrinsics FILE | --kud K] [--trajectory paper|FILE] "
       "[--frames N] "
       "[--speed K] [--reverse] [--noise SIGMA] [--blur SIGMA] [--occluder] [--cover SHARE] [--hide FIRST:LAST] "
-      "[--clutter MM] [--rgb565 | --pgm]",
+      "[--clutter MM] [--shutter T] [--readout T] [--exposure FRAME:FACTOR,...] [--jpeg Q] [--rgb565 | --pgm]",
       {
           {"--out", "DIR", "output directory (frames/, truth.csv, first.pos, camera.xml)", ""},
           {"--model", "FILE", "model, .cao or .obj (the default is the paper's 60 mm cube)", data_dir() + "/models/cube60.cao"},
@@ -310,6 +346,12 @@ int synth_main(int argc, char** argv) {
                                "across it", "0"},
           {"--hide", "FIRST:LAST", "on these frames the board covers the whole object (it leaves the view and comes back)", ""},
           {"--clutter", "MM", "dark lines parallel to every model edge, this many mm beside it, away from the model's centre", "0"},
+          {"--shutter", "T", "motion blur: the exposure lasts T frame intervals (0..1), centred on the frame's time", "0"},
+          {"--readout", "T", "rolling shutter: rows read top to bottom over T frame intervals (0..1), the middle row at "
+                             "the frame's time", "0"},
+          {"--exposure", "FRAME:FACTOR,...", "brightness factors at key frames, linear between them (keys on consecutive "
+                                             "frames: a sudden step)", ""},
+          {"--jpeg", "Q", "each frame compressed as a JPEG of quality Q (1..100) and decoded; 0: none", "0"},
           {"--rgb565", "", "write raw RGB565 frames (.rgb565) instead of PPM", ""},
           {"--pgm", "", "write 8-bit grey PGM frames (.pgm, the luma of vpImageConvert's rule) instead of PPM", ""},
           {"--supersample", "N", "samples per pixel along each axis", "4"},
@@ -339,7 +381,9 @@ int synth_main(int argc, char** argv) {
   const std::vector<edgetrack::Segment3> clutter = edgetrack::parallel_clutter(m, real(o.clutter_mm / 1000));
   if (o.clutter_mm > 0) extras.clutter = &clutter;
   const std::string pattern = o.out + (o.rgb565 ? "/frames/frame%04d.rgb565" : o.pgm ? "/frames/frame%04d.pgm" : "/frames/frame%04d.ppm");
-  auto covered = write_frames(o, m, poses.value(), extras, pattern);
+  const double motion_px = largest_vertex_motion(m, o.camera, poses.value());
+  const ExposurePlan plan = plan_exposure(o.timing, o.camera.height, motion_px);
+  auto covered = write_frames(o, m, poses.value(), plan, extras, pattern);
   if (!covered.ok()) return report("synth", covered.error());
   auto pos = edgetrack::write_pos(o.out + "/first.pos", poses.value()[0]);
   if (!pos.ok()) return report("synth", pos.error());
@@ -352,7 +396,15 @@ int synth_main(int argc, char** argv) {
                 static_cast<double>(o.camera.lens.kud), static_cast<double>(o.camera.lens.kdu), o.out.c_str());
   }
   std::printf("synth: %d frames of %dx%d in %s, largest image motion %.2f px/frame\n", o.frames, o.camera.width,
-              o.camera.height, pattern.c_str(), largest_vertex_motion(m, o.camera, poses.value()));
+              o.camera.height, pattern.c_str(), motion_px);
+  if (plan.times.size() > 1)
+    std::printf("synth: shutter open %.3g and rows read over %.3g frame intervals: %zu renders per frame, %.3g px apart\n",
+                o.timing.shutter, o.timing.readout, plan.times.size(),
+                motion_px * (plan.times[1] - plan.times[0]));
+  if (!o.exposure.empty())
+    std::printf("synth: brightness factor %.3g on the first frame, %.3g on the last\n", o.exposure.factor(0),
+                o.exposure.factor(o.frames - 1));
+  if (o.jpeg_quality > 0) std::printf("synth: frames through JPEG at quality %d\n", o.jpeg_quality);
   if (o.cover > 0)
     std::printf("synth: occluder covers %.1f %% of the object's image on average (%.1f to %.1f %%)\n",
                 100 * covered.value().sum / o.frames, 100 * covered.value().low, 100 * covered.value().high);

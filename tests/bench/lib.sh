@@ -23,3 +23,25 @@ bench_machine() {
   printf '%s, %s cores, %s' "$(uname -m)" "$(nproc)" \
     "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
 }
+
+# callgrind_steps CALLGRIND_FILE FRAMES: "visible | grey | ME | pose | other | total" per frame,
+# from the inclusive cost of each call Tracker::track makes, itself or through its State::attempt (a
+# frame's tracking from one start pose; the rest, their own code included, is "other").
+callgrind_steps() {
+  callgrind_annotate --tree=calling --inclusive=yes "$1" 2>/dev/null | awk -v f="$2" '
+    /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); total = $1; go = 1; next }
+    /\*  .*edgetrack::Tracker::(State::)?attempt\(/ { go = 1; next }
+    go && /^ *$/ { go = 0 }
+    go && / >   / {
+      c = $1; gsub(",", "", c); name = $0
+      if (name ~ /EdgeIdBuffer::render|EdgeIdSource|ContrastMemory::references|sample_control_points|keep_visible|FaceVisibility/) v += c
+      else if (name ~ /grey_scale|convert_to_grey|BoxGreyScaler/) g += c
+      else if (name ~ /search_moving_edges|contrasts_at_points/) m += c
+      else if (name ~ /solve_pose/) p += c
+    }
+    END {
+      o = total - v - g - m - p
+      printf "%.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M | %.3f M",
+        v/f/1e6, 100*v/total, g/f/1e6, 100*g/total, m/f/1e6, 100*m/total, p/f/1e6, 100*p/total, o/f/1e6, total/f/1e6
+    }'
+}

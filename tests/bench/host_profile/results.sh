@@ -56,28 +56,6 @@ run_args() {
   esac
 }
 
-# steps CALLGRIND_FILE: "visible | grey | ME | pose | other | total" per frame, from the inclusive
-# cost of each call Tracker::track makes, itself or through Tracker::attempt (a frame's tracking
-# from one start pose; the rest, their own code included, is "other").
-steps() {
-  callgrind_annotate --tree=calling --inclusive=yes "$1" 2>/dev/null | awk -v f="$frames" '
-    /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); total = $1; go = 1; next }
-    /\*  .*edgetrack::Tracker::attempt\(/ { go = 1; next }
-    go && /^ *$/ { go = 0 }
-    go && / >   / {
-      c = $1; gsub(",", "", c); name = $0
-      if (name ~ /EdgeIdBuffer::render|EdgeIdSource|ContrastMemory::references|sample_control_points|keep_visible|FaceVisibility/) v += c
-      else if (name ~ /grey_scale|convert_to_grey|BoxGreyScaler/) g += c
-      else if (name ~ /search_moving_edges|contrasts_at_points/) m += c
-      else if (name ~ /solve_pose/) p += c
-    }
-    END {
-      o = total - v - g - m - p
-      printf "%.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M (%.0f %%) | %.3f M | %.3f M",
-        v/f/1e6, 100*v/total, g/f/1e6, 100*g/total, m/f/1e6, 100*m/total, p/f/1e6, 100*p/total, o/f/1e6, total/f/1e6
-    }'
-}
-
 labels=("${revisions[@]}" "working tree")
 declare -A step_row
 for label in "${labels[@]}"; do
@@ -87,7 +65,7 @@ for label in "${labels[@]}"; do
     # shellcheck disable=SC2046
     valgrind --tool=callgrind --callgrind-out-file="$work/$key.cg" --toggle-collect='edgetrack::Tracker::track*' \
       "$edgetrack" track $(run_args "$run") --last $((frames - 1)) --poses "$work/$key.csv" --quiet >/dev/null 2>"$work/$key.err"
-    step_row[$label.$run]=$(steps "$work/$key.cg")
+    step_row[$label.$run]=$(callgrind_steps "$work/$key.cg" "$frames")
   done
 done
 

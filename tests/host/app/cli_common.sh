@@ -56,3 +56,21 @@ check_poses() {
   [ "$lost" -eq 0 ] || fail "frames lost"
   less "$(($3 - 1)).999" "$points" || fail "fewer than $3 points per frame"
 }
+
+# track_with_and_without_lens SEQ PATTERN: tracks synth's cube sequence SEQ (frames SEQ/PATTERN)
+# with its intrinsics.xml given and without, evaluates both, and sets $with and $without (mean
+# camera position error, mm) and $lost_with (frames lost with the lens given).
+track_with_and_without_lens() {
+  local seq=$1 pattern=$2 given
+  for given in with without; do
+    local lens=()
+    [ "$given" = with ] && lens=(--intrinsics "$seq/intrinsics.xml")
+    "$edgetrack" track --model "$(dirname "$0")/../../../data/models/cube60.cao" --camera "$seq/camera.xml" \
+      "${lens[@]}" --init-pose "$seq/first.pos" --images "$seq/frames/$pattern" \
+      --poses "$work/$given.csv" --quiet >/dev/null || fail "track $given the lens failed"
+    "$edgetrack" eval --poses "$work/$given.csv" --truth "$seq/truth.csv" >"$work/$given.txt" || fail "eval failed"
+  done
+  lost_with=$(sed -n 's/^eval: .* lost=\([0-9]*\) .*/\1/p' "$work/with.txt")
+  with=$(sed -n 's/^eval: .* distance_mm=\([0-9.]*\) .*/\1/p' "$work/with.txt")
+  without=$(sed -n 's/^eval: .* distance_mm=\([0-9.]*\) .*/\1/p' "$work/without.txt")
+}

@@ -10,7 +10,7 @@ work=$2/$3
 name=$3
 rm -rf "$work" && mkdir -p "$work"
 
-# fail, expect_error, less, check_poses
+# fail, expect_error, less, check_poses, track_with_and_without_lens
 source "$(dirname "$0")/cli_common.sh"
 
 synth() { "$edgetrack" synth --frames 10 --supersample 1 "$@"; }
@@ -68,16 +68,7 @@ case $name in
     # a pinhole sequence; without it, the pinhole alone is millimetres off.
     synth --out "$work/seq" --kud -0.25 >/dev/null || fail "synth --kud failed"
     grep -q "<kud>-0.25</kud>" "$work/seq/intrinsics.xml" || fail "intrinsics.xml lacks the lens"
-    for given in with without; do
-      lens=()
-      [ "$given" = with ] && lens=(--intrinsics "$work/seq/intrinsics.xml")
-      "$edgetrack" track --model "$(dirname "$0")/../../../data/models/cube60.cao" --camera "$work/seq/camera.xml" \
-        "${lens[@]}" --init-pose "$work/seq/first.pos" --images "$work/seq/frames/frame%04d.ppm" \
-        --poses "$work/$given.csv" --quiet >/dev/null || fail "track $given the lens failed"
-      "$edgetrack" eval --poses "$work/$given.csv" --truth "$work/seq/truth.csv" >"$work/$given.txt" || fail "eval failed"
-    done
-    with=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/with.txt")
-    without=$(sed -n 's/.* distance_mm=\([0-9.]*\) .*/\1/p' "$work/without.txt")
+    track_with_and_without_lens "$work/seq" "frame%04d.ppm"
     echo "mean camera position error: $with mm with --intrinsics, $without mm without"
     less "$with" 0.3 || fail "$with mm with the lens given, expected under 0.3 mm"
     less 1 "$without" || fail "$without mm without the lens, expected over 1 mm" ;;

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Prints the markdown section for docs/results/camera_eval.md (issue 26's evaluation): generated cube
+# and wood-toy sequences seen as a real camera sees them (a barrel and a pincushion lens, motion
+# blur, an exposure step, rolling shutter, JPEG, all at once), tracked by our double and S40.23
+# builds with the defaults, and by ViSP 3.5's edge tracker where it gets the same camera.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../lib.sh"
+
+mkdir -p "$bench_build_root"
+work=$(mktemp -d "${TMPDIR:-/tmp}/camera_eval.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+edgetrack=$(bench_tree host double edgetrack)/app/edgetrack
+edgetrack_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
+if ! "$edgetrack" compare --help >/dev/null 2>&1; then
+  echo "camera_eval: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
+  exit 1
+fi
+models=$top/data/models
+fast_speed=4.2           # the paper's path 4.2 times faster: about 12 px per QVGA frame
+step_up=0:1,29:1,30:1.4   # 40 % brighter from frame 30 on
+step_down=0:1,29:1,30:0.6 # 40 % darker from frame 30 on
+jpeg_quality=50
+# All at once: through the barrel lens, fast, the shutter open and the rows read over a whole
+# frame interval, the step up, JPEG. Rendered at 2 x 2 samples a pixel (its 25 renders a frame
+# average the motion; GL draws the lens's pinhole image at twice the size).
+all_at_once=(--kud -0.25 --speed "$fast_speed" --shutter 1 --readout 1 --exposure "$step_up" --jpeg "$jpeg_quality"
+             --supersample 2)
+
+# value KEY FILE: the value of KEY=... on the first line of FILE that has it.
+value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }
+
+# row LABEL NAME MODEL LENS: ours in double (`track`, `eval`) and S40.23 (against the double's
+# poses), with synth's intrinsics.xml when LENS is "given"; ViSP's tracker (`compare`) on the
+# sequence's pinhole camera.xml unless the lens is given (compare has no lens for ViSP).
+row() {
+  local label=$1 seq=$work/$2 model=$3 lens=$4
+  local args=(--model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos"
+              --images "$seq/frames/frame%04d.pgm" --quiet)
+  [ "$lens" = given ] && args+=(--intrinsics "$seq/intrinsics.xml")
+  "$edgetrack" track "${args[@]}" --poses "$work/poses.csv" >/dev/null
+  "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
+  "$edgetrack_s40" track "${args[@]}" --poses "$work/poses_s40.csv" >/dev/null
+  "$edgetrack" eval --poses "$work/poses_s40.csv" --truth "$seq/truth.csv" >"$work/eval_s40.txt"
+  cut -d, -f1-7 "$work/poses.csv" >"$work/double_poses.csv"
+  "$edgetrack" eval --poses "$work/poses_s40.csv" --truth "$work/double_poses.csv" >"$work/s40.txt"
+  local visp="| - | - | - "
+  if [ "$lens" != given ]; then
+    "$edgetrack" compare --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
+      --images "$seq/frames/frame%04d.pgm" --truth "$seq/truth.csv" 2>/dev/null >"$work/compare.txt"
+    visp=$(printf '| %d | %.3f | %.3f ' "$(value visp_lost "$work/compare.txt")" \
+      "$(value visp_distance_mm "$work/compare.txt")" "$(value visp_max_distance_mm "$work/compare.txt")")
+  fi
+  printf '| %s | %s | %d | %.3f | %.3f | %d | %.3f | %.4f %s|\n' "$label" \
+    "$(sed -n 's/.*largest image motion \([0-9.]*\) px.*/\1/p' "$seq.txt")" "$(value lost "$work/eval.txt")" \
+    "$(value distance_mm "$work/eval.txt")" "$(value max_distance_mm "$work/eval.txt")" \
+    "$(value lost "$work/eval_s40.txt")" "$(value distance_mm "$work/eval_s40.txt")" \
+    "$(value max_distance_mm "$work/s40.txt")" "$visp"
+}
+
+# synth_kind NAME MODEL OPTIONS...: renders $work/NAME as grey PGM, synth's report in $work/NAME.txt.
+synth_kind() {
+  local name=$1 model=$2
+  shift 2
+  "$edgetrack" synth --out "$work/$name" --model "$models/$model.cao" --pgm "$@" >"$work/$name.txt"
+}
+
+# render_all MODEL: every sequence of one model.
+render_all() {
+  local model=$1
+  synth_kind "${model}_pinhole" "$model"
+  synth_kind "${model}_barrel" "$model" --kud -0.25
+  synth_kind "${model}_pincushion" "$model" --kud 0.12
+  synth_kind "${model}_fast" "$model" --speed "$fast_speed"
+  synth_kind "${model}_blur" "$model" --speed "$fast_speed" --shutter 1
+  synth_kind "${model}_rolling" "$model" --speed "$fast_speed" --readout 1
+  synth_kind "${model}_brighter" "$model" --exposure "$step_up"
+  synth_kind "${model}_darker" "$model" --exposure "$step_down"
+  synth_kind "${model}_jpeg" "$model" --jpeg "$jpeg_quality"
+  synth_kind "${model}_all" "$model" "${all_at_once[@]}"
+}
+# The two models' sequences are rendered side by side (synth runs on one core).
+render_all cube60 &
+cube_renders=$!
+render_all wood_toy
+wait "$cube_renders"
+
+echo "## Real cameras: lens, motion blur, exposure, rolling shutter, JPEG (camera_eval)"
+echo
+echo "\`tests/bench/camera_eval/results.sh\`: host double and S40.23 builds, $(bench_machine)."
+echo
+echo "Generated by \`edgetrack synth --pgm\` (OSMesa, QVGA, px = py = 220, 60 frames, noise 2, blur 0.6 px, the"
+echo "paper's path; docs/APP.md, \"synth\", says what each effect models): \"pinhole\" as before; \"barrel\" and"
+echo "\"pincushion\" through ViSP's radial lens kud = -0.25 and +0.12 (\`--kud\`), tracked with synth's"
+echo "\`intrinsics.xml\` (\`--intrinsics\`, \"given\") and without it (the pinhole camera.xml alone); \"fast\" the"
+echo "path $fast_speed times faster (\`--speed $fast_speed\`, 12 px per frame); \"motion blur\" that with the"
+echo "shutter open the whole frame interval (\`--shutter 1\`: each edge smeared over its motion, up to 12 px);"
+echo "\"rolling shutter\" that with the rows read over the whole frame interval (\`--readout 1\`: the bottom"
+echo "row 12 px of motion after the top); \"exposure\" 40 % brighter or darker from frame 30 on"
+echo "(\`--exposure $step_up\` or \`$step_down\`; bright faces saturate at 255); \"JPEG\" quality"
+echo "$jpeg_quality (\`--jpeg $jpeg_quality\`); \"all at once\" \`${all_at_once[*]}\`, tracked with the lens given."
+echo "Every tracker starts from the true first pose with the defaults and the camera-only XML synth writes."
+echo "Ours: \`edgetrack track\` and \`edgetrack eval\` (camera position in the object frame: mean and largest"
+echo "distance to the truth, mm) in the double and S40.23 builds; \"S40.23 - double\": the largest per-frame"
+echo "distance between their camera positions. ViSP 3.5's vpMbGenericTracker (edge) through"
+echo "\`edgetrack compare --truth\` (lost when track() throws) on the pinhole camera: \"-\" where our tracker is"
+echo "given the lens, which \`compare\` does not pass to ViSP."
+echo
+echo "| sequence | motion px/frame | lost | mean mm | largest mm | S40.23 lost | S40.23 mean mm | S40.23 - double mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for model in cube60 wood_toy; do
+  [ "$model" = cube60 ] && name="60 mm cube" || name="wood toy"
+  row "$name, pinhole" "${model}_pinhole" "$models/$model.cao" none
+  row "$name, barrel kud -0.25, given" "${model}_barrel" "$models/$model.cao" given
+  row "$name, barrel kud -0.25, not given" "${model}_barrel" "$models/$model.cao" none
+  row "$name, pincushion kud +0.12, given" "${model}_pincushion" "$models/$model.cao" given
+  row "$name, pincushion kud +0.12, not given" "${model}_pincushion" "$models/$model.cao" none
+  row "$name, fast" "${model}_fast" "$models/$model.cao" none
+  row "$name, fast, motion blur" "${model}_blur" "$models/$model.cao" none
+  row "$name, fast, rolling shutter" "${model}_rolling" "$models/$model.cao" none
+  row "$name, exposure +40 %" "${model}_brighter" "$models/$model.cao" none
+  row "$name, exposure -40 %" "${model}_darker" "$models/$model.cao" none
+  row "$name, JPEG $jpeg_quality" "${model}_jpeg" "$models/$model.cao" none
+  row "$name, all at once" "${model}_all" "$models/$model.cao" given
+done
