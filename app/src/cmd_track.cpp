@@ -93,12 +93,13 @@ void print_status(int frame, const edgetrack::FrameResult& result) {
   const edgetrack::FrameMeasures& m = result.measures;
   std::fprintf(stderr, "frame %d %s (%s): %d of %d visible points matched, %d kept; residual scale %.2f px over "
                "range %u px; correction %.1f px; pose change %.1f mm %.1f deg; %llu saturations; "
-               "pose uncertainty %.2f px%s\n",
+               "pose uncertainty %.2f px; edge support %.2f, edge angle %.1f deg%s\n",
                frame, edgetrack::status_name(result.status), edgetrack::reason_name(result.reason), m.matched,
                m.visible, m.kept, static_cast<double>(m.residual_scale), m.range,
                static_cast<double>(m.correction_px), static_cast<double>(m.translation_change_mm),
                static_cast<double>(m.rotation_change_deg), static_cast<unsigned long long>(m.saturations),
-               static_cast<double>(m.pose_uncertainty_px), result.retried ? "; retried from the last trusted pose" : "");
+               static_cast<double>(m.pose_uncertainty_px), static_cast<double>(m.support_share),
+               static_cast<double>(m.gradient_angle_deg), result.retried ? "; retried from the last trusted pose" : "");
 }
 
 /// The initial pose from a .init file and the image positions of its points (full-size pixels).
@@ -197,7 +198,7 @@ const CommandLine& track_command_line() {
           {"--last", "N", "last frame number, inclusive (default: the last frame)", ""},
           {"--raw-size", "WIDTHxHEIGHT", "size of raw RGB565 frames (.rgb565, .raw)", ""},
           {"--downscale", "N", "track frames N times smaller (640x480 -> QVGA with 2); the camera, sample step and range follow", "1"},
-          {"--poses", "FILE", "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status)", ""},
+          {"--poses", "FILE", "write the poses CSV (frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg)", ""},
           {"--overlay", "DIR", "write overlay frames (wireframe and cone) into this directory", ""},
           {"--video", "FILE", "write the overlay as a video (host)", ""},
           {"--config", "FILE", "a second ViSP XML whose values override those of --camera, element by element", ""},
@@ -393,6 +394,7 @@ Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const e
     row.ms = ns / 1e6;
     row.lost = result.status == edgetrack::TrackingStatus::kLost;
     row.uncertain = result.status == edgetrack::TrackingStatus::kUncertain;
+    row.edge_angle_deg = static_cast<double>(result.measures.gradient_angle_deg);
     out.poses->write(row);
   }
   if (!out.overlay) return true;

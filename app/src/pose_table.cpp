@@ -32,8 +32,8 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 /// The range of each numeric column: a pose as a .pos file bounds it, milliseconds and frame
-/// and point counts up to 10^9.
-const edgetrack::FieldRange kColumns[9] = {
+/// and point counts up to 10^9, the edge angle 0 to 90 degrees (column 10 is the status).
+const edgetrack::FieldRange kColumns[11] = {
     {"frame", 0, 1e9},
     {"column 2", -edgetrack::kMaxPosTranslation, edgetrack::kMaxPosTranslation},
     {"column 3", -edgetrack::kMaxPosTranslation, edgetrack::kMaxPosTranslation},
@@ -42,7 +42,9 @@ const edgetrack::FieldRange kColumns[9] = {
     {"column 6", -edgetrack::kMaxPosRotation, edgetrack::kMaxPosRotation},
     {"column 7", -edgetrack::kMaxPosRotation, edgetrack::kMaxPosRotation},
     {"points", 0, 1e9},
-    {"column 9", 0, 1e9}};
+    {"column 9", 0, 1e9},
+    {"status", 0, 0},
+    {"edge_angle_deg", 0, 90}};
 
 std::string partial_path(const std::string& path) { return path + ".partial"; }
 
@@ -62,9 +64,11 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
   std::string line;
   if (!std::getline(in, line)) return Error{path, 1, "empty file (expected the header '" + header + "')"};
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != header) return Error{path, 1, "header is '" + line + "', expected '" + header + "'"};
-  const size_t columns = split(header).size();
-  const bool tracking = columns == 10;
+  const bool without_angle = header == std::string(kPosesHeader) && line == kPosesHeaderWithoutAngle;
+  if (line != header && !without_angle)
+    return Error{path, 1, "header is '" + line + "', expected '" + header + "'"};
+  const size_t columns = split(line).size();
+  const bool tracking = columns >= 10;
   std::vector<PoseRow> rows;
   for (int number = 2; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -100,6 +104,11 @@ Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std:
         return Error{path, number, "status is '" + cells[9] + "', expected tracked, uncertain or lost"};
       row.lost = cells[9] == "lost";
       row.uncertain = cells[9] == "uncertain";
+      if (columns == 11) {
+        auto angle = edgetrack::parse_field(cells[10], kColumns[10], path, number);
+        if (!angle.ok()) return angle.error();
+        row.edge_angle_deg = angle.value();
+      }
     }
     rows.push_back(row);
   }
@@ -170,8 +179,8 @@ void PoseTableWriter::write(const PoseRow& row) {
   if (!file_) return;
   int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
                        row.tu[1], row.tu[2]);
-  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s", row.points, row.ms,
-                                           status_of(row));
+  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s,%.2f", row.points, row.ms,
+                                           status_of(row), row.edge_angle_deg);
   if (n >= 0) n = std::fprintf(file_, "\n");
   if (n < 0) failed_ = true;
 }

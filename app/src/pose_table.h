@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// The CSV files of the application: the tracked poses (`frame,tx,ty,tz,tux,tuy,tuz,points,ms,status`)
+/// The CSV files of the application: the tracked poses (`frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg`)
 /// and the ground truth of a synthetic sequence (`frame,tx,ty,tz,tux,tuy,tuz`). Poses are
 /// camera_from_model (ViSP's cMo): translation in metres, thetaU in radians.
 #pragma once
@@ -13,7 +13,9 @@
 
 namespace edgetrack_app {
 
-constexpr const char* kPosesHeader = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status";
+constexpr const char* kPosesHeader = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg";
+/// The poses header of files written before the edge angle column; read as kPosesHeader's.
+constexpr const char* kPosesHeaderWithoutAngle = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status";
 constexpr const char* kTruthHeader = "frame,tx,ty,tz,tux,tuy,tuz";
 
 struct PoseRow {
@@ -24,10 +26,13 @@ struct PoseRow {
   double ms = 0;
   bool lost = false;       ///< status `lost`
   bool uncertain = false;  ///< status `uncertain`; neither: `tracked` (older files: `ok`)
+  /// The frame's quality figure (FrameMeasures::gradient_angle_deg), degrees, 0 to 90; 0 in
+  /// files written before the column.
+  double edge_angle_deg = 0;
 };
 
 /// Reads a poses or truth file; `header` is the header it must start with (extra columns after
-/// it are not allowed). Frames are whole numbers listed once each in increasing order, and every
+/// it are not allowed; kPosesHeader also reads kPosesHeaderWithoutAngle's files). Frames are whole numbers listed once each in increasing order, and every
 /// value is finite. Errors name the file and the line.
 edgetrack::Result<std::vector<PoseRow>> read_pose_table(const std::string& path, const std::string& header);
 

@@ -25,6 +25,7 @@ DECLARE(test_order_statistic);
 DECLARE(test_xml_document);
 DECLARE(test_template_bounds);
 DECLARE(test_status_statistics);
+DECLARE(test_edge_support);
 DECLARE(test_pose_files);
 DECLARE(test_lens);
 DECLARE(test_camera_file);
@@ -53,6 +54,7 @@ void register_tests() {
   REGISTER(test_xml_document);
   REGISTER(test_template_bounds);
   REGISTER(test_status_statistics);
+  REGISTER(test_edge_support);
   REGISTER(test_pose_files);
   REGISTER(test_lens);
   REGISTER(test_camera_file);

@@ -25,6 +25,7 @@ DECLARE(test_auto_init_recovery);
 DECLARE(test_pose_uncertainty_measure);
 DECLARE(test_pose_unconstrained_leaving_view);
 DECLARE(test_back_and_forth);
+DECLARE(test_wrong_pose);
 DECLARE(test_field_conditions);
 DECLARE(test_edge_contrast);
 DECLARE(test_normal_mask);
@@ -56,6 +57,7 @@ void register_tests() {
   REGISTER(test_pose_uncertainty_measure);
   REGISTER(test_pose_unconstrained_leaving_view);
   REGISTER(test_back_and_forth);
+  REGISTER(test_wrong_pose);
   REGISTER(test_field_conditions);
   REGISTER(test_edge_contrast);
   REGISTER(test_normal_mask);

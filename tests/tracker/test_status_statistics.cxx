@@ -3,7 +3,9 @@
 /// held frames (castel's 3-5 px residual scale, 1.5-2 px pose uncertainty) are tracked once
 /// learned, a frame departing from what was learned is uncertain, residuals at chance stay
 /// lost, a perfect model's scene keeps the fixed bounds, and a detected start learns nothing
-/// until a frame tracked by the fixed bounds confirms it.
+/// until a frame tracked by the fixed bounds confirms it; the image's support of the outline
+/// (edge_support.h): a track's frame supported only at chance is lost, and a detection is
+/// confirmed only by a frame whose outline the image supports over confirm_support_share.
 #include "edgetrack/status_statistics.h"
 #include "edgetrack/tracking_status.h"
 #include "testlib/testlib_test.h"
@@ -14,7 +16,8 @@ namespace {
 
 constexpr int kMinPoints = 6;
 
-/// A frame of 400 visible points, 360 matched and kept, range 8 px.
+/// A frame of 400 visible points, 360 matched and kept, range 8 px, nine tenths of the outline
+/// supported by the image.
 FrameMeasures frame(double scale_px, double uncertainty_px) {
   FrameMeasures m;
   m.visible = 400;
@@ -25,6 +28,7 @@ FrameMeasures frame(double scale_px, double uncertainty_px) {
   m.residual_scale = real(scale_px);
   m.pose_uncertainty_px = real(uncertainty_px);
   m.range = 8;
+  m.support_share = real(0.9);
   return m;
 }
 
@@ -67,6 +71,17 @@ static void test_status_statistics() {
   TEST("the learned scale bound rose above the fixed one", bounds.tracked_scale_px > real(4.3), true);
   TEST("a frame at chance over the range is still lost", track(learned, frame(4.9, 2.0), params).status,
        TrackingStatus::kLost);
+  FrameMeasures chance = frame(0.8, 0.5);
+  chance.support_share = real(0.3);  // under 30 / 90: gradient orientations at chance
+  TEST("a tight frame whose outline the image supports only at chance is lost",
+       judge_frame(chance, params, kMinPoints, learned.bounds(params)).reason, StatusReason::kUnsupported);
+  chance.support_share = real(0.4);
+  TEST("one supported over chance is not", judge_frame(chance, params, kMinPoints, learned.bounds(params)).status,
+       TrackingStatus::kTracked);
+  chance = frame(3.8, 1.7);
+  chance.support_share = real(0.2);
+  TEST("a loose fit's support (the model beside the image's edges) is not judged",
+       judge_frame(chance, params, kMinPoints, learned.bounds(params)).status, TrackingStatus::kTracked);
   FrameMeasures few = frame(3.8, 1.7);
   few.kept = 80;
   few.matched_share = real(0.2);
@@ -112,8 +127,16 @@ static void test_status_statistics() {
     TEST("an unconfirmed detection keeps the fixed bounds", track(detected, frame(4.0, 1.8), params).status,
          TrackingStatus::kUncertain);
   TEST("and learns nothing from its uncertain frames", detected.residual_scale().count(), 0);
+  // A wrong detection explains its matches (a tight fit) but the image supports only part of
+  // its outline, the rest lying over flat image or clutter beside the object.
+  FrameMeasures beside = frame(0.4, 0.5);
+  beside.support_share = real(0.6);
+  TEST("a detection whose outline the image supports on 0.6 is refuted", track(detected, beside, params).reason,
+       StatusReason::kUnsupported);
+  TEST("and stays unconfirmed", detected.phase() == StatusStatistics::Phase::kUnconfirmed, true);
   track(detected, frame(0.8, 0.5), params);
   TEST("a tracked frame confirms it", detected.phase() == StatusStatistics::Phase::kLearning, true);
+  TEST("then a frame supported on 0.6 is tracked", track(detected, beside, params).status, TrackingStatus::kTracked);
 
   StatusParams fixed_only = params;
   fixed_only.learn_frames = 0;
@@ -122,6 +145,9 @@ static void test_status_statistics() {
   for (int k = 0; k < 10; ++k)
     TEST("learn_frames 0 keeps the fixed bounds", track(off, frame(4.0, 1.8), fixed_only).status,
          TrackingStatus::kUncertain);
+  // The detector's candidates (learn_frames 0) are judged on the way to their pose.
+  beside.support_share = real(0.1);
+  TEST("learn_frames 0 has no support rule", track(off, beside, fixed_only).status, TrackingStatus::kTracked);
 
   StatusParams bad = params;
   bad.learning_rate = real(0);
@@ -129,6 +155,12 @@ static void test_status_statistics() {
   bad = params;
   bad.least_matched_share = real(0.6);
   TEST("a least matched share above the fixed one is refused", check_status_params(bad).empty(), false);
+  bad = params;
+  bad.support_angle_deg = real(90);
+  TEST("a support angle of 90 degrees (every orientation) is refused", check_status_params(bad).empty(), false);
+  bad = params;
+  bad.confirm_support_share = real(1.5);
+  TEST("a confirming support share over 1 is refused", check_status_params(bad).empty(), false);
   bad = params;
   bad.learn_frames = -1;
   TEST("negative learning frames are refused", check_status_params(bad).empty(), false);

@@ -52,12 +52,22 @@ void StatusStatistics::restart(bool trusted) {
 }
 
 StatusBounds StatusStatistics::bounds(const StatusParams& p) const {
-  if (p.learn_frames == 0 || phase_ == Phase::kUnconfirmed) return fixed_bounds(p);
+  // The detector's candidates (learn_frames 0) are judged on the way to their pose, where the
+  // image cannot support them yet: the support rules are for the frames of a track.
+  if (p.learn_frames == 0) return fixed_bounds(p);
+  // Gradient orientations at chance fall within the support angle with probability angle / 90.
+  const real chance_support = p.support_angle_deg / real(90);
+  if (phase_ == Phase::kUnconfirmed) {
+    // A detection nothing confirmed yet: the image must support its outline, not only its matches.
+    StatusBounds unconfirmed = fixed_bounds(p);
+    unconfirmed.min_support_share = std::max(chance_support, p.confirm_support_share);
+    return unconfirmed;
+  }
   if (phase_ == Phase::kLearning)
-    return {real(kUnbounded), p.least_matched_share, p.least_inlier_share, real(kUnbounded)};
+    return {real(kUnbounded), p.least_matched_share, p.least_inlier_share, real(kUnbounded), chance_support};
   return {upper_bound(scale_, p, p.tracked_scale_px), lower_bound(matched_, p, p.least_matched_share, p.min_matched_share),
           lower_bound(inliers_, p, p.least_inlier_share, p.min_inlier_share),
-          upper_bound(uncertainty_, p, p.max_pose_uncertainty_px)};
+          upper_bound(uncertainty_, p, p.max_pose_uncertainty_px), chance_support};
 }
 
 void StatusStatistics::add(const FrameMeasures& m, TrackingStatus status, const StatusParams& p) {

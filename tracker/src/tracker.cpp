@@ -9,6 +9,7 @@
 
 #include "edgetrack/angles.h"
 #include "edgetrack/contrast_memory.h"
+#include "edgetrack/edge_support.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/me_search_box.h"
 #include "edgetrack/millimetres.h"
@@ -123,7 +124,8 @@ class Tracker::State {
   /// is a guess (no contrasts, no weights at the start), then the status of what they found.
   void attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result);
   /// The status measures of the attempt from `start` searching `range` and the rule's judgement.
-  void judge(const Se3& start, unsigned range, std::uint64_t saturations, FrameResult& result) const;
+  void judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range, std::uint64_t saturations,
+             FrameResult& result) const;
   /// The motion model and the contrast memory take the frame's result; the next frame's start.
   void conclude(FrameResult& result);
   /// A camera created without an image size takes the first frame's: the camera is checked
@@ -298,7 +300,6 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
   search_moving_edges(grey, visible_, me_, range, params_.hypotheses, matches_, &references_, &borrowed_);
-  grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);
@@ -312,10 +313,12 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
   result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
-  judge(start, range, saturations, result);
+  judge(grey, start, range, saturations, result);
+  grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
 }
 
-void Tracker::State::judge(const Se3& start, unsigned range, std::uint64_t saturations, FrameResult& result) const {
+void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range,
+                           std::uint64_t saturations, FrameResult& result) const {
   FrameMeasures& m = result.measures;
   m.visible = result.points_sampled;
   m.matched = static_cast<int>(matches_.size());
@@ -335,6 +338,10 @@ void Tracker::State::judge(const Se3& start, unsigned range, std::uint64_t satur
       pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
+  const EdgeSupport support = edge_support(grey, visible_, camera_, solved, me_, range, params_.status.gradient_floor,
+                                           params_.status.support_angle_deg);
+  m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
+  m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =
       judge_frame(m, params_.status, params_.pose.min_points, status_statistics_.bounds(params_.status));
   result.status = judged.status;

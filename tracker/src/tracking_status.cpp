@@ -31,6 +31,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kUnconfirmed: return "detected, not yet confirmed by a tracked frame";
     case StatusReason::kPoseUnconstrained: return "the matches leave the pose unconstrained";
     case StatusReason::kPoseUndetermined: return "the matches leave the pose uncertain beyond the search range";
+    case StatusReason::kUnsupported: return "the image gradient supports the pose's edges only at chance";
   }
   return "?";
 }
@@ -50,6 +51,12 @@ std::string check_status_params(const StatusParams& p) {
   if (!positive(p.learning_rate) || p.learning_rate > real(1)) return "status: the learning rate must be over 0 and at most 1";
   if (p.learned_deviations < real(0) || p.least_deviation_share < real(0))
     return "status: the learned deviations and the least deviation share must be at least 0";
+  if (p.gradient_floor < real(1) || p.gradient_floor > real(1000))
+    return "status: the gradient floor must be 1 to 1000 grey levels (a Sobel magnitude)";
+  if (!positive(p.support_angle_deg) || p.support_angle_deg >= real(90))
+    return "status: the support angle must be over 0 and under 90 degrees";
+  if (p.confirm_support_share < real(0) || p.confirm_support_share > real(1))
+    return "status: the confirming support share must be in [0, 1]";
   if (p.least_matched_share < real(0) || p.least_matched_share > p.min_matched_share || p.least_inlier_share < real(0) ||
       p.least_inlier_share > p.min_inlier_share)
     return "status: the least matched and inlier shares must be in [0, the fixed minimum shares]";
@@ -75,7 +82,10 @@ std::string set_status_param(StatusParams& p, const std::string& name, double va
                                                   {"learned_deviations", &p.learned_deviations},
                                                   {"least_deviation_share", &p.least_deviation_share},
                                                   {"least_matched_share", &p.least_matched_share},
-                                                  {"least_inlier_share", &p.least_inlier_share}};
+                                                  {"least_inlier_share", &p.least_inlier_share},
+                                                  {"gradient_floor", &p.gradient_floor},
+                                                  {"support_angle_deg", &p.support_angle_deg},
+                                                  {"confirm_support_share", &p.confirm_support_share}};
   for (const auto& named : values) {
     if (name != named.first) continue;
     if (!(value >= -1e6 && value <= 1e6)) return name + " must be a number within +-1e6";
@@ -86,7 +96,8 @@ std::string set_status_param(StatusParams& p, const std::string& name, double va
 }
 
 StatusBounds fixed_bounds(const StatusParams& params) {
-  return {params.tracked_scale_px, params.min_matched_share, params.min_inlier_share, params.max_pose_uncertainty_px};
+  return {params.tracked_scale_px, params.min_matched_share, params.min_inlier_share, params.max_pose_uncertainty_px,
+          real(0)};
 }
 
 FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int min_points) {
@@ -107,6 +118,10 @@ FrameStatus judge_frame(const FrameMeasures& m, const StatusParams& params, int 
   if (m.residual_scale > lost_scale) return lost(StatusReason::kChanceResiduals);
   if (m.pose_uncertainty_px > params.lost_uncertainty_range_share * real(static_cast<int>(m.range)))
     return lost(StatusReason::kPoseUndetermined);
+  // Where the fit is loose (an approximate model) the projected edges are not expected on the
+  // image's own, a pixel beside them: the support at the projected points tells nothing there.
+  if (m.residual_scale <= params.tracked_scale_px && m.support_share < bounds.min_support_share)
+    return lost(StatusReason::kUnsupported);
   if (m.kept < 2 * min_points) return uncertain(StatusReason::kFewToCheck);
   if (m.matched_share < bounds.min_matched_share) return uncertain(StatusReason::kFewMatched);
   if (m.inlier_share < bounds.min_inlier_share) return uncertain(StatusReason::kManyOutliers);

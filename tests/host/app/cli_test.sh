@@ -42,7 +42,8 @@ vertex_offset() {
       for (i = 0; i < 8; i++) {
         x = (i % 2) ? -0.084 : 0; y = (int(i / 2) % 2) ? 0.084 : 0; z = (i >= 4) ? 0.084 : 0
         project($2, $3, $4, $5, $6, $7, x, y, z); ua = U; va = V
-        project($12, $13, $14, $15, $16, $17, x, y, z)
+        b = NF / 2  # the second file's columns follow the first's
+        project($(b + 2), $(b + 3), $(b + 4), $(b + 5), $(b + 6), $(b + 7), x, y, z)
         d += sqrt((ua - U)^2 + (va - V)^2) / 8
       }
       if (d > worst) { worst = d; at = $1 }
@@ -187,7 +188,8 @@ case $name in
     as_truth "$work/full.csv" "$work/full_truth.csv"
     "$edgetrack" eval --poses "$work/qvga.csv" --truth "$work/full_truth.csv" | tee "$work/eval.txt" || fail "eval failed"
     offset=$(paste -d, "$work/full.csv" "$work/qvga.csv" |
-      awk -F, 'NR > 1 { s += sqrt(($2 - $12)^2 + ($3 - $13)^2 + ($4 - $14)^2); n++ } END { printf "%.3f", 1000 * s / n }')
+      awk -F, 'NR > 1 { b = NF / 2; s += sqrt(($2 - $(b + 2))^2 + ($3 - $(b + 3))^2 + ($4 - $(b + 4))^2); n++ }
+                 END { printf "%.3f", 1000 * s / n }')
     echo "mean distance between the cube positions: $offset mm"
     less "$offset" 3.0 || fail "QVGA and 640x480 cube positions differ by 3 mm or more"
     less "$(field rotation_deg)" 2.0 || fail "QVGA and 640x480 orientations differ by 2 degrees or more" ;;
@@ -225,7 +227,7 @@ case $name in
       --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm" --quiet --poses "$work/both.csv" ||
       fail "track cube_and_cylinder.cao failed"
     check_poses "$work/both.csv" 218 150
-    more=$(paste -d, "$work/cube.csv" "$work/both.csv" | awk -F, 'NR > 1 { d += $18 - $8; n++ } END { printf "%.1f", d / n }')
+    more=$(paste -d, "$work/cube.csv" "$work/both.csv" | awk -F, 'NR > 1 { d += $(NF / 2 + 8) - $8; n++ } END { printf "%.1f", d / n }')
     echo "silhouette points matched per frame: $more"
     less 30 "$more" || fail "the cylinder's silhouettes add fewer than 30 points per frame"
     read -r worst at <<<"$(vertex_offset "$work/cube.csv" "$work/both.csv")"

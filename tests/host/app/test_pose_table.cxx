@@ -25,6 +25,7 @@ static void test_pose_table() {
     PoseRow row = pose_row(3, Se3::from_theta_u({real(0.01), real(-0.02), real(0.15)}, {real(0.5), real(-0.6), real(0.1)}));
     row.points = 61;
     row.ms = 2.5;
+    row.edge_angle_deg = 3.25;
     writer.value().write(row);
     row.frame = 4;
     row.lost = true;
@@ -38,9 +39,13 @@ static void test_pose_table() {
   std::ifstream in(path);
   std::string header;
   std::getline(in, header);
-  TEST("the header is exactly the documented one", header, std::string("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status"));
+  TEST("the header is exactly the documented one", header,
+       std::string("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg"));
   std::string statuses;
-  for (std::string line; std::getline(in, line);) statuses += line.substr(line.rfind(',') + 1) + " ";
+  for (std::string line; std::getline(in, line);) {
+    line.erase(line.rfind(','));  // the edge angle
+    statuses += line.substr(line.rfind(',') + 1) + " ";
+  }
   TEST("the status is spelled as the library's status_name spells it", statuses, std::string("tracked lost uncertain "));
   auto rows = read_pose_table(path, kPosesHeader);
   TEST("the poses file reads back", rows.ok(), true);
@@ -55,17 +60,26 @@ static void test_pose_table() {
     TEST("status tracked", rows.value()[0].lost || rows.value()[0].uncertain, false);
     TEST("status lost", rows.value()[1].lost, true);
     TEST("status uncertain", rows.value()[2].uncertain && !rows.value()[2].lost, true);
+    TEST_NEAR("the edge angle in degrees", rows.value()[0].edge_angle_deg, 3.25, 1e-9);
   }
   {
     std::ofstream older(std::string(APP_TEST_TMP) + "/older.csv");
-    older << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,ok\n1,0,0,0.15,0,0,0,50,1.0,tracked\n";
+    older << kPosesHeaderWithoutAngle << "\n0,0,0,0.15,0,0,0,50,1.0,ok\n1,0,0,0.15,0,0,0,50,1.0,tracked\n";
   }
   auto older = read_pose_table(std::string(APP_TEST_TMP) + "/older.csv", kPosesHeader);
-  TEST("a file of an older edgetrack, whose status says ok for tracked, reads", older.ok(), true);
+  TEST("a file of an older edgetrack, without the edge angle, whose status says ok for tracked, reads", older.ok(), true);
   if (older.ok()) TEST("ok is read as tracked", older.value()[0].lost || older.value()[0].uncertain, false);
+  if (older.ok()) TEST_NEAR("its edge angle reads as 0", older.value()[1].edge_angle_deg, 0.0, 1e-12);
+  {
+    std::ofstream wide(std::string(APP_TEST_TMP) + "/wide_angle.csv");
+    wide << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,tracked,91\n";
+  }
+  auto wide = read_pose_table(std::string(APP_TEST_TMP) + "/wide_angle.csv", kPosesHeader);
+  TEST("an edge angle over 90 degrees is refused", wide.ok(), false);
+  if (!wide.ok()) TEST("naming the column", wide.error().message.find("edge_angle_deg") != std::string::npos, true);
   {
     std::ofstream unknown(std::string(APP_TEST_TMP) + "/unknown_status.csv");
-    unknown << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,fine\n";
+    unknown << kPosesHeader << "\n0,0,0,0.15,0,0,0,50,1.0,fine,2\n";
   }
   auto unknown = read_pose_table(std::string(APP_TEST_TMP) + "/unknown_status.csv", kPosesHeader);
   TEST("an unknown status is refused", unknown.ok(), false);

@@ -21,8 +21,9 @@ track_cube() {
 # files in translation (mm) and in thetaU (degrees; the rotation angle for small differences).
 largest_difference() {
   paste -d, "$1" "$2" | awk -F, 'NR > 1 {
-      mm = 1000 * sqrt(($2 - $12)^2 + ($3 - $13)^2 + ($4 - $14)^2); if (mm > m) m = mm
-      deg = 57.29578 * sqrt(($5 - $15)^2 + ($6 - $16)^2 + ($7 - $17)^2); if (deg > d) d = deg
+      b = NF / 2  # the second file's columns follow the first's
+      mm = 1000 * sqrt(($2 - $(b + 2))^2 + ($3 - $(b + 3))^2 + ($4 - $(b + 4))^2); if (mm > m) m = mm
+      deg = 57.29578 * sqrt(($5 - $(b + 5))^2 + ($6 - $(b + 6))^2 + ($7 - $(b + 7))^2); if (deg > d) d = deg
     } END { printf "%.4f %.4f\n", m, d }'
 }
 

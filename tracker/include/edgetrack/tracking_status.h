@@ -27,9 +27,10 @@ enum class StatusReason {
   kNotDetected,       ///< lost: the detector ran and did not find the model (AutoInitTracker)
   kUnconfirmed,       ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
   kPoseUnconstrained,  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
-  kPoseUndetermined    ///< lost: the matches leave it uncertain by more than the search reaches
+  kPoseUndetermined,   ///< lost: the matches leave it uncertain by more than the search reaches
+  kUnsupported         ///< lost: the image gradient supports the pose's edges no more than at chance
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kPoseUndetermined) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kUnsupported) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);
@@ -54,6 +55,15 @@ struct FrameMeasures {
   /// px, the overlay's standard deviation the matches leave (pose_uncertainty.h), with the
   /// residual scale taken as at least StatusParams::edge_location_px
   real pose_uncertainty_px{0};
+  /// Of the visible control points, the share whose projection with the solved pose has image
+  /// gradient within StatusParams::support_angle_deg of the edge's normal (edge_support.h): how
+  /// much of the model's visible outline the image supports, not only at the matches.
+  real support_share{0};
+  /// The frame's quality figure: the mean angle, degrees, between the image gradient and the
+  /// projected edge's normal over the visible control points, projected with the solved pose,
+  /// that have a gradient over StatusParams::gradient_floor (0 to 90: a few degrees on a held
+  /// object, about 45 for orientations at chance; 0 when no point has one).
+  real gradient_angle_deg{0};
 };
 
 /// The rule's thresholds, each with what it stands for.
@@ -106,6 +116,27 @@ struct StatusParams {
   /// visible model, or with three quarters of its matches outliers, is never called tracked.
   real least_matched_share = real(0.25);
   real least_inlier_share = real(0.25);
+
+  // Whether the image supports the pose along the whole of its edges (edge_support.h): a wrong
+  // pose can explain its own matches (a detection on clutter, a walk onto parallel lines) but
+  // not the gradient along the rest of its outline.
+  /// The least Sobel gradient magnitude (grey levels) of an image edge: the Sobel response to a
+  /// step of h grey levels is 4 h, so 40 is a 10-level step, about six standard deviations of
+  /// the response to pixel noise of 2 levels.
+  real gradient_floor = real(40);
+  /// The largest angle, degrees, between the gradient and the projected normal of an edge the
+  /// gradient supports. Orientations at chance (clutter, texture) fall within it with
+  /// probability support_angle_deg / 90, the support share's chance level: a pose fitting its
+  /// matches within tracked_scale_px is lost when its share is under that (its outline lies on
+  /// texture or flat image). A looser fit (an approximate model's, several pixels) puts the
+  /// projected edges beside the image's, where the support at them says nothing.
+  real support_angle_deg = real(30);
+  /// The least support share of a detection until a frame tracked from it confirms it: a
+  /// wrong candidate explains the matches it was refined on, which the detector found on the
+  /// object's own edges, but it lies beside the object along part of its outline, over flat
+  /// image or clutter. A true pose has gradient along all of its outline but the edges between
+  /// faces of one shade and what covers it; three quarters leaves a quarter for those.
+  real confirm_support_share = real(0.67);
 };
 
 /// The bounds between a tracked and an uncertain frame (the lost rules have their own): the
@@ -115,6 +146,10 @@ struct StatusBounds {
   real min_matched_share{0.5};       ///< below: uncertain
   real min_inlier_share{0.5};        ///< below: uncertain
   real max_pose_uncertainty_px{1};   ///< above: uncertain (pose unconstrained)
+  /// Below: lost (the image does not support the pose's outline). Not a fixed bound: a track's
+  /// frames after a trusted start have the chance level, a detection not yet confirmed
+  /// confirm_support_share (status_statistics.h).
+  real min_support_share{0};
 };
 
 /// The fixed bounds of `params`.

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The image gradient along a pose's projected edges against their normals.
+#include "edgetrack/edge_support.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "edgetrack/me_search_box.h"
+
+namespace edgetrack {
+namespace {
+
+/// atan(t) in degrees for t in [0, 1]: 45 t + t (1 - t) (14.02 + 3.80 t), within 0.09 degree
+/// (the radian form (pi/4) t + t (1 - t) (0.2447 + 0.0663 t) is a known minimax fit).
+real arctangent_deg(const real& t) {
+  return real(45) * t + t * (real(1) - t) * (real(14.02) + real(3.80) * t);
+}
+
+/// The pixel nearest to coordinate x.
+int nearest_pixel(const real& x) {
+  using std::floor;
+  return static_cast<int>(floor(x + real(0.5)));
+}
+
+}  // namespace
+
+real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& normal) {
+  using std::fabs;
+  const real along = fabs(gx * normal.x + gy * normal.y);
+  const real across = fabs(gx * normal.y - gy * normal.x);
+  if (along == real(0) && across == real(0)) return real(0);
+  if (across <= along) return arctangent_deg(across / along);
+  return real(90) - arctangent_deg(along / across);
+}
+
+EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
+                         const PinholeCamera& camera, const Se3& pose, const vpMe& me, unsigned range,
+                         const real& gradient_floor, const real& support_angle_deg) {
+  EdgeSupport support;
+  support.visible = static_cast<int>(points.size());
+  const int height = static_cast<int>(grey.getHeight()), width = static_cast<int>(grey.getWidth());
+  const real floor_squared = gradient_floor * gradient_floor;
+  real angle_sum(0);
+  for (const ControlPoint& point : points) {
+    const Vec3 in_camera = pose * point.point_in_model;
+    if (in_camera.z <= real(0)) continue;
+    // Where the edge projected with `pose` crosses the point's normal: the point's search path,
+    // whose pixels the grey image holds (a move along the edge would leave them).
+    const real shift = dot(point.normal, camera.project(in_camera) - point.pixel);
+    const Vec2 pixel = point.pixel + shift * point.normal;
+    // Read only where this frame's grey image is up to date for the point, one pixel inside
+    // for the Sobel's 3x3 neighbourhood.
+    const PixelBox box = me_search_box(point, me, range);
+    const real top = real(std::max(box.top, 0) + 1), left = real(std::max(box.left, 0) + 1);
+    const real bottom = real(std::min(box.bottom, height) - 2), right = real(std::min(box.right, width) - 2);
+    if (!(pixel.y >= top && pixel.y <= bottom && pixel.x >= left && pixel.x <= right)) continue;
+    const int r = nearest_pixel(pixel.y), c = nearest_pixel(pixel.x);
+    const unsigned char* above = grey[r - 1];
+    const unsigned char* row = grey[r];
+    const unsigned char* below = grey[r + 1];
+    const int gx = (above[c + 1] + 2 * row[c + 1] + below[c + 1]) - (above[c - 1] + 2 * row[c - 1] + below[c - 1]);
+    const int gy = (below[c - 1] + 2 * below[c] + below[c + 1]) - (above[c - 1] + 2 * above[c] + above[c + 1]);
+    if (real(gx * gx + gy * gy) < floor_squared) continue;
+    const real angle = gradient_normal_angle_deg(real(gx), real(gy), point.normal);
+    ++support.measured;
+    angle_sum += angle;
+    if (angle <= support_angle_deg) ++support.supported;
+  }
+  if (support.measured > 0) support.mean_angle_deg = angle_sum / real(support.measured);
+  return support;
+}
+
+}  // namespace edgetrack
