@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The README's test command: installs what is missing, builds the host trees (double, s40_23,
 # s47_16, and double with ASan+UBSan), the fuzz tree (clang's libFuzzer over every parser, a
-# short smoke run each) and the ARM trees (s40_23, double soft-float), and runs ctest in each;
-# ARM tests run on qemu-arm -cpu pxa270. Fails if any build or test fails.
+# short smoke run each), the ARM trees (s40_23, double soft-float) and today's handheld trees
+# (AArch64 and ARMv7-A hard-float, double), and runs ctest in each; ARM tests run on qemu-arm
+# -cpu pxa270, qemu-aarch64 -cpu cortex-a53 and qemu-arm -cpu cortex-a7. Fails if any build or
+# test fails.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
@@ -23,6 +25,8 @@ trees=(
   "host-fuzz|-DEDGETRACK_REAL=double ${fuzz[*]}"
   "arm-s40_23|-DEDGETRACK_REAL=s40_23 ${arm_toolchain[*]}"
   "arm-double|-DEDGETRACK_REAL=double ${arm_toolchain[*]}"
+  "aarch64-double|-DEDGETRACK_REAL=double -DCMAKE_TOOLCHAIN_FILE=$top/toolchains/aarch64-linux.cmake"
+  "armv7hf-double|-DEDGETRACK_REAL=double -DCMAKE_TOOLCHAIN_FILE=$top/toolchains/armv7a-hf.cmake"
 )
 
 failed=()

@@ -3,14 +3,19 @@
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bench_build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
 
-# bench_tree <host|arm> <real> <target>...: configures build/bench-<host|arm>-<real>, builds the
+# bench_tree <host|arm|aarch64|armv7hf> <real> <target>...: configures build/bench-<kind>-<real>
+# (arm: the ARMv5TE PXA270; aarch64 and armv7hf: the hard-float Linux targets), builds the
 # targets, and prints the build directory.
 bench_tree() {
   local kind=$1 real=$2; shift 2
   local dir="$bench_build_root/bench-$kind-$real"
   mkdir -p "$bench_build_root"
   local args=(-DEDGETRACK_REAL="$real" -DCMAKE_BUILD_TYPE=Release)
-  [ "$kind" = arm ] && args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
+  case $kind in
+    arm) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake") ;;
+    aarch64) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/aarch64-linux.cmake") ;;
+    armv7hf) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv7a-hf.cmake") ;;
+  esac
   cmake -S "$top" -B "$dir" -G Ninja "${args[@]}" >"$dir.configure.log" 2>&1 ||
     { cat "$dir.configure.log" >&2; return 1; }
   cmake --build "$dir" --target "$@" >"$dir.build.log" 2>&1 ||

@@ -59,4 +59,35 @@ std::vector<Vec3> read_golden(const std::string& path) {
   return positions;
 }
 
+std::string poses_golden_name(const std::string& positions_name) {
+  const std::string suffix = "_positions.txt";
+  return positions_name.substr(0, positions_name.size() - suffix.size()) + "_poses.txt";
+}
+
+bool write_golden_poses(const std::string& path, const SequenceRun& run) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (!file) return false;
+  for (const FrameResult& frame : run.frames) {
+    const Vec3& t = frame.camera_from_model.translation();
+    const Mat33& r = frame.camera_from_model.rotation();
+    std::fprintf(file, "%.17g %.17g %.17g", static_cast<double>(t.x), static_cast<double>(t.y), static_cast<double>(t.z));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) std::fprintf(file, " %.17g", static_cast<double>(r.m[i][j]));
+    std::fprintf(file, "\n");
+  }
+  return std::fclose(file) == 0;
+}
+
+std::vector<GoldenPose> read_golden_poses(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<GoldenPose> poses;
+  GoldenPose pose;
+  while (in >> pose.translation[0] >> pose.translation[1] >> pose.translation[2]) {
+    for (double& r : pose.rotation) in >> r;
+    if (!in) return {};
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
 }  // namespace edgetrack_test

@@ -40,4 +40,17 @@ bool write_golden(const std::string& path, const SequenceRun& run);
 /// The positions in the file, or an empty vector when it cannot be read.
 std::vector<edgetrack::Vec3> read_golden(const std::string& path);
 
+/// The full poses beside a positions file ("<scene>_double_poses.txt" for
+/// "<scene>_double_positions.txt"): per frame camera_from_model's translation (m) and rotation
+/// matrix by rows, 12 numbers printed to the last bit of a double, for the double builds'
+/// comparison at 1e-9 m and 1e-9 rad (golden_check.h).
+std::string poses_golden_name(const std::string& positions_name);
+struct GoldenPose {
+  double translation[3];
+  double rotation[9];
+};
+bool write_golden_poses(const std::string& path, const SequenceRun& run);
+/// The poses in the file, or an empty vector when it cannot be read.
+std::vector<GoldenPose> read_golden_poses(const std::string& path);
+
 }  // namespace edgetrack_test

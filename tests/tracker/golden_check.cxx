@@ -44,10 +44,42 @@ double distance_mm(const Vec3& a, const Vec3& b) {
   return 1000 * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+/// The angle between two rotations from their matrices' difference: |R - G|_F = 2 sqrt(2) sin(angle / 2).
+double rotation_angle(const Mat33& rotation, const double golden[9]) {
+  double squares = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double d = static_cast<double>(rotation.m[i][j]) - golden[3 * i + j];
+      squares += d * d;
+    }
+  return 2 * std::asin(std::fmin(1.0, std::sqrt(squares) / (2 * std::sqrt(2.0))));
+}
+
 }  // namespace
 
+void compare_poses_with_golden(const std::string& poses_name, const SequenceRun& run) {
+  if (std::string(real_name()) != "double") return;
+  const std::vector<GoldenPose> golden = read_golden_poses(std::string(EDGETRACK_GOLDEN_DIR) + "/" + poses_name);
+  TEST_EQUAL((poses_name + " has one pose per frame").c_str(), golden.size(), run.frames.size());
+  if (golden.size() != run.frames.size()) return;
+  double worst_m = 0, worst_rad = 0;
+  size_t within = 0;  // counted, not only maximised: a NaN frame is not within
+  for (size_t k = 0; k < golden.size(); ++k) {
+    const Vec3& t = run.frames[k].camera_from_model.translation();
+    const double dx = static_cast<double>(t.x) - golden[k].translation[0], dy = static_cast<double>(t.y) - golden[k].translation[1],
+                 dz = static_cast<double>(t.z) - golden[k].translation[2];
+    const double metres = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double radians = rotation_angle(run.frames[k].camera_from_model.rotation(), golden[k].rotation);
+    within += metres <= 1e-9 && radians <= 1e-9;
+    worst_m = std::fmax(worst_m, metres);
+    worst_rad = std::fmax(worst_rad, radians);
+  }
+  std::printf("%s: largest difference from the host double run %.3g m, %.3g rad\n", poses_name.c_str(), worst_m, worst_rad);
+  TEST_EQUAL("frames within 1e-9 m and 1e-9 rad of the host double run", within, golden.size());
+}
+
 /// Compares a run with the double golden file: mean and largest distance per frame, mm.
-void compare_with_golden(const std::string& name, const SequenceRun& run) {
+void compare_with_golden(const std::string& name, const SequenceRun& run, bool golden_steps) {
   double max_tolerance_mm = 0, mean_tolerance_mm = 0;
   tolerances(max_tolerance_mm, mean_tolerance_mm);
   const std::vector<Vec3> golden = read_golden(std::string(EDGETRACK_GOLDEN_DIR) + "/" + name);
@@ -64,6 +96,7 @@ void compare_with_golden(const std::string& name, const SequenceRun& run) {
             sum / golden.size(), 0, mean_tolerance_mm);
   TEST_NEAR((std::string("camera positions stay near the double run, every frame (") + real_name() + ", mm)").c_str(),
             worst, 0, max_tolerance_mm);
+  if (golden_steps) compare_poses_with_golden(poses_golden_name(name), run);
 }
 
 }  // namespace edgetrack_test

@@ -32,6 +32,8 @@ DECLARE(test_normal_mask);
 DECLARE(test_api_door);
 DECLARE(test_lens_tracking_cube);
 DECLARE(test_lens_tracking_wood_toy);
+DECLARE(test_android_frames);
+DECLARE(test_visp_cube_poses);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -64,6 +66,8 @@ void register_tests() {
   REGISTER(test_api_door);
   REGISTER(test_lens_tracking_cube);
   REGISTER(test_lens_tracking_wood_toy);
+  REGISTER(test_android_frames);
+  REGISTER(test_visp_cube_poses);
 }
 
 DEFINE_MAIN

@@ -2,9 +2,10 @@
 # `cpack -G DEB` in a build tree: two Debian packages from the install components,
 # edgetrack (component tools: the command line and the models) and libedgetrack-<real>-dev
 # (component dev: headers, libraries, CMake and pkg-config files), for the build's
-# architecture: the host's (dpkg --print-architecture) or armel from the ARM toolchain.
-if(CMAKE_CROSSCOMPILING)
-  # Debian's name for the soft-float ARM EABI the toolchain file targets.
+# architecture: the host's (dpkg --print-architecture) or the ARM toolchain's (armel, armhf, arm64).
+if(CMAKE_CROSSCOMPILING AND NOT EDGETRACK_DEB_ARCHITECTURE)
+  # Debian's name for the soft-float ARM EABI of the PXA270 toolchain file; the other toolchain
+  # files name their own.
   set(EDGETRACK_DEB_ARCHITECTURE armel)
 else()
   find_program(EDGETRACK_DPKG dpkg)

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Runs a static ARM binary on qemu-arm -cpu pxa270 with our instruction-counting plugin and reports
-# how many guest instructions it executed, how many of them inside libgcc's soft-float routines,
-# and the same inside the edgetrack_count_begin()/edgetrack_count_end() windows.
+# Runs a static ARM binary under QEMU with our instruction-counting plugin and reports how many
+# guest instructions it executed, how many of them inside libgcc's soft-float routines, and the
+# same inside the edgetrack_count_begin()/edgetrack_count_end() windows. The binary names its
+# target: ARMv5TE soft-float on qemu-arm -cpu pxa270, ARMv7-A hard-float on qemu-arm -cpu
+# cortex-a7, AArch64 on qemu-aarch64 -cpu cortex-a53 ($EDGETRACK_QEMU_CPU picks another core).
 #
 #   count-insns.sh [--out FILE] [--windows FILE] [--profile FILE] [--mode tb|insn] <arm-binary> [args...]
 #
@@ -17,8 +19,6 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../.." && pwd)
-triple=arm-linux-gnueabi
-sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
 
 usage() { sed -n '7p' "$0" | sed 's/^# *//' >&2; exit 2; }
 
@@ -38,11 +38,20 @@ done
 binary=$1; shift
 [ -f "$binary" ] || { echo "count-insns: no such binary: $binary" >&2; exit 2; }
 # Symbol addresses are only run-time addresses in a non-PIE executable (ELF type EXEC).
-header=$($triple-readelf -h "$binary" 2>/dev/null || true)
-if ! grep -q 'Type: *EXEC' <<<"$header" || ! grep -q 'Machine: *ARM' <<<"$header"; then
+header=$(readelf -h "$binary" 2>/dev/null || true)
+if ! grep -q 'Type: *EXEC' <<<"$header" || ! grep -qE 'Machine: *(ARM|AArch64)' <<<"$header"; then
   echo "count-insns: $binary is not a non-PIE ARM executable (link it with -static -no-pie)" >&2
   exit 2
 fi
+if grep -q 'Machine: *AArch64' <<<"$header"; then
+  triple=aarch64-linux-gnu qemu=qemu-aarch64 cpu=cortex-a53
+elif readelf -A "$binary" | grep -q 'Tag_ABI_VFP_args: VFP registers'; then
+  triple=arm-linux-gnueabihf qemu=qemu-arm cpu=cortex-a7
+else
+  triple=arm-linux-gnueabi qemu=qemu-arm cpu=pxa270
+fi
+cpu=${EDGETRACK_QEMU_CPU:-$cpu}
+sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
 
 # Build the plugin when it is missing or older than its sources; rename into place, so parallel
 # runs never load a half-written library.
@@ -92,7 +101,7 @@ end=$(marker_address edgetrack_count_end)
 [ -n "$profile" ] && args+=",profile=$(escape "$work/blocks")"
 
 status=0
-qemu-arm -cpu pxa270 -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+"$qemu" -cpu "$cpu" -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
 if [ -z "$out" ]; then
   if [ -s "$work/summary" ]; then cat "$work/summary" >&2; else echo "count-insns: the plugin wrote no summary" >&2; fi
 fi

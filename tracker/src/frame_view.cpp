@@ -14,6 +14,8 @@ const char* layout_name(PixelLayout layout) {
     case PixelLayout::kBgr24: return "BGR24";
     case PixelLayout::kNv21: return "NV21";
     case PixelLayout::kI420: return "I420";
+    case PixelLayout::kNv12: return "NV12";
+    case PixelLayout::kYuv420_888: return "YUV_420_888";
   }
   return "?";
 }
@@ -25,7 +27,9 @@ int bytes_per_pixel(PixelLayout layout) {
     case PixelLayout::kBgr24: return 3;
     case PixelLayout::kGrey8:
     case PixelLayout::kNv21:
-    case PixelLayout::kI420: return 1;
+    case PixelLayout::kI420:
+    case PixelLayout::kNv12:
+    case PixelLayout::kYuv420_888: return 1;
   }
   return 1;
 }
@@ -57,6 +61,23 @@ std::optional<Error> check_frame(const FrameView& frame, int width, int height) 
       ((reinterpret_cast<std::uintptr_t>(frame.pixels) | static_cast<std::uintptr_t>(frame.row_bytes)) & 1u) != 0)
     return Error{"", 0, frame_named(frame) + "'s rows do not start on 2-byte boundaries (odd pointer or row stride)"};
   return std::nullopt;
+}
+
+Result<FrameView> yuv_420_888_frame(const Yuv420Planes& planes, int width, int height) {
+  const FrameView y_plane{planes.y, width, height, planes.y_row_bytes, PixelLayout::kYuv420_888};
+  const auto refused = [&](const std::string& why) { return Result<FrameView>(Error{"", 0, frame_named(y_plane) + why}); };
+  // The Y plane is then checked as any frame's, by Tracker::track (check_frame).
+  if (planes.y == nullptr || planes.u == nullptr || planes.v == nullptr)
+    return refused(" lacks a plane (a null Y, U or V pointer)");
+  if (planes.uv_pixel_stride != 1 && planes.uv_pixel_stride != 2)
+    return refused("'s chroma pixel stride is " + std::to_string(planes.uv_pixel_stride) +
+                   ", not 1 (planar) or 2 (interleaved)");
+  // The last chroma sample of a row is its first byte plus (samples - 1) pixel strides.
+  const long long chroma_row = static_cast<long long>((width + 1) / 2 - 1) * planes.uv_pixel_stride + 1;
+  if (planes.uv_row_bytes < chroma_row)
+    return refused("'s chroma rows are " + std::to_string(planes.uv_row_bytes) + " bytes apart, less than the " +
+                   std::to_string(chroma_row) + " bytes of a row of chroma samples");
+  return y_plane;
 }
 
 }  // namespace edgetrack

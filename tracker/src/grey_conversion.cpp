@@ -30,6 +30,8 @@ void convert_rows(PixelLayout layout, const uint8_t* in, int in_stride, unsigned
     case PixelLayout::kGrey8:
     case PixelLayout::kNv21:
     case PixelLayout::kI420:
+    case PixelLayout::kNv12:
+    case PixelLayout::kYuv420_888:
       for (; rows > 0; --rows, in += in_step, out += out_step) std::memcpy(out, in, count);
       return;
   }
