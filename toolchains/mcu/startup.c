@@ -4,6 +4,7 @@
 /// C and C++ constructors run, main called with the arguments semihosting passes, its status
 /// returned to the host. A fault prints where it happened and ends the run with status 70.
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -67,14 +68,28 @@ size_t edgetrack_static_ram(void) {
   return (size_t)((char*)edgetrack_bss_end - (char*)edgetrack_data_start);
 }
 
+/// With --board-report ahead of the program's name (run-firmware.sh, EDGETRACK_BOARD_REPORT=1),
+/// the memory the run used, as one line on stderr when it ends.
+static void report_memory(void) {
+  fprintf(stderr, "board: static %lu bytes (.data and .bss), heap high-water %lu bytes, stack high-water %lu bytes\n",
+          (unsigned long)edgetrack_static_ram(), (unsigned long)edgetrack_heap_high_water(),
+          (unsigned long)edgetrack_stack_high_water());
+}
+
 void edgetrack_reset(void) {
   memcpy(edgetrack_data_start, edgetrack_data_load,
          (size_t)((char*)edgetrack_data_end - (char*)edgetrack_data_start));
   memset(edgetrack_bss_start, 0, (size_t)((char*)edgetrack_bss_end - (char*)edgetrack_bss_start));
   paint_stack();
   __libc_init_array();
-  const int argc = read_arguments();
-  exit(main(argc, arguments));
+  int argc = read_arguments();
+  char** argv = arguments;
+  if (argc > 0 && strcmp(argv[0], "--board-report") == 0) {
+    atexit(report_memory);
+    --argc;
+    ++argv;
+  }
+  exit(main(argc, argv));
 }
 
 static char* put_hex(char* out, uint32_t value) {

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Runs a static ARM binary on qemu-arm -cpu pxa270 with our instruction-counting plugin and reports
+# Runs a static ARM binary on qemu-arm -cpu pxa270 (or, with EDGETRACK_COUNT_TRIPLE=arm-none-eabi, a
+# firmware image of the bare-metal tree on qemu-system-arm's mps2-an385, toolchains/mcu/run-firmware.sh)
+# with our instruction-counting plugin and reports
 # how many guest instructions it executed, how many of them inside libgcc's soft-float routines,
 # and the same inside the edgetrack_count_begin()/edgetrack_count_end() windows.
 #
@@ -17,7 +19,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../.." && pwd)
-triple=arm-linux-gnueabi
+triple=${EDGETRACK_COUNT_TRIPLE:-arm-linux-gnueabi}
 sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
 
 usage() { sed -n '7p' "$0" | sed 's/^# *//' >&2; exit 2; }
@@ -92,7 +94,11 @@ end=$(marker_address edgetrack_count_end)
 [ -n "$profile" ] && args+=",profile=$(escape "$work/blocks")"
 
 status=0
-qemu-arm -cpu pxa270 -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+if [ "$triple" = arm-none-eabi ]; then
+  EDGETRACK_QEMU_PLUGIN="$(escape "$plugin"),$args" "$top/toolchains/mcu/run-firmware.sh" "$binary" "$@" || status=$?
+else
+  qemu-arm -cpu pxa270 -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+fi
 if [ -z "$out" ]; then
   if [ -s "$work/summary" ]; then cat "$work/summary" >&2; else echo "count-insns: the plugin wrote no summary" >&2; fi
 fi
