@@ -11,9 +11,15 @@ source "$here/../lib.sh"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/mcu.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-host_dir=$(bench_tree host s40_23 edgetrack)
-mcu_dir=$(bench_tree mcu s40_23 edgetrack)
-arm_dir=$(bench_tree arm s40_23 edgetrack)
+# EDGETRACK_MCU_BENCH_TREES=<host>:<mcu>:<arm>: S40.23 Release trees already built (tests/run-all.sh's
+# host-s40_23, mcu-s40_23, arm-s40_23) instead of build/bench-*.
+if [ -n "${EDGETRACK_MCU_BENCH_TREES:-}" ]; then
+  IFS=: read -r host_dir mcu_dir arm_dir <<<"$EDGETRACK_MCU_BENCH_TREES"
+else
+  host_dir=$(bench_tree host s40_23 edgetrack)
+  mcu_dir=$(bench_tree mcu s40_23 edgetrack)
+  arm_dir=$(bench_tree arm s40_23 edgetrack)
+fi
 firmware=$mcu_dir/app/edgetrack
 model=$top/data/models/cube60.cao
 
