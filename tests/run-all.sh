@@ -2,10 +2,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The README's test command: installs what is missing, builds the host trees (double, s40_23,
 # s47_16, and double with ASan+UBSan), the fuzz tree (clang's libFuzzer over every parser, a
-# short smoke run each), the ARM trees (s40_23, double soft-float) and today's handheld trees
-# (AArch64 and ARMv7-A hard-float, double), and runs ctest in each; ARM tests run on qemu-arm
-# -cpu pxa270, qemu-aarch64 -cpu cortex-a53 and qemu-arm -cpu cortex-a7. Fails if any build or
-# test fails.
+# short smoke run each), the ARM trees (s40_23, double soft-float), today's handheld trees
+# (AArch64 and ARMv7-A hard-float, double) and the Cortex-M3 firmware tree (s40_23), and runs
+# ctest in each; ARM tests run on qemu-arm -cpu pxa270, qemu-aarch64 -cpu cortex-a53 and qemu-arm
+# -cpu cortex-a7, the firmware's on qemu-system-arm -M mps2-an385. Fails if any build or test fails.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
@@ -16,6 +16,10 @@ jobs=${EDGETRACK_JOBS:-$(nproc)}
 arm_toolchain=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
 fuzz=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DEDGETRACK_FUZZ=ON -DEDGETRACK_HOST_EXTRAS=OFF
       -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+# The Cortex-M3 firmware tree (docs/MCU.md), on qemu-system-arm -M mps2-an385; its tracking test
+# compares the firmware's poses with the host-s40_23 tree's, built before it.
+mcu_firmware=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/cortex-m3.cmake"
+              -DEDGETRACK_HOST_EDGETRACK="$build_root/host-s40_23/app/edgetrack")
 # name | cmake arguments
 trees=(
   "host-double|-DEDGETRACK_REAL=double"
@@ -27,6 +31,7 @@ trees=(
   "arm-double|-DEDGETRACK_REAL=double ${arm_toolchain[*]}"
   "aarch64-double|-DEDGETRACK_REAL=double -DCMAKE_TOOLCHAIN_FILE=$top/toolchains/aarch64-linux.cmake"
   "armv7hf-double|-DEDGETRACK_REAL=double -DCMAKE_TOOLCHAIN_FILE=$top/toolchains/armv7a-hf.cmake"
+  "mcu-s40_23|-DEDGETRACK_REAL=s40_23 ${mcu_firmware[*]}"
 )
 
 failed=()

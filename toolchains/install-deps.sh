@@ -7,6 +7,8 @@ packages=(
   cmake ninja-build g++ pkg-config           # host build
   g++-arm-linux-gnueabi qemu-user            # ARMv5TE soft-float build, run on qemu-arm -cpu pxa270
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf  # AArch64 and ARMv7-A hard-float builds (Cortex-A53, A7)
+  gcc-arm-none-eabi libnewlib-arm-none-eabi  # bare-metal Cortex-M3 firmware (toolchains/cortex-m3.cmake)
+  libstdc++-arm-none-eabi-newlib qemu-system-arm  # its C++ library; run on qemu-system-arm -M mps2-an385
   libcminpack-dev libeigen3-dev              # upstream MINPACK and Eigen's LM, for comparisons
   libvisp-dev visp-images-data               # upstream ViSP 3.5 and its real image sequences
   libopencv-dev libosmesa6-dev               # host image/video I/O and offscreen GL

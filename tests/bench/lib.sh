@@ -3,8 +3,9 @@
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bench_build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
 
-# bench_tree <host|arm|aarch64|armv7hf> <real> <target>...: configures build/bench-<kind>-<real>
-# (arm: the ARMv5TE PXA270; aarch64 and armv7hf: the hard-float Linux targets), builds the
+# bench_tree <host|arm|aarch64|armv7hf|mcu> <real> <target>...: configures build/bench-<kind>-<real>
+# (arm: the ARMv5TE PXA270; aarch64 and armv7hf: the hard-float Linux targets; mcu: the Cortex-M3
+# firmware), builds the
 # targets, and prints the build directory.
 bench_tree() {
   local kind=$1 real=$2; shift 2
@@ -15,6 +16,7 @@ bench_tree() {
     arm) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake") ;;
     aarch64) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/aarch64-linux.cmake") ;;
     armv7hf) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv7a-hf.cmake") ;;
+    mcu) args+=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/cortex-m3.cmake") ;;
   esac
   cmake -S "$top" -B "$dir" -G Ninja "${args[@]}" >"$dir.configure.log" 2>&1 ||
     { cat "$dir.configure.log" >&2; return 1; }

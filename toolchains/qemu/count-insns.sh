@@ -4,7 +4,9 @@
 # guest instructions it executed, how many of them inside libgcc's soft-float routines, and the
 # same inside the edgetrack_count_begin()/edgetrack_count_end() windows. The binary names its
 # target: ARMv5TE soft-float on qemu-arm -cpu pxa270, ARMv7-A hard-float on qemu-arm -cpu
-# cortex-a7, AArch64 on qemu-aarch64 -cpu cortex-a53 ($EDGETRACK_QEMU_CPU picks another core).
+# cortex-a7, AArch64 on qemu-aarch64 -cpu cortex-a53 ($EDGETRACK_QEMU_CPU picks another core);
+# with EDGETRACK_COUNT_TRIPLE=arm-none-eabi, a firmware image of the bare-metal tree on
+# qemu-system-arm's mps2-an385 (toolchains/mcu/run-firmware.sh).
 #
 #   count-insns.sh [--out FILE] [--windows FILE] [--profile FILE] [--mode tb|insn] <arm-binary> [args...]
 #
@@ -50,6 +52,8 @@ elif readelf -A "$binary" | grep -q 'Tag_ABI_VFP_args: VFP registers'; then
 else
   triple=arm-linux-gnueabi qemu=qemu-arm cpu=pxa270
 fi
+# A bare-metal firmware carries no ABI tag that tells it from a Linux one: the caller names it.
+[ "${EDGETRACK_COUNT_TRIPLE:-}" = arm-none-eabi ] && triple=arm-none-eabi
 cpu=${EDGETRACK_QEMU_CPU:-$cpu}
 sysroot=${EDGETRACK_ARM_SYSROOT:-/usr/$triple}
 
@@ -101,7 +105,11 @@ end=$(marker_address edgetrack_count_end)
 [ -n "$profile" ] && args+=",profile=$(escape "$work/blocks")"
 
 status=0
-"$qemu" -cpu "$cpu" -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+if [ "$triple" = arm-none-eabi ]; then
+  EDGETRACK_QEMU_PLUGIN="$(escape "$plugin"),$args" "$top/toolchains/mcu/run-firmware.sh" "$binary" "$@" || status=$?
+else
+  "$qemu" -cpu "$cpu" -L "$sysroot" -plugin "$(escape "$plugin"),$args" "$binary" "$@" || status=$?
+fi
 if [ -z "$out" ]; then
   if [ -s "$work/summary" ]; then cat "$work/summary" >&2; else echo "count-insns: the plugin wrote no summary" >&2; fi
 fi

@@ -58,6 +58,11 @@ Result<InputFileIdentity> input_file_identity(const std::string& path, std::size
   auto size = checked_size(path, max_bytes);
   if (!size.ok()) return size.error();
   std::error_code error;
+#if defined(EDGETRACK_NO_PATH_RESOLUTION)
+  // The bare-metal firmware's files (semihosting) have no directories or links to resolve: a
+  // file is known by its path with "." and ".." taken out.
+  return InputFileIdentity{std::filesystem::path(path).lexically_normal().string(), size.value()};
+#endif
   const std::filesystem::path canonical = std::filesystem::canonical(path, error);
   if (error) return Error{path, 0, "cannot resolve its path: " + error.message()};
   return InputFileIdentity{canonical.string(), size.value()};

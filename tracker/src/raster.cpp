@@ -71,10 +71,10 @@ bool setup_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelR
   if (area < 16) return false;
   const int32_t min_x = std::min(a.x, std::min(b.x, c.x)), max_x = std::max(a.x, std::max(b.x, c.x));
   const int32_t min_y = std::min(a.y, std::min(b.y, c.y)), max_y = std::max(a.y, std::max(b.y, c.y));
-  t.box.x0 = std::max(clip.x0, (min_x + 15) >> kSubpixelBits);
-  t.box.x1 = std::min(clip.x1, max_x >> kSubpixelBits);
-  t.box.y0 = std::max(clip.y0, (min_y + 15) >> kSubpixelBits);
-  t.box.y1 = std::min(clip.y1, max_y >> kSubpixelBits);
+  t.box.x0 = std::max<int>(clip.x0, (min_x + 15) >> kSubpixelBits);
+  t.box.x1 = std::min<int>(clip.x1, max_x >> kSubpixelBits);
+  t.box.y0 = std::max<int>(clip.y0, (min_y + 15) >> kSubpixelBits);
+  t.box.y1 = std::min<int>(clip.y1, max_y >> kSubpixelBits);
   if (t.box.x0 > t.box.x1 || t.box.y0 > t.box.y1) return false;
   t.a = a;
   t.b = b;

@@ -6,8 +6,10 @@ DECLARE(test_image_convert);
 DECLARE(test_image_point);
 DECLARE(test_math);
 DECLARE(test_matrix);
+#ifndef EDGETRACK_NO_ME_LINE_ELLIPSE
 DECLARE(test_me_ellipse);
 DECLARE(test_me_line);
+#endif
 DECLARE(test_me_masks);
 DECLARE(test_me_site);
 DECLARE(test_robust);
@@ -18,8 +20,10 @@ void register_tests() {
   REGISTER(test_image_point);
   REGISTER(test_math);
   REGISTER(test_matrix);
+#ifndef EDGETRACK_NO_ME_LINE_ELLIPSE
   REGISTER(test_me_ellipse);
   REGISTER(test_me_line);
+#endif
   REGISTER(test_me_masks);
   REGISTER(test_me_site);
   REGISTER(test_robust);
