@@ -20,10 +20,12 @@ enum class PixelLayout {
   kRgb24,   ///< three bytes per pixel: red, green, blue
   kBgr24,   ///< three bytes per pixel: blue, green, red (OpenCV's order)
   kNv21,    ///< Android's camera default: the Y plane, then interleaved V/U at half resolution
-  kI420     ///< YUV420 planar: the Y plane, then the U and V planes at half resolution
+  kI420,    ///< YUV420 planar: the Y plane, then the U and V planes at half resolution
+  kRgba32,  ///< four bytes per pixel: red, green, blue, then alpha (never read)
+  kBgra32   ///< four bytes per pixel: blue, green, red, then alpha (OpenCV's BGRA; alpha never read)
 };
 
-/// "RGB565", "grey8", "RGB24", "BGR24", "NV21", "I420".
+/// "RGB565", "grey8", "RGB24", "BGR24", "NV21", "I420", "RGBA32", "BGRA32".
 const char* layout_name(PixelLayout layout);
 /// Bytes per pixel of the first plane (the Y plane for NV21 and I420).
 int bytes_per_pixel(PixelLayout layout);
