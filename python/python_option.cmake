@@ -26,6 +26,7 @@ if(EDGETRACK_PYTHON)
     find_package(Python 3 COMPONENTS Interpreter Development.Module NumPy REQUIRED)
     find_package(pybind11 CONFIG REQUIRED)
   endif()
+  set(EDGETRACK_PYTHON_PACKAGE python3-edgetrack)  # the .deb (edgetrack_cpack.cmake)
   # The module is a shared object holding the static libraries of ports/ and tracker/.
   set(CMAKE_POSITION_INDEPENDENT_CODE ON)
 endif()

@@ -25,6 +25,7 @@ case $mode in
     done
     [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "$deb: Version is not $version"
     dpkg-deb -x "$deb" "$work/root"
+    [ -s "$work/root/usr/share/doc/python3-edgetrack/copyright" ] || fail "$deb has no /usr/share/doc/python3-edgetrack/copyright"
     site=$work/root/usr/lib/python3/dist-packages ;;
   *) fail "unknown mode $mode" ;;
 esac

@@ -47,7 +47,7 @@ set(CPACK_DEBIAN_DEV_DESCRIPTION
 # was built with; dpkg-shlibdeps adds the C++ runtime.
 if(EDGETRACK_PYTHON)
   list(APPEND CPACK_COMPONENTS_ALL python)
-  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-edgetrack)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME ${EDGETRACK_PYTHON_PACKAGE})
   set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
   set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS ON)
   math(EXPR edgetrack_python_next_minor "${Python_VERSION_MINOR} + 1")
