@@ -4,12 +4,16 @@ import os
 
 import numpy as np
 
+import edgetrack
+
 VISP = os.environ.get("EDGETRACK_VISP_IMAGES", "/usr/share/visp-images-data/ViSP-images")
 MBT = os.path.join(VISP, "mbt")
 MODEL, CONFIG, INIT = (os.path.join(MBT, name) for name in ("cube.cao", "cube.xml", "cube.0.pos"))
 SOURCE = os.environ.get("EDGETRACK_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
 OUTPUT = os.environ.get("EDGETRACK_TEST_OUTPUT", "/tmp/edgetrack-python-tests")
 os.makedirs(OUTPUT, exist_ok=True)
+# How near two computations of one pose come in this build's real (S47.16's step is 2^-16).
+TOLERANCE = {"double": 1e-12, "float": 1e-5, "s40_23": 1e-5, "s47_16": 1e-4}[edgetrack.real]
 
 
 def read_pgm(path):

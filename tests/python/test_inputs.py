@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 
 import edgetrack
-from frames import CONFIG, INIT, MBT, MODEL, OUTPUT, SOURCE
+from frames import CONFIG, INIT, MBT, MODEL, OUTPUT, TOLERANCE
 
 
 def write(name, text):
@@ -71,15 +71,15 @@ class Inputs(unittest.TestCase):
         pose = edgetrack.read_pose(INIT)
         self.assertEqual(pose.shape, (4, 4))
         self.assertEqual(pose.dtype, np.float64)
-        np.testing.assert_allclose(pose[:3, :3] @ pose[:3, :3].T, np.eye(3), atol=1e-12)
+        np.testing.assert_allclose(pose[:3, :3] @ pose[:3, :3].T, np.eye(3), atol=TOLERANCE)
         with open(INIT) as f:
             numbers = [float(x) for x in f.read().split()]
-        np.testing.assert_allclose(pose[:3, 3], numbers[:3])
+        np.testing.assert_allclose(pose[:3, 3], numbers[:3], atol=TOLERANCE)
         t, tu = edgetrack.theta_u_of(pose)
-        np.testing.assert_allclose(tu, numbers[3:], atol=1e-12)
-        np.testing.assert_allclose(edgetrack.pose_from_theta_u(t, tu), pose, atol=1e-12)
+        np.testing.assert_allclose(tu, numbers[3:], atol=TOLERANCE)
+        np.testing.assert_allclose(edgetrack.pose_from_theta_u(t, tu), pose, atol=TOLERANCE)
         matrix = write("pose.txt", "\n".join(" ".join("%.17g" % x for x in row) for row in pose) + "\n")
-        np.testing.assert_allclose(edgetrack.read_pose(matrix), pose, atol=1e-15)
+        np.testing.assert_allclose(edgetrack.read_pose(matrix), pose, atol=TOLERANCE)
 
     def test_errors_are_the_command_lines(self):
         missing = os.path.join(OUTPUT, "no_such_model.cao")
