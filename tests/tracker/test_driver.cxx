@@ -29,6 +29,7 @@ DECLARE(test_edge_support);
 DECLARE(test_pose_files);
 DECLARE(test_lens);
 DECLARE(test_camera_file);
+DECLARE(test_model_text);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -58,6 +59,7 @@ void register_tests() {
   REGISTER(test_pose_files);
   REGISTER(test_lens);
   REGISTER(test_camera_file);
+  REGISTER(test_model_text);
 }
 
 DEFINE_MAIN

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The tracker reads every camera layout in place: one generated sequence given as RGB565 (packed
 /// and with padded rows) and,
-/// built from the same grey values, as RGB24, BGR24, grey8 and NV21/I420 (padded rows and
+/// built from the same grey values, as RGB24, BGR24, RGBA32, BGRA32, grey8 and NV21/I420 (padded rows and
 /// packed ones, the chroma planes filled with noise) gives bit-identical poses and matches every
 /// frame, on demand and over the whole frame; packed grey planes are read with no conversion;
 /// and views that cannot be tracked are refused with a message, leaving the tracker as it was.
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "edgetrack/grey_conversion.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
@@ -46,7 +47,10 @@ void build_frame(const Rgb565Frame& rgb565, const std::vector<unsigned char>& gr
     const unsigned char* g = grey.data() + static_cast<size_t>(y) * width;
     if (c.layout == PixelLayout::kRgb565) std::memcpy(row, &rgb565.pixels[static_cast<size_t>(y) * width], 2 * width);
     else if (bytes_per_pixel(c.layout) == 1) std::memcpy(row, g, width);
-    else for (int x = 0; x < width; ++x) row[3 * x] = row[3 * x + 1] = row[3 * x + 2] = g[x];
+    else {
+      const int step = bytes_per_pixel(c.layout);  // a fourth byte (alpha) keeps its noise
+      for (int x = 0; x < width; ++x) row[step * x] = row[step * x + 1] = row[step * x + 2] = g[x];
+    }
   }
   c.view = FrameView{c.bytes.data(), width, height, row_bytes, c.layout};
 }
@@ -68,6 +72,8 @@ void same_poses_in_every_layout(int frames) {
       {"RGB565, padded rows", PixelLayout::kRgb565, 10, GreyScaling::kOnDemand, {}, {}},
       {"RGB24, padded rows", PixelLayout::kRgb24, 7, GreyScaling::kOnDemand, {}, {}},
       {"BGR24, padded rows", PixelLayout::kBgr24, 12, GreyScaling::kOnDemand, {}, {}},
+      {"RGBA32, padded rows", PixelLayout::kRgba32, 9, GreyScaling::kOnDemand, {}, {}},
+      {"BGRA32, packed", PixelLayout::kBgra32, 0, GreyScaling::kOnDemand, {}, {}},
       {"grey8, padded rows", PixelLayout::kGrey8, 13, GreyScaling::kOnDemand, {}, {}},
       {"grey8, packed", PixelLayout::kGrey8, 0, GreyScaling::kOnDemand, {}, {}},
       {"NV21, packed", PixelLayout::kNv21, 0, GreyScaling::kOnDemand, {}, {}},
@@ -75,6 +81,7 @@ void same_poses_in_every_layout(int frames) {
       {"RGB24, padded rows, whole frame", PixelLayout::kRgb24, 5, GreyScaling::kWholeFrame, {}, {}},
       {"I420, padded rows, whole frame", PixelLayout::kI420, 32, GreyScaling::kWholeFrame, {}, {}},
       {"NV21, packed, whole frame", PixelLayout::kNv21, 0, GreyScaling::kWholeFrame, {}, {}},
+      {"BGRA32, padded rows, whole frame", PixelLayout::kBgra32, 4, GreyScaling::kWholeFrame, {}, {}},
   };
   const Result<Tracker> made = Tracker::create(model.value(), camera, truth[0], TrackerParams{});
   TEST("the RGB565 tracker starts", made.ok(), true);
@@ -109,12 +116,14 @@ void same_poses_in_every_layout(int frames) {
   TEST("the moving edges find matches (the comparison is not vacuous)", matches > 30 * frames, true);
   // Free the last frame read in place: a tracker that read it keeps nothing pointing into it, so
   // copying it is safe (the ASan tree checks) and the copy tracks on.
-  std::vector<uint8_t>().swap(cases[4].bytes);
-  Tracker copy = trackers[4];
+  const size_t packed_grey = 6;
+  std::vector<uint8_t>().swap(cases[packed_grey].bytes);
+  Tracker copy = trackers[packed_grey];
   renderer.render(model.value(), truth[frames - 1], 77u, frame);
   for (size_t i = 0; i < grey.size(); ++i) grey[i] = vpImageConvert::rgb565ToGrey(frame.pixels[i]);
-  build_frame(frame, grey, 1u, cases[4]);
-  const Result<FrameResult> from_copy = copy.track(cases[4].view), from_original = trackers[4].track(cases[4].view);
+  build_frame(frame, grey, 1u, cases[packed_grey]);
+  const Result<FrameResult> from_copy = copy.track(cases[packed_grey].view),
+                            from_original = trackers[packed_grey].track(cases[packed_grey].view);
   TEST("a copy of a tracker that read frames in place tracks as the original does",
        from_copy.ok() && from_original.ok() &&
            bit_identical(from_copy.value().camera_from_model, from_original.value().camera_from_model),
@@ -160,15 +169,40 @@ void bad_views_are_refused() {
   refused(t, FrameView{bytes.data(), w, h, w * 3 - 1, PixelLayout::kBgr24}, "BGR24 rows shorter than a row of pixels",
           "less than the 960 bytes");
   refused(t, FrameView{bytes.data(), w, h, w - 1, PixelLayout::kNv21}, "an NV21 Y stride under the width", "NV21");
+  refused(t, FrameView{bytes.data(), w, h, w * 4 - 1, PixelLayout::kRgba32}, "RGBA32 rows shorter than a row of pixels",
+          "less than the 1280 bytes");
   refused(t, FrameView{bytes.data(), w, h, w * 2 + 1, PixelLayout::kRgb565}, "an odd RGB565 stride", "2-byte");
   refused(t, FrameView{bytes.data() + 1, w, h, w * 2, PixelLayout::kRgb565}, "an odd RGB565 pointer", "2-byte");
   TEST("a good view of the same bytes is then tracked", t.track(FrameView{bytes.data(), w, h, w + 3, PixelLayout::kGrey8}).ok(),
        true);
 }
 
+/// The colour layouts weigh each channel as its name says: one pixel of distinct red, green and
+/// blue converts to vpImageConvert's grey of that colour in RGB24, BGR24, RGBA32 and BGRA32.
+void channels_in_their_order() {
+  const uint8_t r = 200, g = 60, b = 10, a = 255;
+  const unsigned char want = vpImageConvert::rgbToGrey(r, g, b);
+  const struct {
+    PixelLayout layout;
+    std::vector<uint8_t> pixel;
+  } pixels[] = {{PixelLayout::kRgb24, {r, g, b}},
+                {PixelLayout::kBgr24, {b, g, r}},
+                {PixelLayout::kRgba32, {r, g, b, a}},
+                {PixelLayout::kBgra32, {b, g, r, a}}};
+  for (const auto& p : pixels) {
+    vpImage<unsigned char> grey(1, 1, 0);
+    convert_to_grey(packed_frame(p.pixel.data(), 1, 1, p.layout), PixelBox{0, 0, 1, 1}, grey);
+    TEST_EQUAL((std::string(layout_name(p.layout)) + ": the grey of one coloured pixel").c_str(), int(grey[0][0]),
+               int(want));
+  }
+  TEST("the colour is not grey already (the test tells channels apart)", want != vpImageConvert::rgbToGrey(b, g, r),
+       true);
+}
+
 }  // namespace
 
 static void test_frame_layouts() {
+  channels_in_their_order();
   same_poses_in_every_layout(12);
   bad_views_are_refused();
 }

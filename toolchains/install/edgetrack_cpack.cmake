@@ -44,4 +44,17 @@ set(CPACK_DEBIAN_DEV_PACKAGE_REPLACES ${EDGETRACK_DEV_VIRTUAL_PACKAGE})
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEV_DESCRIPTION
     "edge-based 3D object tracker, vnl and ViSP moving-edge ports (development files, real = ${EDGETRACK_REAL})\n Headers, libraries built with real = ${EDGETRACK_REAL}, the CMake package (find_package(edgetrack)) and edgetrack.pc.")
+# python3-edgetrack (component python, python/CMakeLists.txt): the module, for the python3 it
+# was built with; dpkg-shlibdeps adds the C++ runtime.
+if(EDGETRACK_PYTHON)
+  list(APPEND CPACK_COMPONENTS_ALL python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME ${EDGETRACK_PYTHON_PACKAGE})
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS ON)
+  math(EXPR edgetrack_python_next_minor "${Python_VERSION_MINOR} + 1")
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
+      "python3 (>= ${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}), python3 (<< ${Python_VERSION_MAJOR}.${edgetrack_python_next_minor}), python3-numpy")
+  set(CPACK_DEBIAN_PYTHON_DESCRIPTION
+      "edge-based 3D object tracker for Python (real = ${EDGETRACK_REAL})\n import edgetrack: models, ViSP configurations, and tracking of numpy frames read in place.")
+endif()
 include(CPack)

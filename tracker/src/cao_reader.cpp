@@ -168,7 +168,10 @@ void append_part(const Polygons& part, Polygons& into) {
 /// (next_include), then the parts they brought are merged before the file's own records.
 class CaoFileReader {
  public:
-  CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file);
+  /// `include_directory`: where relative load() paths resolve (none for a model given as text
+  /// without a base directory: a relative load() is then refused).
+  CaoFileReader(std::string path, std::optional<std::string> include_directory, std::vector<TextLine> lines,
+                const Se3& model_from_file);
 
   enum class Next { include, done, error };
   /// The next load() line's file (relative to this one) and where its points go in the model.
@@ -242,6 +245,7 @@ class CaoFileReader {
   }
 
   std::string path_;
+  std::optional<std::string> include_directory_;
   std::vector<TextLine> lines_;
   Se3 model_from_file_;
   size_t pos_ = 0;
@@ -251,8 +255,12 @@ class CaoFileReader {
   Error error_;
 };
 
-CaoFileReader::CaoFileReader(std::string path, std::vector<TextLine> lines, const Se3& model_from_file)
-    : path_(std::move(path)), lines_(std::move(lines)), model_from_file_(model_from_file) {
+CaoFileReader::CaoFileReader(std::string path, std::optional<std::string> include_directory,
+                             std::vector<TextLine> lines, const Se3& model_from_file)
+    : path_(std::move(path)),
+      include_directory_(std::move(include_directory)),
+      lines_(std::move(lines)),
+      model_from_file_(model_from_file) {
   const std::string& head = lines_.empty() ? std::string() : lines_[0].tokens[0];
   if (head.size() == 2 && head[0] == 'V' && head[1] >= '0' && head[1] <= '9') {
     version_ = head[1] - '0';
@@ -271,7 +279,11 @@ CaoFileReader::Next CaoFileReader::next_include(std::string& path, Se3& model_fr
     return Next::error;
   }
   load_line_ = line.number;
-  path = relative[0] == '/' ? relative : parent_directory(path_) + relative;
+  if (relative[0] != '/' && !include_directory_) {
+    fail(line, "load(\"" + relative + "\") in a model given as text needs a base directory to resolve against");
+    return Next::error;
+  }
+  path = relative[0] == '/' ? relative : *include_directory_ + relative;
   model_from_part = model_from_file_ * placement;
   return Next::include;
 }
@@ -404,6 +416,24 @@ class CaoLoader {
 
   Result<Polygons> load(const std::string& top) {
     if (std::optional<Error> refused = open(top, Se3())) return *refused;
+    return read_open_files();
+  }
+
+  /// The same for a top model held in memory: `name` stands for its file in errors.
+  Result<Polygons> load_text(const std::string& text, const std::string& name,
+                             const std::optional<std::string>& base_directory) {
+    if (text.size() > limits_.max_bytes)
+      return Error{name, 0, "the model's text is more than " + std::to_string(limits_.max_bytes) + " bytes"};
+    std::vector<TextLine> lines;
+    split_text_lines(text, lines);
+    std::optional<std::string> directory = base_directory;
+    if (directory && !directory->empty() && directory->back() != '/') *directory += '/';
+    push(CaoFileReader(name, std::move(directory), std::move(lines), Se3()), std::string(), text.size());
+    return read_open_files();
+  }
+
+ private:
+  Result<Polygons> read_open_files() {
     for (;;) {
       OpenFile& file = open_.back();
       std::string path;
@@ -424,7 +454,6 @@ class CaoLoader {
     }
   }
 
- private:
   struct OpenFile {
     CaoFileReader reader;
     std::string identity;
@@ -451,11 +480,15 @@ class CaoLoader {
     std::vector<TextLine> lines;
     const Result<bool> read = read_text_lines(path, lines);
     if (!read.ok()) return unreadable(path, read.error());
-    bytes_ += identity.value().size;
-    loaded_.insert(id);
-    on_chain_.insert(id);
-    open_.push_back(OpenFile{CaoFileReader(path, std::move(lines), model_from_file), id, Polygons{}, false});
+    push(CaoFileReader(path, parent_directory(path), std::move(lines), model_from_file), id, identity.value().size);
     return std::nullopt;
+  }
+  /// `identity` is empty for a text in memory: no file's canonical path.
+  void push(CaoFileReader reader, const std::string& identity, std::size_t size) {
+    bytes_ += size;
+    loaded_.insert(identity);
+    on_chain_.insert(identity);
+    open_.push_back(OpenFile{std::move(reader), identity, Polygons{}, false});
   }
 
   std::optional<Error> unreadable(const std::string& path, const Error& error) const {
@@ -485,7 +518,7 @@ class CaoLoader {
 
   CaoIncludeLimits limits_;
   std::vector<OpenFile> open_;
-  std::unordered_set<std::string> loaded_, on_chain_;  ///< canonical paths
+  std::unordered_set<std::string> loaded_, on_chain_;  ///< canonical paths (empty: the text in memory)
   std::size_t bytes_ = 0;
 };
 
@@ -493,6 +526,11 @@ class CaoLoader {
 
 Result<Polygons> read_cao(const std::string& path, const CaoIncludeLimits& limits) {
   return CaoLoader(limits).load(path);
+}
+
+Result<Polygons> read_cao_text(const std::string& text, const std::string& name,
+                               const std::optional<std::string>& base_directory, const CaoIncludeLimits& limits) {
+  return CaoLoader(limits).load_text(text, name, base_directory);
 }
 
 }  // namespace edgetrack

@@ -16,6 +16,8 @@ const char* layout_name(PixelLayout layout) {
     case PixelLayout::kI420: return "I420";
     case PixelLayout::kNv12: return "NV12";
     case PixelLayout::kYuv420_888: return "YUV_420_888";
+    case PixelLayout::kRgba32: return "RGBA32";
+    case PixelLayout::kBgra32: return "BGRA32";
   }
   return "?";
 }
@@ -25,6 +27,8 @@ int bytes_per_pixel(PixelLayout layout) {
     case PixelLayout::kRgb565: return 2;
     case PixelLayout::kRgb24:
     case PixelLayout::kBgr24: return 3;
+    case PixelLayout::kRgba32:
+    case PixelLayout::kBgra32: return 4;
     case PixelLayout::kGrey8:
     case PixelLayout::kNv21:
     case PixelLayout::kI420:

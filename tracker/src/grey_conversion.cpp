@@ -10,6 +10,16 @@
 namespace edgetrack {
 namespace {
 
+/// Rows of colour pixels of kBytes bytes, red at byte kRed, green at 1, blue at kBlue (a fourth
+/// byte, alpha, is not read).
+template <int kBytes, int kRed, int kBlue>
+void colour_rows(const uint8_t* in, unsigned int in_step, unsigned char* out, unsigned int out_step, int rows,
+                 unsigned int count) {
+  for (; rows > 0; --rows, in += in_step, out += out_step)
+    for (unsigned int k = 0; k < count; ++k)
+      out[k] = vpImageConvert::rgbToGrey(in[kBytes * k + kRed], in[kBytes * k + 1], in[kBytes * k + kBlue]);
+}
+
 /// Rows of `count` pixels, from the first pixel to be converted of each, `rows` times, the rows
 /// `in_stride` and `out_stride` bytes apart: the layout is looked at once per box.
 void convert_rows(PixelLayout layout, const uint8_t* in, int in_stride, unsigned char* out, int out_stride, int rows,
@@ -19,14 +29,10 @@ void convert_rows(PixelLayout layout, const uint8_t* in, int in_stride, unsigned
     case PixelLayout::kRgb565:
       vpImageConvert::RGB565ToGrey(in, in_step, out, out_step, static_cast<unsigned int>(rows), count);
       return;
-    case PixelLayout::kRgb24:
-      for (; rows > 0; --rows, in += in_step, out += out_step)
-        for (unsigned int k = 0; k < count; ++k) out[k] = vpImageConvert::rgbToGrey(in[3 * k], in[3 * k + 1], in[3 * k + 2]);
-      return;
-    case PixelLayout::kBgr24:
-      for (; rows > 0; --rows, in += in_step, out += out_step)
-        for (unsigned int k = 0; k < count; ++k) out[k] = vpImageConvert::rgbToGrey(in[3 * k + 2], in[3 * k + 1], in[3 * k]);
-      return;
+    case PixelLayout::kRgb24: return colour_rows<3, 0, 2>(in, in_step, out, out_step, rows, count);
+    case PixelLayout::kBgr24: return colour_rows<3, 2, 0>(in, in_step, out, out_step, rows, count);
+    case PixelLayout::kRgba32: return colour_rows<4, 0, 2>(in, in_step, out, out_step, rows, count);
+    case PixelLayout::kBgra32: return colour_rows<4, 2, 0>(in, in_step, out, out_step, rows, count);
     case PixelLayout::kGrey8:
     case PixelLayout::kNv21:
     case PixelLayout::kI420:

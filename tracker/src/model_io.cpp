@@ -17,12 +17,8 @@ bool ends_with(const std::string& text, const std::string& suffix) {
   return true;
 }
 
-}  // namespace
-
-Result<Polygons> read_obj(const std::string& path) {
-  std::vector<TextLine> lines;
-  auto read = read_text_lines(path, lines);
-  if (!read.ok()) return read.error();
+/// The records of an .obj's lines; `path` names it in errors.
+Result<Polygons> read_obj_lines(const std::string& path, const std::vector<TextLine>& lines) {
   Polygons out;
   for (const TextLine& line : lines) {
     const std::string& kind = line.tokens[0];
@@ -64,12 +60,38 @@ Result<Polygons> read_obj(const std::string& path) {
   return out;
 }
 
+}  // namespace
+
+Result<Polygons> read_obj(const std::string& path) {
+  std::vector<TextLine> lines;
+  auto read = read_text_lines(path, lines);
+  if (!read.ok()) return read.error();
+  return read_obj_lines(path, lines);
+}
+
+Result<Polygons> read_obj_text(const std::string& text, const std::string& name) {
+  if (text.size() > kMaxTextFileBytes)
+    return Error{name, 0, "the model's text is more than " + std::to_string(kMaxTextFileBytes) + " bytes"};
+  std::vector<TextLine> lines;
+  split_text_lines(text, lines);
+  return read_obj_lines(name, lines);
+}
+
 Result<EdgeModel> load_model(const std::string& path, const EdgeRules& rules) {
   Result<Polygons> polygons = ends_with(path, ".cao")   ? read_cao(path)
                               : ends_with(path, ".obj") ? read_obj(path)
                                                         : Result<Polygons>(Error{path, 0, "unknown model format: use .cao or .obj"});
   if (!polygons.ok()) return polygons.error();
   return build_edge_model(polygons.value(), rules, path);
+}
+
+Result<EdgeModel> load_model_text(const std::string& text, const std::string& name,
+                                  const std::optional<std::string>& base_directory, const EdgeRules& rules) {
+  Result<Polygons> polygons = ends_with(name, ".cao")   ? read_cao_text(text, name, base_directory)
+                              : ends_with(name, ".obj") ? read_obj_text(text, name)
+                                                        : Result<Polygons>(Error{name, 0, "unknown model format: name the text .cao or .obj"});
+  if (!polygons.ok()) return polygons.error();
+  return build_edge_model(polygons.value(), rules, name);
 }
 
 }  // namespace edgetrack

@@ -13,7 +13,12 @@ namespace edgetrack {
 Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lines) {
   auto whole = read_input_text(path);
   if (!whole.ok()) return whole.error();
-  std::istringstream in(whole.value());
+  split_text_lines(whole.value(), lines);
+  return true;
+}
+
+void split_text_lines(const std::string& whole, std::vector<TextLine>& lines) {
+  std::istringstream in(whole);
   std::string text;
   int number = 0;
   while (std::getline(in, text)) {
@@ -29,7 +34,6 @@ Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lin
     line.text = text;
     if (!line.tokens.empty()) lines.push_back(std::move(line));
   }
-  return true;
 }
 
 bool parse_int(const std::string& token, long& value) {

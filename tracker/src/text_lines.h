@@ -21,6 +21,8 @@ struct TextLine {
 /// Reads the non-empty lines of `path`; an Error naming it when it cannot be read (missing, not
 /// a regular file, over read_input_text's size cap).
 Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lines);
+/// The same for a text already in memory.
+void split_text_lines(const std::string& text, std::vector<TextLine>& lines);
 
 /// A whole token as a decimal integer or a real number.
 bool parse_int(const std::string& token, long& value);

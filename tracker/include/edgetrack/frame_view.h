@@ -22,10 +22,12 @@ enum class PixelLayout {
   kNv21,    ///< Android's camera default: the Y plane, then interleaved V/U at half resolution
   kI420,    ///< YUV420 planar: the Y plane, then the U and V planes at half resolution
   kNv12,    ///< the Y plane, then interleaved U/V at half resolution (NV21's chroma order swapped)
-  kYuv420_888  ///< Android's YUV_420_888: three planes, each with its row stride (yuv_420_888_frame)
+  kYuv420_888,  ///< Android's YUV_420_888: three planes, each with its row stride (yuv_420_888_frame)
+  kRgba32,  ///< four bytes per pixel: red, green, blue, then alpha (never read)
+  kBgra32   ///< four bytes per pixel: blue, green, red, then alpha (OpenCV's BGRA; alpha never read)
 };
 
-/// "RGB565", "grey8", "RGB24", "BGR24", "NV21", "I420", "NV12", "YUV_420_888".
+/// "RGB565", "grey8", "RGB24", "BGR24", "NV21", "I420", "NV12", "YUV_420_888", "RGBA32", "BGRA32".
 const char* layout_name(PixelLayout layout);
 /// Bytes per pixel of the first plane (the Y plane for the YUV layouts).
 int bytes_per_pixel(PixelLayout layout);
