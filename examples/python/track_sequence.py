@@ -89,7 +89,7 @@ def main():
         raise SystemExit("track_sequence: %s" % error)
     poses = open(args.poses, "w") if args.poses else None
     if poses:
-        poses.write("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n")
+        poses.write("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg\n")
     if args.overlay:
         os.makedirs(args.overlay, exist_ok=True)
     for index in range(args.first, args.last + 1):
@@ -103,8 +103,9 @@ def main():
             index, np.array2string(t, precision=5), np.array2string(tu, precision=5), result.status_name,
             result.reason_name, result.points_matched, result.ms))
         if poses:
-            poses.write("%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.3f,%s\n" % (
-                (index,) + tuple(t) + tuple(tu) + (result.points_matched, result.ms, result.status_name)))
+            poses.write("%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.3f,%s,%.2f\n" % (
+                (index,) + tuple(t) + tuple(tu) + (result.points_matched, result.ms, result.status_name,
+                                                   result.measures.gradient_angle_deg)))
         if args.overlay:
             draw_overlay(frame, layout, result, os.path.join(args.overlay, "frame%04d.png" % index))
     if poses:

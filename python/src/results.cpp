@@ -78,7 +78,8 @@ void bind_results(py::module_& m) {
       .value("NOT_DETECTED", StatusReason::kNotDetected)
       .value("UNCONFIRMED", StatusReason::kUnconfirmed)
       .value("POSE_UNCONSTRAINED", StatusReason::kPoseUnconstrained)
-      .value("POSE_UNDETERMINED", StatusReason::kPoseUndetermined);
+      .value("POSE_UNDETERMINED", StatusReason::kPoseUndetermined)
+      .value("UNSUPPORTED", StatusReason::kUnsupported);
   m.def("status_name", [](TrackingStatus s) { return status_name(s); }, py::arg("status"),
         "The status as the poses CSV spells it: tracked, uncertain or lost.");
   m.def("reason_name", [](StatusReason r) { return reason_name(r); }, py::arg("reason"), "The reason in words.");
@@ -98,6 +99,8 @@ void bind_results(py::module_& m) {
   EDGETRACK_FIELD(measures, FrameMeasures, after_loss, "after_loss", "The previous frame was lost.");
   EDGETRACK_FIELD(measures, FrameMeasures, saturations, "saturations", "Fixed-point saturations during the frame.");
   EDGETRACK_FIELD(measures, FrameMeasures, pose_uncertainty_px, "pose_uncertainty_px", "Overlay standard deviation, pixels.");
+  EDGETRACK_FIELD(measures, FrameMeasures, support_share, "support_share", "Share of the visible outline the image gradient supports.");
+  EDGETRACK_FIELD(measures, FrameMeasures, gradient_angle_deg, "gradient_angle_deg", "Mean angle between image gradient and edge normal, degrees (the quality figure).");
 
   py::class_<PoseSolution> pose(m, "PoseSolution", "The pose step's residuals and counts.");
   EDGETRACK_FIELD(pose, PoseSolution, start_rms, "start_rms", "RMS point-to-line distance before, pixels.");
