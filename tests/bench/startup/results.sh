@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Prints the markdown section for docs/results/startup.md (issue 25, point 9: a lean command):
-# what `edgetrack` costs as a whole process: the shared libraries it loads, the start-up time and
-# peak resident memory of `edgetrack --help`, and `edgetrack track` over ViSP's 218 mbt/cube PGM
+# what `edgetrack` costs as a whole process: the shared libraries it loads (and its host extras
+# plugin loads when an option needs it), the start-up time and peak resident memory of each
+# command's --help, and `edgetrack track` over ViSP's 218 mbt/cube PGM
 # frames as one process (wall time, peak resident memory) beside a ViSP program doing the same
 # (visp_track_sequence.cpp: vpImageIo and vpMbGenericTracker in edge mode).
 set -euo pipefail
@@ -14,6 +15,7 @@ trap 'rm -rf "$work"' EXIT
 dir=$(bench_tree host double edgetrack visp_track_sequence)
 edgetrack=$dir/app/edgetrack
 visp=$dir/tests/bench/startup/visp_track_sequence
+plugin=$dir/libexec/edgetrack/edgetrack-host.so
 runs=5
 
 # measure COMMAND...: runs it $runs times; prints the median wall time (ms, from the shell's
@@ -47,14 +49,23 @@ echo "median of $runs runs: wall time of the whole process from the shell's cloc
 echo "memory from GNU time (%M). The machine's cores may be shared with other work while it runs: its"
 echo "load average when this ran was $(cut -d' ' -f1-3 /proc/loadavg) (on $(nproc) cores), and the times grow with it."
 echo
-echo "\`edgetrack\` loads $(ldd "$edgetrack" | wc -l) shared libraries (\`ldd\`; ViSP's program: $(ldd "$visp" | wc -l))."
+echo "\`edgetrack\` loads $(ldd "$edgetrack" | wc -l) shared libraries (\`ldd\`); its host extras plugin, loaded only by the"
+echo "options that need OpenCV or OSMesa (docs/APP.md), $(ldd "$plugin" | wc -l); ViSP's program: $(ldd "$visp" | wc -l)."
 echo
 echo "| process | ms | peak MB |"
 echo "|---|---:|---:|"
 row "\`edgetrack --help\`" "$edgetrack" --help
-row "\`edgetrack eval --help\`" "$edgetrack" eval --help
-row "\`edgetrack track\`, mbt/cube, 218 PGM frames, 640x480, from cube.0.pos" \
-  "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
-  --images "$mbt/cube/image%04d.pgm" --quiet
+for command in track eval detect templates; do
+  row "\`edgetrack $command --help\`" "$edgetrack" $command --help
+done
+track_cube=("$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos"
+            --images "$mbt/cube/image%04d.pgm" --quiet)
+row "\`edgetrack track\`, mbt/cube, 218 PGM frames, 640x480, from cube.0.pos" "${track_cube[@]}"
+"${track_cube[@]}" --poses "$work/poses.csv"
+cut -d, -f1-7 "$work/poses.csv" >"$work/truth.csv"
+row "\`edgetrack eval\` of those 218 poses (against themselves)" "$edgetrack" eval --poses "$work/poses.csv" \
+  --truth "$work/truth.csv"
+row "\`edgetrack track\`, the same, first 10 frames with \`--overlay\` (PNG through the plugin)" "${track_cube[@]}" \
+  --last 9 --overlay "$work/overlay"
 row "ViSP program (\`visp_track_sequence\`), the same frames, XML, model and pose" \
   "$visp" "$mbt/cube.xml" "$mbt/cube.cao" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" 217
