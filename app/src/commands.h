@@ -44,6 +44,10 @@ edgetrack::Result<bool> write_text_file(const std::string& path, const std::stri
 /// The data folder of the source tree (data/), for default models.
 std::string data_dir();
 
+/// `relative` (a path from the installed bin/ folder, as libexec/edgetrack/...) from where the
+/// running executable is: the build tree mirrors the install, so one rule serves both.
+edgetrack::Result<std::string> path_from_executable(const std::string& relative);
+
 /// An Error naming `source` when a model vertex is not in front of the camera (Z <= 1 mm).
 edgetrack::Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
                                        const std::string& source);

@@ -27,6 +27,13 @@ std::string data_dir() {
   return EDGETRACK_DATA_DIR;
 }
 
+Result<std::string> path_from_executable(const std::string& relative) {
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return Error{"/proc/self/exe", 0, "cannot tell where edgetrack runs from: " + error.message()};
+  return (executable.parent_path() / relative).lexically_normal().string();
+}
+
 Result<bool> check_in_front(const edgetrack::EdgeModel& model, const edgetrack::Se3& camera_from_model,
                             const std::string& source) {
   for (size_t i = 0; i < model.vertices.size(); ++i) {

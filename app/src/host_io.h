@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// What the host build adds to frame I/O through OpenCV: reading any image format, video files
-/// and cameras, writing PNG and video. The ARM build links host_io_none.cpp instead, whose
+/// and cameras, writing PNG and video. In the host build `edgetrack` reaches them through the
+/// host extras plugin (host_extras.h); the ARM build links host_none.cpp instead, whose
 /// functions say that the format needs the host build.
 #pragma once
 

@@ -13,9 +13,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <vector>
 
+#include "commands.h"
 #include "edgetrack/pose_io.h"
 
 using edgetrack::Error;
@@ -24,11 +24,9 @@ using edgetrack::Result;
 namespace edgetrack_app {
 
 Result<std::string> find_visp_worker() {
-  std::error_code error;
-  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) return Error{"/proc/self/exe", 0, "cannot tell where edgetrack runs from: " + error.message()};
-  const std::string worker =
-      (executable.parent_path() / EDGETRACK_VISP_WORKER_FROM_BINDIR).lexically_normal().string();
+  auto found = path_from_executable(EDGETRACK_VISP_WORKER_FROM_BINDIR);
+  if (!found.ok()) return found;
+  const std::string worker = found.value();
   if (access(worker.c_str(), X_OK) != 0)
     return Error{worker, 0, "ViSP's tracker program is missing (it is installed with edgetrack compare, beside it)"};
   return worker;

@@ -229,6 +229,29 @@ if [ "$mode" = prefix ] && [ -z "$toolchain" ] && "$prefix/bin/edgetrack" compar
   echo "compare: installed, moved with its prefix, runs its ViSP child from libexec/edgetrack"
 fi
 
+# The host extras plugin (host): installed under libexec/edgetrack and loaded from the running
+# executable's place when an option needs OpenCV or OSMesa, with the prefix moved too; image
+# files need no plugin, and without it the option that needed it is named in one line.
+if [ "$mode" = prefix ] && [ -z "$toolchain" ] && [ -e "$prefix/libexec/edgetrack/edgetrack-host.so" ]; then
+  rm -rf "$work/moved" && cp -a "$prefix" "$work/moved"
+  track_moved() {
+    "$work/moved/bin/edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --last 2 --quiet "$@"
+  }
+  track_moved --overlay "$work/moved_overlay" >/dev/null || fail "the moved edgetrack does not load its host extras plugin"
+  [ "$(ls "$work"/moved_overlay/overlay*.png | wc -l)" -eq 3 ] || fail "the moved edgetrack wrote no PNG overlay"
+  rm "$work/moved/libexec/edgetrack/edgetrack-host.so"
+  track_moved --poses "$work/moved.csv" >/dev/null || fail "PGM frames need the host extras plugin"
+  if track_moved --overlay "$work/moved_overlay2" >/dev/null 2>"$work/plugin.err"; then
+    fail "--overlay ran without the host extras plugin"
+  fi
+  cat "$work/plugin.err"
+  [ "$(wc -l <"$work/plugin.err")" -eq 1 ] &&
+    grep -qF "$work/moved/libexec/edgetrack/edgetrack-host.so: drawing the overlay (--overlay, --video) needs the host extras plugin, which is missing" \
+      "$work/plugin.err" || fail "no one-line message naming the missing plugin"
+  echo "host extras: installed, loaded from libexec/edgetrack when an option needs them"
+fi
+
 # Programs written for upstream VXL and ViSP build unchanged on edgetrack::vnl_algo / visp_me.
 if [ "$mode" = prefix ]; then
   configure "$source/tests/install/upstream_api" "$work/upstream_api" >"$work/upstream_api.log" 2>&1 &&

@@ -72,5 +72,8 @@ install(TARGETS edgetrack RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT 
 if(TARGET edgetrack-visp-mbt)
   install(TARGETS edgetrack-visp-mbt RUNTIME DESTINATION ${EDGETRACK_INSTALL_LIBEXECDIR} COMPONENT tools)
 endif()
+if(TARGET edgetrack-host)
+  install(TARGETS edgetrack-host LIBRARY DESTINATION ${EDGETRACK_INSTALL_LIBEXECDIR} COMPONENT tools)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/models DESTINATION ${EDGETRACK_INSTALL_DATADIR} COMPONENT tools)
 include(${CMAKE_CURRENT_LIST_DIR}/edgetrack_package_identity.cmake)

@@ -20,6 +20,9 @@ endforeach()
 # libraries: a static ARM executable has no RUNPATH entry for the install to rewrite.
 if(BUILD_SHARED_LIBS)
   set_target_properties(edgetrack PROPERTIES INSTALL_RPATH "$ORIGIN/${EDGETRACK_INSTALL_LIBDIR_FROM_BINDIR}")
+  if(TARGET edgetrack-host)
+    set_target_properties(edgetrack-host PROPERTIES INSTALL_RPATH "$ORIGIN/${EDGETRACK_INSTALL_LIBDIR_FROM_LIBEXECDIR}")
+  endif()
 endif()
 
 set(EDGETRACK_MAINTAINER "edgetrack developers <edgetrack-dev@users.noreply.github.com>")

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Host-only options of `edgetrack track`, one case per call: track_host_test.sh EDGETRACK TMPDIR CASE.
 # --visibility (GL Edge-ID from the command line, a bad value refused) and --init-click, clicked
-# for real in a window on a virtual X display (Xvfb) with xdotool.
+# for real in a window on a virtual X display (Xvfb) with xdotool. The lean command: the host
+# libraries come in only through the host extras plugin, whose absence is one line.
 set -u
 edgetrack=$1
 work=$2/$3
@@ -176,6 +177,29 @@ case $name in
       echo "$rerun: largest difference to the clicked run $mm mm, $deg deg (real $real: within $bound_mm mm, $bound_deg deg)"
       less "$mm" "$bound_mm" && less "$deg" "$bound_deg" || fail "the $rerun rerun does not repeat the clicked run"
     done ;;
+  lean_command_needs_no_host_library)
+    needed=$(readelf -d "$edgetrack" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' | tr '\n' ' ')
+    echo "edgetrack needs: $needed"
+    [ -n "$needed" ] || fail "readelf lists no library"
+    ! printf '%s\n' $needed | grep -E 'opencv|OSMesa|X11|visp|Qt|gdal|LLVM' || fail "edgetrack links a host library"
+    plugin=$(dirname "$edgetrack")/../libexec/edgetrack/edgetrack-host.so
+    readelf -d "$plugin" | grep -q 'NEEDED.*opencv' || fail "the host extras plugin $plugin does not carry OpenCV"
+    echo "ok: OpenCV, OSMesa and X11 only in the plugin" ;;
+  missing_host_extras_named)
+    mkdir -p "$work/bin" && cp "$edgetrack" "$work/bin/edgetrack"
+    lean=$work/bin/edgetrack
+    "$lean" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --last 4 --poses "$work/poses.csv" --quiet || fail "PGM frames need the plugin"
+    [ "$(wc -l <"$work/poses.csv")" -eq 6 ] || fail "expected 5 poses"
+    missing="$work/libexec/edgetrack/edgetrack-host.so: drawing the overlay (--overlay, --video) needs the host extras plugin, which is missing"
+    expect_error "$missing" "$lean" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --last 2 --video "$work/out.mp4"
+    [ ! -e "$work/out.mp4" ] || fail "a video was written"
+    expect_error "edgetrack-host.so: synth needs the host extras plugin, which is missing" "$lean" synth --out "$work/seq"
+    cut -d, -f1-7 "$work/poses.csv" >"$work/truth.csv"
+    expect_error "--plots needs the host extras plugin, which is missing" "$lean" eval --poses "$work/poses.csv" \
+      --truth "$work/truth.csv" --plots "$work"
+    echo "ok: image files tracked without the plugin, each option that needs it named" ;;
   *)
     fail "unknown case" ;;
 esac
