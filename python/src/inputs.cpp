@@ -61,6 +61,10 @@ Se3 pose_of(const py::array_t<double, py::array::forcecast>& matrix) {
     raise("a pose is a 4x4 homogeneous matrix (camera_from_model), not an array of shape " +
           std::string(py::str(py::tuple(matrix.attr("shape")))));
   auto m = matrix.unchecked<2>();
+  // Checked here, in double: a fixed-point `real` has no NaN to carry the fault to the tracker's door.
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      if (!std::isfinite(m(r, c))) raise("a pose matrix's values must be finite (row " + std::to_string(r) + ", column " + std::to_string(c) + ")");
   for (int c = 0; c < 4; ++c)
     if (!(std::fabs(m(3, c) - (c == 3 ? 1.0 : 0.0)) <= kPoseMatrixTolerance))
       raise("a pose matrix's last row must be 0 0 0 1");

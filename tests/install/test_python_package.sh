@@ -40,5 +40,5 @@ loaded=$(env -u PYTHONHOME PYTHONPATH="$site" "$python" -c 'import edgetrack; pr
 PYTHONPATH="$site" "$python" "$source/examples/python/track_sequence.py" "$visp/mbt/cube.cao" "$visp/mbt/cube.xml" \
   "$visp/mbt/cube.0.pos" "$visp/mbt/cube/image%04d.pgm" 0 4 --poses "$work/poses.csv" >"$work/track.log" ||
   fail "track_sequence.py failed: $(cat "$work/track.log")"
-[ "$(grep -c ',tracked$' "$work/poses.csv")" = 5 ] || fail "the installed module did not track the 5 frames: $(cat "$work/poses.csv")"
+[ "$(grep -c ',tracked,' "$work/poses.csv")" = 5 ] || fail "the installed module did not track the 5 frames: $(cat "$work/poses.csv")"
 echo "$mode: the module loads from $site and tracks"

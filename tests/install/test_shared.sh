@@ -9,7 +9,7 @@ source=$1 work=$2
 shift 2
 tree=$work/tree
 mkdir -p "$work"
-cmake -S "$source" -B "$tree" -G Ninja -DBUILD_SHARED_LIBS=ON -DEDGETRACK_HOST_EXTRAS=OFF -DEDGETRACK_REAL="$2" \
+cmake -S "$source" -B "$tree" -G Ninja -DBUILD_SHARED_LIBS=ON -DEDGETRACK_HOST_EXTRAS=OFF -DEDGETRACK_PYTHON=OFF -DEDGETRACK_REAL="$2" \
   -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
 cmake --build "$tree" --target edgetrack testlib -j2 >"$work/build.log" 2>&1 || { tail -n 40 "$work/build.log"; exit 1; }
 exec "$(dirname "$0")/test_package.sh" prefix "$tree" "$source" "$work/prefix" "$@" none
