@@ -78,7 +78,15 @@ class Inputs(unittest.TestCase):
         t, tu = edgetrack.theta_u_of(pose)
         np.testing.assert_allclose(tu, numbers[3:], atol=TOLERANCE)
         np.testing.assert_allclose(edgetrack.pose_from_theta_u(t, tu), pose, atol=TOLERANCE)
-        matrix = write("pose.txt", "\n".join(" ".join("%.17g" % x for x in row) for row in pose) + "\n")
+        # The file's matrix made in double from the .pos values (Rodrigues), as a user's file is: a
+        # pose printed from a fixed-point `real` is a rotation only to the real's step.
+        theta = np.linalg.norm(numbers[3:])
+        k = np.array(numbers[3:]) / theta
+        cross = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+        exact = np.eye(4)
+        exact[:3, :3] = np.eye(3) + np.sin(theta) * cross + (1 - np.cos(theta)) * cross @ cross
+        exact[:3, 3] = numbers[:3]
+        matrix = write("pose.txt", "\n".join(" ".join("%.17g" % x for x in row) for row in exact) + "\n")
         np.testing.assert_allclose(edgetrack.read_pose(matrix), pose, atol=TOLERANCE)
 
     def test_errors_are_the_command_lines(self):
