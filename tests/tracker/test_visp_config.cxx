@@ -177,6 +177,12 @@ void bad_values() {
   refused("huge_px.xml", "<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n", 3, "<camera><px>");
   refused("far_u0.xml", "<conf>\n<camera>\n<u0>-2e6</u0>\n</camera>\n</conf>\n", 3, "<camera><u0>");
   refused("width.xml", "<conf>\n<camera>\n<width>wide</width>\n</camera>\n</conf>\n", 3, "<camera><width>");
+  // A calibration file (vpXmlParserCamera) given as the tracker's configuration: its intrinsics
+  // are in <model>, so it is refused with the option that reads it rather than tracked with none.
+  refused("calibration.xml",
+          "<root>\n<camera>\n<name>Camera</name>\n<image_width>640</image_width>\n<image_height>480</image_height>\n"
+          "<model>\n<type>perspectiveProjWithoutDistortion</type>\n<px>600</px>\n</model>\n</camera>\n</root>\n",
+          6, "--intrinsics");
   // Intrinsics and sizes inside the bounds every other input has: a focal length or principal
   // point beyond a million pixels, a side beyond an image file's 16384, more than 64 M pixels.
   refused("huge_px.xml", "<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n", 3, "<camera><px>");

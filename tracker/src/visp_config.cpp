@@ -103,6 +103,11 @@ class Reading {
     notes_.camera_block = true;
     for (const XmlElement& e : block.children) {
       const std::string where = "<camera><" + e.name + ">";
+      // vpXmlParserCamera's layout: its intrinsics sit inside <model>, where a tracker
+      // configuration has none, so reading on would keep the default camera unnoticed.
+      if (e.name == "model")
+        return bad(e, where, "is a camera-calibration file's (vpXmlParserCamera): give that file as --intrinsics "
+                             "(read_camera_file), or px, py, u0, v0 directly in <camera>");
       real* value = e.name == "px" ? &config_.camera.px : e.name == "py" ? &config_.camera.py
                     : e.name == "u0" ? &config_.camera.u0 : e.name == "v0" ? &config_.camera.v0 : nullptr;
       int* size = e.name == "width" || e.name == "image_width"     ? &config_.camera.width
