@@ -25,6 +25,7 @@
 #include "host_io.h"
 #include "pose_table.h"
 #include "trajectory.h"
+#include "visp_lens_fit.h"
 
 using edgetrack::Error;
 using edgetrack::PinholeCamera;
@@ -96,23 +97,6 @@ struct SynthOptions {
   ExposureSchedule exposure;  ///< --exposure: brightness over the sequence
   int jpeg_quality = 0;       ///< --jpeg: 0 for none
 };
-
-/// ViSP's kdu for a lens with kud: the least-squares inverse x = x_d (1 + kdu r_d^2) over a grid
-/// of the image's pixels (ViSP's calibration estimates both; a generated sequence has kud alone).
-double fitted_kdu(const PinholeCamera& camera) {
-  double along = 0, square = 0;
-  for (int j = 0; j <= 16; ++j)
-    for (int i = 0; i <= 16; ++i) {
-      const edgetrack::Vec2 d = camera.to_normalised({real(camera.width * i / 16.0), real(camera.height * j / 16.0)});
-      const edgetrack::Vec2 n = camera.invert_distortion(d);
-      const edgetrack::Vec2 miss = camera.distort(n) - d;
-      if (std::fabs(static_cast<double>(miss.x)) + std::fabs(static_cast<double>(miss.y)) > 1e-6) continue;  // beyond the fold
-      const double xd = static_cast<double>(d.x), yd = static_cast<double>(d.y), r2 = xd * xd + yd * yd;
-      along += xd * r2 * (static_cast<double>(n.x) - xd) + yd * r2 * (static_cast<double>(n.y) - yd);
-      square += (xd * r2) * (xd * r2) + (yd * r2) * (yd * r2);
-    }
-  return square > 0 ? along / square : 0;
-}
 
 /// The image `pinhole` (drawn with lens.pinhole_camera()) as `camera`'s lens shows it.
 RgbImage through_lens(const edgetrack::LensResampling& lens, const PinholeCamera& camera, const RgbImage& pinhole) {
@@ -420,8 +404,11 @@ int synth_main(int argc, char** argv) {
 }  // namespace
 
 std::vector<Command> host_commands() {
-  return {{"synth", "render a ground-truth sequence with OSMesa (frames, truth.csv, first pose, camera)", synth_main},
-          {"edgeid", "portable Edge-ID against Edge-ID through GL; colour-code approximation in RGB565", edgeid_main}};
+  std::vector<Command> commands = {
+      {"synth", "render a ground-truth sequence with OSMesa (frames, truth.csv, first pose, camera)", synth_main},
+      {"edgeid", "portable Edge-ID against Edge-ID through GL; colour-code approximation in RGB565", edgeid_main}};
+  for (const Command& c : calibration_commands()) commands.push_back(c);
+  return commands;
 }
 
 }  // namespace edgetrack_app

@@ -30,6 +30,8 @@ int templates_main(int argc, char** argv);
 /// Commands that need host libraries (OSMesa, OpenCV); empty in the ARM build.
 std::vector<Command> host_commands();
 int edgeid_main(int argc, char** argv);
+/// `calibrate` (cmd_calibrate.cpp, host): one of the host commands.
+std::vector<Command> calibration_commands();
 /// `compare`, when ViSP's mbt module was found at configure time (else empty).
 std::vector<Command> comparison_commands();
 
@@ -57,5 +59,10 @@ edgetrack::Result<bool> write_camera_xml(const std::string& path, const edgetrac
 /// `camera` (ViSP's lens or none) as ViSP's vpXmlParserCamera writes a camera file: the model
 /// without distortion, and with it when the camera has ViSP's lens.
 edgetrack::Result<bool> write_visp_camera_file(const std::string& path, const edgetrack::PinholeCamera& camera);
+/// A ViSP camera file named `name` with the model `without_distortion` and, when
+/// `with_distortion` has ViSP's lens, that model too (a calibration estimates each on its own).
+edgetrack::Result<bool> write_visp_camera_file(const std::string& path, const std::string& name,
+                                               const edgetrack::PinholeCamera& without_distortion,
+                                               const edgetrack::PinholeCamera& with_distortion);
 
 }  // namespace edgetrack_app

@@ -72,23 +72,33 @@ Result<bool> write_camera_xml(const std::string& path, const edgetrack::PinholeC
 }
 
 Result<bool> write_visp_camera_file(const std::string& path, const edgetrack::PinholeCamera& camera) {
+  return write_visp_camera_file(path, "Camera", camera, camera);
+}
+
+Result<bool> write_visp_camera_file(const std::string& path, const std::string& name,
+                                    const edgetrack::PinholeCamera& without_distortion,
+                                    const edgetrack::PinholeCamera& with_distortion) {
   std::FILE* file = std::fopen(path.c_str(), "w");
   if (!file) return Error{path, 0, "cannot open the file for writing"};
-  const double px = static_cast<double>(camera.px), py = static_cast<double>(camera.py);
-  const double u0 = static_cast<double>(camera.u0), v0 = static_cast<double>(camera.v0);
+  const auto model = [file](const char* type, const edgetrack::PinholeCamera& c) {
+    return std::fprintf(file,
+                        "    <model>\n      <type>%s</type>\n      <px>%.10g</px>\n      <py>%.10g</py>\n"
+                        "      <u0>%.10g</u0>\n      <v0>%.10g</v0>\n",
+                        type, static_cast<double>(c.px), static_cast<double>(c.py), static_cast<double>(c.u0),
+                        static_cast<double>(c.v0)) > 0;
+  };
   bool ok = std::fprintf(file,
-                         "<?xml version=\"1.0\"?>\n<root>\n  <camera>\n    <name>Camera</name>\n"
-                         "    <image_width>%d</image_width>\n    <image_height>%d</image_height>\n"
-                         "    <model>\n      <type>perspectiveProjWithoutDistortion</type>\n      <px>%.10g</px>\n"
-                         "      <py>%.10g</py>\n      <u0>%.10g</u0>\n      <v0>%.10g</v0>\n    </model>\n",
-                         camera.width, camera.height, px, py, u0, v0) > 0;
-  if (camera.lens.model == edgetrack::LensModel::kVisp)
-    ok = std::fprintf(file,
-                      "    <model>\n      <type>perspectiveProjWithDistortion</type>\n      <px>%.10g</px>\n"
-                      "      <py>%.10g</py>\n      <u0>%.10g</u0>\n      <v0>%.10g</v0>\n      <kud>%.10g</kud>\n"
-                      "      <kdu>%.10g</kdu>\n    </model>\n",
-                      px, py, u0, v0, static_cast<double>(camera.lens.kud), static_cast<double>(camera.lens.kdu)) > 0 &&
+                         "<?xml version=\"1.0\"?>\n<root>\n  <camera>\n    <name>%s</name>\n"
+                         "    <image_width>%d</image_width>\n    <image_height>%d</image_height>\n",
+                         name.c_str(), without_distortion.width, without_distortion.height) > 0;
+  ok = model("perspectiveProjWithoutDistortion", without_distortion) && ok;
+  ok = std::fprintf(file, "    </model>\n") > 0 && ok;
+  if (with_distortion.lens.model == edgetrack::LensModel::kVisp) {
+    ok = model("perspectiveProjWithDistortion", with_distortion) && ok;
+    ok = std::fprintf(file, "      <kud>%.10g</kud>\n      <kdu>%.10g</kdu>\n    </model>\n",
+                      static_cast<double>(with_distortion.lens.kud), static_cast<double>(with_distortion.lens.kdu)) > 0 &&
          ok;
+  }
   ok = std::fprintf(file, "  </camera>\n</root>\n") > 0 && ok;
   ok = (std::fclose(file) == 0) && ok;
   if (!ok) return Error{path, 0, "write failed"};

@@ -41,7 +41,7 @@ Result<const HostExtras*> host_extras(const std::string& what) {
   return Error{loaded.error().file, 0, what + " needs the host extras plugin, which " + loaded.error().message};
 }
 
-/// `synth` and `edgeid` run the plugin's command of the same name.
+/// `synth`, `edgeid` and `calibrate` run the plugin's command of the same name.
 int run_host_command(int argc, char** argv) {
   auto extras = host_extras(argv[0]);
   if (!extras.ok()) return report(argv[0], extras.error());
@@ -112,7 +112,9 @@ Result<edgetrack::Se3> click_initial_pose(const ClickInitOptions& options, const
 // The summaries are listed here so that `edgetrack --help` does not load the plugin.
 std::vector<Command> host_commands() {
   return {{"synth", "render a ground-truth sequence with OSMesa (frames, truth.csv, first pose, camera)", run_host_command},
-          {"edgeid", "portable Edge-ID against Edge-ID through GL; colour-code approximation in RGB565", run_host_command}};
+          {"edgeid", "portable Edge-ID against Edge-ID through GL; colour-code approximation in RGB565", run_host_command},
+          {"calibrate", "a camera's intrinsics and lens from frames of a chessboard or circle grid (ViSP and OpenCV files)",
+           run_host_command}};
 }
 
 }  // namespace edgetrack_app

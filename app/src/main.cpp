@@ -28,6 +28,6 @@ int main(int argc, char** argv) {
   if (argc >= 2 && !asked) std::fprintf(stderr, "edgetrack: unknown command '%s'\n", argv[1]);
   std::fprintf(out, "usage: edgetrack COMMAND [options]   (edgetrack COMMAND --help for its options)\n"
                     "       edgetrack --version\n");
-  for (const Command& c : commands) std::fprintf(out, "  %-8s %s\n", c.name, c.summary);
+  for (const Command& c : commands) std::fprintf(out, "  %-9s %s\n", c.name, c.summary);
   return asked ? 0 : 2;
 }
