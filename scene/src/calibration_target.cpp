@@ -66,35 +66,43 @@ bool CalibrationTarget::dark(const real& x, const real& y) const {
   return false;
 }
 
-std::vector<uint8_t> render_target(const CalibrationTarget& target, const PinholeCamera& camera,
-                                   const Se3& camera_from_target, int samples) {
-  std::vector<uint8_t> image(static_cast<size_t>(camera.width) * camera.height, kOff);
+TargetRenderer::TargetRenderer(const PinholeCamera& camera, int samples)
+    : width_(camera.width), height_(camera.height), samples_(samples) {
+  rays_.reserve(static_cast<size_t>(width_) * height_ * samples * samples);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x)
+      for (int s = 0; s < samples * samples; ++s) {
+        const Vec2 pixel{real(x) + (real(s % samples) + real(0.5)) / real(samples) - real(0.5),
+                         real(y) + (real(s / samples) + real(0.5)) / real(samples) - real(0.5)};
+        rays_.push_back(camera.invert_distortion(camera.to_normalised(pixel)));
+      }
+}
+
+std::vector<uint8_t> TargetRenderer::render(const CalibrationTarget& target, const Se3& camera_from_target) const {
+  std::vector<uint8_t> image(static_cast<size_t>(width_) * height_, kOff);
   // The plane z = 0 of the target in the camera frame: through `origin`, normal `normal`.
   const Mat33& rotation = camera_from_target.rotation();
   const Vec3& origin = camera_from_target.translation();
   const Vec3 normal = rotation * Vec3{real(0), real(0), real(1)};
   const Mat33 target_from_camera = rotation.transpose();
   const real reach = dot(normal, origin);
-  const int count = samples * samples;
-  for (int y = 0; y < camera.height; ++y)
-    for (int x = 0; x < camera.width; ++x) {
-      int sum = 0;
-      for (int s = 0; s < count; ++s) {
-        const Vec2 pixel{real(x) + (real(s % samples) + real(0.5)) / real(samples) - real(0.5),
-                         real(y) + (real(s / samples) + real(0.5)) / real(samples) - real(0.5)};
-        const Vec2 n = camera.invert_distortion(camera.to_normalised(pixel));
-        const Vec3 ray{n.x, n.y, real(1)};
-        const real facing = dot(normal, ray);
-        const real depth = facing == real(0) ? real(-1) : reach / facing;
-        if (depth <= real(0)) {
-          sum += kOff;
-          continue;
-        }
-        const Vec3 p = target_from_camera * (depth * ray - origin);
-        sum += !target.on_target(p.x, p.y) ? kOff : target.dark(p.x, p.y) ? kDark : kWhite;
+  const int count = samples_ * samples_;
+  for (size_t pixel = 0; pixel < image.size(); ++pixel) {
+    int sum = 0;
+    for (int s = 0; s < count; ++s) {
+      const Vec2& n = rays_[pixel * count + s];
+      const Vec3 ray{n.x, n.y, real(1)};
+      const real facing = dot(normal, ray);
+      const real depth = facing == real(0) ? real(-1) : reach / facing;
+      if (depth <= real(0)) {
+        sum += kOff;
+        continue;
       }
-      image[static_cast<size_t>(y) * camera.width + x] = static_cast<uint8_t>((sum + count / 2) / count);
+      const Vec3 p = target_from_camera * (depth * ray - origin);
+      sum += !target.on_target(p.x, p.y) ? kOff : target.dark(p.x, p.y) ? kDark : kWhite;
     }
+    image[pixel] = static_cast<uint8_t>((sum + count / 2) / count);
+  }
   return image;
 }
 

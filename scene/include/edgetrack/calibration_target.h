@@ -37,11 +37,18 @@ struct CalibrationTarget {
   bool on_target(const real& x, const real& y) const;
 };
 
-/// The grey image (row-major, width x height of `camera`) of `target` at `camera_from_target`
-/// seen through `camera` and its lens: each of samples x samples samples of a pixel is the ray
-/// the lens's exact inverse gives, met with the target's plane (dark 20, white 235, off the
-/// target 128), averaged.
-std::vector<uint8_t> render_target(const CalibrationTarget& target, const PinholeCamera& camera,
-                                   const Se3& camera_from_target, int samples);
+/// Grey images (row-major, width x height of the camera) of calibration targets seen through a
+/// camera and its lens: each of samples x samples samples of a pixel is the ray the lens's exact
+/// inverse gives (worked out once, for every view), met with the target's plane: dark 20, white
+/// 235, off the target 128; the samples averaged.
+class TargetRenderer {
+ public:
+  TargetRenderer(const PinholeCamera& camera, int samples);
+  std::vector<uint8_t> render(const CalibrationTarget& target, const Se3& camera_from_target) const;
+
+ private:
+  int width_, height_, samples_;
+  std::vector<Vec2> rays_;  ///< normalised (x, y) of each sample, pixel by pixel, row by row
+};
 
 }  // namespace edgetrack

@@ -158,10 +158,11 @@ std::string render_frames(const std::string& dir, const CalibrationTarget& targe
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   TEST("the pattern fits the image in every planned view", views.size(), 24u);
+  const edgetrack::TargetRenderer renderer(camera, 4);
   char name[32];
   for (size_t k = 0; k <= views.size(); ++k) {
     const std::vector<uint8_t> grey =
-        k < views.size() ? edgetrack::render_target(target, camera, views[k], 4)
+        k < views.size() ? renderer.render(target, views[k])
                          : std::vector<uint8_t>(static_cast<size_t>(camera.width) * camera.height, 128);
     RgbImage image = make_image(camera.width, camera.height);
     for (size_t i = 0; i < grey.size(); ++i) std::fill_n(&image.rgb[3 * i], 3, grey[i]);
@@ -265,5 +266,20 @@ static void test_calibrate() {
   tangential.lens.p1 = real(0.0015);
   tangential.lens.p2 = real(-0.001);
   calibrate_and_check("chessboard_opencv_lens", chessboard, tangential, "chessboard", "9x6", "0.02", false);
+
+  // Circle grids: 6 x 6 circles 20 mm apart (ViSP's grid2d layout) through the wide lens, and
+  // OpenCV's asymmetric 4 x 11 grid through the tangential one.
+  CalibrationTarget circles;
+  circles.kind = TargetKind::kCircles;
+  circles.columns = 6;
+  circles.rows = 6;
+  calibrate_and_check("circles_visp_lens", circles, wide, "circles", "6x6", "0.02", true);
+  CalibrationTarget asymmetric;
+  asymmetric.kind = TargetKind::kAsymmetricCircles;
+  asymmetric.columns = 4;
+  asymmetric.rows = 11;
+  asymmetric.spacing = real(0.01);
+  calibrate_and_check("asymmetric_circles_opencv_lens", asymmetric, tangential, "asymmetric-circles", "4x11", "0.01",
+                      false);
 }
 TESTMAIN(test_calibrate);
