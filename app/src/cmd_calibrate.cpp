@@ -27,11 +27,12 @@ CommandLine calibrate_command_line() {
   return {
       "calibrate",
       "--images PATTERN|DIR|VIDEO --count COLUMNSxROWS --spacing M --visp FILE --opencv FILE "
-      "[--target chessboard|circles|asymmetric-circles] [--first N] [--last N] [--name NAME] [--k3] [--overlay DIR]",
+      "[--target chessboard|circles|asymmetric-circles] [--first N] [--last N] [--step N] [--name NAME] [--k3] [--overlay DIR]",
       {
           {"--images", "PATTERN|DIR|VIDEO", "the frames: printf pattern, directory or video file", ""},
           {"--first", "N", "first frame number", ""},
           {"--last", "N", "last frame number", ""},
+          {"--step", "N", "use every Nth frame from the first (a video's neighbouring frames show the same view)", "1"},
           {"--target", "chessboard|circles|asymmetric-circles", "the calibration target", "chessboard"},
           {"--count", "COLUMNSxROWS", "inner corners (chessboard) or circles along a row x along a column", ""},
           {"--spacing", "M", "metres: a square's side, or between neighbouring circles (asymmetric: between rows)", ""},
@@ -78,16 +79,17 @@ struct Detections {
 };
 
 /// Reads every frame, finds the target in it, and draws it into `overlay_dir` when given.
-Result<Detections> detect_in_frames(const SourceOptions& source, const CalibrationTarget& target,
+Result<Detections> detect_in_frames(const SourceOptions& source, int step, const CalibrationTarget& target,
                                     const std::string& overlay_dir) {
   auto frames = open_frame_source(source);
   if (!frames.ok()) return frames.error();
   Detections d;
   Frame frame;
-  for (;;) {
+  for (int read = 0;; ++read) {
     auto next = frames.value()->next(frame);
     if (!next.ok()) return next.error();
     if (!next.value()) break;
+    if (read % step != 0) continue;
     if (d.width == 0) d.width = frame.pixels.width, d.height = frame.pixels.height;
     if (frame.pixels.width != d.width || frame.pixels.height != d.height)
       return Error{frame.name, 0, "is " + std::to_string(frame.pixels.width) + "x" + std::to_string(frame.pixels.height) +
@@ -155,8 +157,10 @@ int calibrate_main(int argc, char** argv) {
   SourceOptions source;
   source.images = a.text("--images");
   auto first = a.frame_number("--first"), last = a.frame_number("--last");
-  for (const Error* bad : {&first.error(), &last.error()})
+  auto step = a.integer("--step");
+  for (const Error* bad : {&first.error(), &last.error(), &step.error()})
     if (!bad->message.empty()) return report("calibrate", *bad) + 1;
+  if (step.value() < 1) return report("calibrate", {"", 0, "--step must be 1 or more"}) + 1;
   source.first = first.value(), source.last = last.value();
 
   const std::string overlay_dir = a.text("--overlay");
@@ -165,7 +169,7 @@ int calibrate_main(int argc, char** argv) {
     auto marked = write_text_file(overlay_dir + "/" + kIncompleteMarker, "calibrate has not finished\n");
     if (!marked.ok()) return report("calibrate", marked.error());
   }
-  auto detections = detect_in_frames(source, target.value(), overlay_dir);
+  auto detections = detect_in_frames(source, step.value(), target.value(), overlay_dir);
   if (!detections.ok()) return report("calibrate", detections.error());
   const Detections& d = detections.value();
   if (d.views.size() < 3) {

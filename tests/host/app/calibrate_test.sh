@@ -63,6 +63,9 @@ case $name in
     grep -q "^calibrate: rejected grid36-05.pgm: target not found" "$work/out.txt" ||
       grep -q "^calibrate: rejected .*grid36-05.pgm: target not found" "$work/out.txt" || fail "the frame without the grid is not named"
     grep -q "^calibrate: frames=4 rejected=1 " "$work/out.txt" || fail "expected 4 frames kept, 1 rejected"
+    # Every second frame: grid36-01, -03 and the frame without the grid, too few.
+    expect_error "the target is in 2 frames, 3 or more are needed (not found in: $work/frames/grid36-05.pgm)" \
+      calibrate_grids --images "$work/frames" --step 2
     echo "ok: the frame without the target named" ;;
   error_calibrate_missing_options)
     expect_usage_error "edgetrack calibrate: --count is required
@@ -74,6 +77,7 @@ edgetrack calibrate: --opencv is required" \
     expect_error "--target 'dots': expected chessboard, circles or asymmetric-circles" \
       calibrate_grids --images "$grids/grid36-%02d.pgm" --target dots
     expect_error "--spacing must be 0.0001..10 metres" calibrate_grids --images "$grids/grid36-%02d.pgm" --spacing 0
+    expect_error "--step must be 1 or more" calibrate_grids --images "$grids/grid36-%02d.pgm" --step 0
     [ ! -e "$work/camera.xml" ] && [ ! -e "$work/camera.yaml" ] || fail "a refused run wrote a file" ;;
   error_calibrate_target_not_found)
     # The chessboard asked for is in none of them: nothing written.
