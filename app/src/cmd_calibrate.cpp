@@ -12,6 +12,7 @@
 #include "calibration.h"
 #include "commands.h"
 #include "edgetrack/calibration_target.h"
+#include "edgetrack/grey_conversion.h"
 #include "frame_source.h"
 #include "host_io.h"
 
@@ -94,12 +95,12 @@ Result<Detections> detect_in_frames(const SourceOptions& source, int step, const
     if (frame.pixels.width != d.width || frame.pixels.height != d.height)
       return Error{frame.name, 0, "is " + std::to_string(frame.pixels.width) + "x" + std::to_string(frame.pixels.height) +
                                       ", the first frame " + std::to_string(d.width) + "x" + std::to_string(d.height)};
-    RgbImage image = to_rgb_image(frame.pixels.view());
-    std::vector<uint8_t> grey(static_cast<size_t>(image.width) * image.height);
-    for (size_t i = 0; i < grey.size(); ++i)  // vpImageConvert's luma, as the tracker's grey
-      grey[i] = static_cast<uint8_t>((299 * image.rgb[3 * i] + 587 * image.rgb[3 * i + 1] + 114 * image.rgb[3 * i + 2] + 500) / 1000);
-    std::vector<PixelPoint> points = find_target(target, grey.data(), image.width, image.height);
+    // The grey the tracker reads (vpImageConvert's rule), so the target is found in what tracks.
+    vpImage<unsigned char> grey(static_cast<unsigned>(d.height), static_cast<unsigned>(d.width));
+    edgetrack::convert_to_grey(frame.pixels.view(), {0, 0, d.height, d.width}, grey);
+    std::vector<PixelPoint> points = find_target(target, grey.bitmap, d.width, d.height);
     if (!overlay_dir.empty()) {
+      RgbImage image = to_rgb_image(frame.pixels.view());
       if (!points.empty()) draw_target_points(image, target, points);
       char name[32];
       std::snprintf(name, sizeof name, "/overlay%04d.png", frame.index);
