@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "calibration.h"
 #include "visp_lens_fit.h"
@@ -117,7 +118,7 @@ Result<Calibration> calibrate_views(const edgetrack::CalibrationTarget& target,
     c.visp.camera.lens.kdu = real(fitted_kdu(c.visp.camera));
     c.visp_pinhole = run_calibration(object, image, width, height, radial_only | cv::CALIB_FIX_K1, coefficients);
   } catch (const cv::Exception& e) {
-    return Error{"", 0, std::string("OpenCV's calibration failed: ") + e.what()};
+    return Error{"", 0, std::string("OpenCV's calibration failed: ") + e.err};
   }
   return c;
 }
@@ -128,6 +129,10 @@ Result<bool> write_opencv_calibration(const std::string& path, const CalibratedM
                      static_cast<double>(c.py), static_cast<double>(c.v0), 0, 0, 1);
   const cv::Mat d = (cv::Mat_<double>(5, 1) << static_cast<double>(c.lens.k1), static_cast<double>(c.lens.k2),
                      static_cast<double>(c.lens.p1), static_cast<double>(c.lens.p2), static_cast<double>(c.lens.k3));
+  // Opened once by us first: cv::FileStorage would log its own line about a path it cannot open.
+  std::FILE* probe = std::fopen(path.c_str(), "w");
+  if (!probe) return Error{path, 0, "cannot open the file for writing"};
+  std::fclose(probe);
   try {
     // The format is named, not taken from the name's extension: the file is written as NAME.partial.
     cv::FileStorage file(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
@@ -136,7 +141,7 @@ Result<bool> write_opencv_calibration(const std::string& path, const CalibratedM
          << "camera_matrix" << k << "distortion_coefficients" << d << "avg_reprojection_error" << model.rms_px;
     file.release();
   } catch (const cv::Exception& e) {
-    return Error{path, 0, std::string("write failed: ") + e.what()};
+    return Error{path, 0, std::string("write failed: ") + e.err};
   }
   return true;
 }

@@ -190,7 +190,10 @@ int calibrate_main(int argc, char** argv) {
   auto opencv = write_atomically(a.text("--opencv"), [&](const std::string& path) {
     return write_opencv_calibration(path, c.opencv, static_cast<int>(d.views.size()));
   });
-  if (!opencv.ok()) return report("calibrate", opencv.error());
+  if (!opencv.ok()) {
+    std::remove(a.text("--visp").c_str());  // both files or neither: one calibration
+    return report("calibrate", opencv.error());
+  }
   if (!overlay_dir.empty()) std::remove((overlay_dir + "/" + kIncompleteMarker).c_str());
   std::printf("calibrate: ViSP camera file %s, OpenCV calibration file %s\n", a.text("--visp").c_str(),
               a.text("--opencv").c_str());

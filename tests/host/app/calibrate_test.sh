@@ -85,6 +85,10 @@ edgetrack calibrate: --opencv is required" \
       calibrate_grids --images "$grids/grid36-%02d.pgm" --target chessboard --count 9x6
     [ ! -e "$work/camera.xml" ] && [ ! -e "$work/camera.yaml" ] || fail "a failed run wrote a file"
     ls "$work" | grep -q partial && fail "a .partial file left"
+    # The OpenCV file cannot be written (its directory is missing): neither file is left.
+    expect_error "$work/missing/camera.yaml: cannot open the file for writing" calibrate_grids --images "$grids/grid36-%02d.pgm" \
+      --opencv "$work/missing/camera.yaml"
+    [ ! -e "$work/camera.xml" ] || fail "the ViSP file left without the OpenCV file"
     echo "ok" ;;
   *)
     fail "unknown case" ;;
