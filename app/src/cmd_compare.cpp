@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "configuration.h"
 #include "downscaled_tracking.h"
+#include "edgetrack/detector/template_set.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"

@@ -35,7 +35,7 @@
 
 #include "configuration.h"
 #include "detection_scene.h"
-#include "edgetrack/pinhole_camera.h"
+#include "edgetrack/detector/template_set.h"
 #include "edgetrack/detector/viewpoints.h"
 #include "edgetrack/model_io.h"
 #include "pose_table.h"

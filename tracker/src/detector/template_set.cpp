@@ -132,6 +132,13 @@ Se3 template_pose(const Template& t, const ModelExtent& extent) {
   return Se3(rotation.rotation(), Vec3{real(0), real(0), t.distance} - rotation.rotation() * extent.centre);
 }
 
+PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
+  if (factor <= 1) return camera;
+  const real f(factor), half(0.5);
+  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
+          camera.width / factor, camera.height / factor, camera.lens};
+}
+
 int detection_reduction(const PinholeCamera& camera) {
   const int side = camera.width < camera.height ? camera.width : camera.height;
   return side <= kMaxDetectionSide ? 1 : (side + kMaxDetectionSide - 1) / kMaxDetectionSide;

@@ -72,6 +72,11 @@ struct TemplateSet {
 /// camera_from_model of a template's view.
 Se3 template_pose(const Template& t, const ModelExtent& extent);
 
+/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5),
+/// for detection's reduced frames and `--downscale`'s tracked ones; `camera` itself for a factor
+/// of 1 or less.
+PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
+
 /// The longest shorter image side detection runs on at full size. A template's features lie
 /// within 255 pixels of its corner (a byte each) in the matching image, so that beyond about
 /// 1280 pixels no view of the default range fits one; and the refinement's settings
@@ -83,7 +88,7 @@ constexpr int kMaxDetectionSide = 640;
 /// The factor a frame of `camera`'s size is reduced by for detection (templates, matching and
 /// refinement alike): 1 up to kMaxDetectionSide pixels on its shorter side, else the smallest
 /// integer that brings the side there. A pose found with the reduced camera
-/// (downscaled_camera, pinhole_camera.h) is the full-size camera's: the reduced camera sees the same rays.
+/// (downscaled_camera) is the full-size camera's: the reduced camera sees the same rays.
 int detection_reduction(const PinholeCamera& camera);
 
 /// A short text that changes when the model's geometry changes: a hash of its vertices (in
