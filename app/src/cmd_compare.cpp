@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "configuration.h"
 #include "downscaled_tracking.h"
+#include "edgetrack/detector/template_set.h"
 #include "edgetrack/grey_conversion.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
@@ -251,7 +252,7 @@ Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor,
   if (!configured.ok()) return configured.error();
   if (camera.width != first.pixels.width || camera.height != first.pixels.height)
     return Error{first.name, 0, "image size does not match the camera's (" + setup.xml + ")"};
-  setup.camera = downscaled(camera, factor);
+  setup.camera = edgetrack::downscaled_camera(camera, factor);
   downscale_settings(setup.params, factor);
   return setup;
 }

@@ -181,6 +181,8 @@ Result<SynthOptions> read_options(const Args& a) {
     if (!read.ok()) return read.error();
     o.camera = read.value();
   }
+  if (a.has("--kud") && a.has("--intrinsics"))
+    return Error{"", 0, "--kud and --intrinsics both give the lens: give one"};
   auto calibrated = apply_intrinsics(a, o.camera);
   if (!calibrated.ok()) return calibrated.error();
   o.camera = calibrated.value();
@@ -317,7 +319,8 @@ int synth_main(int argc, char** argv) {
           {"--size", "WIDTHxHEIGHT", "image size for --camera (default: 320x240)", ""},
           intrinsics_specs()[0],
           intrinsics_specs()[1],
-          {"--kud", "K", "frames through ViSP's radial lens x_d = x (1 + kud r^2), -0.5..0.5; writes intrinsics.xml", ""},
+          {"--kud", "K", "frames through ViSP's radial lens x_d = x (1 + kud r^2), -0.5..0.5; writes intrinsics.xml "
+                            "(default: no lens)", ""},
           {"--trajectory", "paper|FILE", "paper or a CSV with the header of truth.csv", "paper"},
           {"--frames", "N", "number of frames", "60"},
           {"--speed", "K", "the same path K times faster: frame k shows trajectory pose K k, interpolated", "1"},
@@ -343,7 +346,7 @@ int synth_main(int argc, char** argv) {
       },
       {"--out"},
       {},
-      {},
+      {{"--size", "--camera"}, {"--intrinsics-name", "--intrinsics"}},
   };
   Args a;
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;

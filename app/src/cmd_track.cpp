@@ -309,7 +309,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
   if (auto refused = edgetrack::check_camera(full_camera)) return report("track", {a.text("--camera"), 0, refused->message});
-  in.camera = downscaled(full_camera, request.factor);
+  in.camera = edgetrack::downscaled_camera(full_camera, request.factor);
   if (in.camera.width == 0 || in.camera.height == 0)
     return report("track", {"--downscale " + std::to_string(request.factor), 0,
                             "leaves no pixel of a " + std::to_string(in.full_width) + "x" +
@@ -386,17 +386,7 @@ void count(const edgetrack::FrameResult& result, RunTotals& totals) {
 /// Writes the frame's row and draws its overlay; `tracked` is the frame the tracker read.
 Result<bool> write_frame(int index, const edgetrack::FrameView& tracked, const edgetrack::FrameResult& result,
                          const TrackInputs& in, TrackOutputs& out) {
-  if (out.poses) {
-    PoseRow row = pose_row(index, result.camera_from_model);
-    int64_t ns = 0;
-    for (int64_t step : result.step_ns) ns += step;
-    row.points = result.points_matched;
-    row.ms = ns / 1e6;
-    row.lost = result.status == edgetrack::TrackingStatus::kLost;
-    row.uncertain = result.status == edgetrack::TrackingStatus::kUncertain;
-    row.edge_angle_deg = static_cast<double>(result.measures.gradient_angle_deg);
-    out.poses->write(row);
-  }
+  if (out.poses) out.poses->write(edgetrack::poses_csv_row(index, result));
   if (!out.overlay) return true;
   const RgbImage drawn = out.overlay->draw(to_rgb_image(tracked), in.model, result.camera_from_model, out.cone);
   if (!out.overlay_dir.empty()) {

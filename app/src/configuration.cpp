@@ -67,7 +67,8 @@ const std::vector<OptionSpec>& intrinsics_specs() {
       {"--intrinsics", "FILE",
        "calibration file, ViSP's camera XML or OpenCV's YAML/XML, with the lens distortion; it replaces the camera of "
        "the ViSP XML (docs/FORMATS.md)", ""},
-      {"--intrinsics-name", "NAME", "with --intrinsics: the ViSP camera <name> to take", ""},
+      {"--intrinsics-name", "NAME",
+       "with --intrinsics: the ViSP camera <name> to take (default: the file's first camera of the image's size)", ""},
   };
   return specs;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "edgetrack/angles.h"
 #include "edgetrack/detector/template_io.h"
 
 using edgetrack::Error;
@@ -73,7 +74,7 @@ Result<TemplateParams> template_params_from(const Args& args) {
   auto cone = args.number("--cone");
   if (!cone.ok()) return cone.error();
   if (cone.value() <= 0 || cone.value() > 180) return Error{"", 0, "--cone must be over 0 and at most 180 degrees"};
-  params.views.max_angle = real(cone.value() * 3.141592653589793 / 180);
+  params.views.max_angle = real(cone.value() * edgetrack::kPi / 180);
   auto subdivisions = args.integer("--subdivisions");
   if (!subdivisions.ok()) return subdivisions.error();
   params.views.subdivisions = subdivisions.value();

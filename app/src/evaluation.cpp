@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include "edgetrack/angles.h"
+
 using edgetrack::Error;
 using edgetrack::Result;
 using edgetrack::Se3;
@@ -35,7 +37,7 @@ Result<Evaluation> evaluate(const std::vector<PoseRow>& poses, const std::vector
     }
     e.distance_mm = std::sqrt(squared);
     const Vec3 w = edgetrack::rotation_log(tracked.rotation() * true_pose.rotation().transpose());
-    e.rotation_deg = static_cast<double>(edgetrack::norm(w)) * 180.0 / 3.14159265358979323846;
+    e.rotation_deg = static_cast<double>(edgetrack::norm(w)) * 180.0 / edgetrack::kPi;
     e.ms = row.ms;
     e.lost = row.lost;
     result.mean_distance_mm += e.distance_mm;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgetrack/angles.h"
 #include "edgetrack/edge_id_buffer.h"
 #include "edgetrack/raster.h"
 
@@ -116,11 +117,10 @@ ConeMesh cone_mesh(const Cone& cone, int sides) {
   plane_axes(cone.axis, u, v);
   const Vec3 apex = cone.base_centre + scaled(cone.height, cone.axis);
   const double slope = cone.radius / cone.height;
-  const double pi = 3.14159265358979323846;
   auto rim = [&](double a) { return cone.base_centre + scaled(cone.radius * std::cos(a), u) + scaled(cone.radius * std::sin(a), v); };
   auto side = [&](double a) { return edgetrack::normalized(scaled(std::cos(a), u) + scaled(std::sin(a), v) + scaled(slope, cone.axis)); };
   for (int i = 0; i < sides; ++i) {
-    const double a0 = 2 * pi * i / sides, a1 = 2 * pi * (i + 1) / sides;
+    const double a0 = 2 * edgetrack::kPi * i / sides, a1 = 2 * edgetrack::kPi * (i + 1) / sides;
     mesh.corners.insert(mesh.corners.end(), {apex, rim(a0), rim(a1), cone.base_centre, rim(a1), rim(a0)});
     mesh.normals.insert(mesh.normals.end(), {side((a0 + a1) / 2), side(a0), side(a1), -cone.axis, -cone.axis, -cone.axis});
   }

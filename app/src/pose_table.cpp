@@ -48,11 +48,10 @@ const edgetrack::FieldRange kColumns[11] = {
 
 std::string partial_path(const std::string& path) { return path + ".partial"; }
 
-/// The status column, spelled as the library's status_name spells it.
-const char* status_of(const PoseRow& row) {
-  return edgetrack::status_name(row.lost        ? edgetrack::TrackingStatus::kLost
-                                : row.uncertain ? edgetrack::TrackingStatus::kUncertain
-                                                : edgetrack::TrackingStatus::kTracked);
+/// The status a row carries as its two flags.
+edgetrack::TrackingStatus status_of(const PoseRow& row) {
+  return row.lost ? edgetrack::TrackingStatus::kLost
+                  : row.uncertain ? edgetrack::TrackingStatus::kUncertain : edgetrack::TrackingStatus::kTracked;
 }
 
 }  // namespace
@@ -177,12 +176,25 @@ PoseTableWriter::~PoseTableWriter() {
 
 void PoseTableWriter::write(const PoseRow& row) {
   if (!file_) return;
-  int n = std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
-                       row.tu[1], row.tu[2]);
-  if (n >= 0 && with_tracking_) n = std::fprintf(file_, ",%d,%.3f,%s,%.2f", row.points, row.ms,
-                                           status_of(row), row.edge_angle_deg);
-  if (n >= 0) n = std::fprintf(file_, "\n");
-  if (n < 0) failed_ = true;
+  if (with_tracking_) {
+    edgetrack::PosesCsvRow csv;
+    csv.frame = row.frame;
+    std::copy(row.t, row.t + 3, csv.t);
+    std::copy(row.tu, row.tu + 3, csv.tu);
+    csv.points = row.points;
+    csv.ms = row.ms;
+    csv.status = status_of(row);
+    csv.edge_angle_deg = row.edge_angle_deg;
+    return write(csv);
+  }
+  if (std::fprintf(file_, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", row.frame, row.t[0], row.t[1], row.t[2], row.tu[0],
+                   row.tu[1], row.tu[2]) < 0)
+    failed_ = true;
+}
+
+void PoseTableWriter::write(const edgetrack::PosesCsvRow& row) {
+  if (!file_) return;
+  if (std::fprintf(file_, "%s\n", edgetrack::poses_csv_line(row).c_str()) < 0) failed_ = true;
 }
 
 Result<bool> PoseTableWriter::close() {

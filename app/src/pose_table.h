@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "edgetrack/poses_csv.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack_app {
 
-constexpr const char* kPosesHeader = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status,edge_angle_deg";
+constexpr const char* kPosesHeader = edgetrack::kPosesCsvHeader;
 /// The poses header of files written before the edge angle column; read as kPosesHeader's.
 constexpr const char* kPosesHeaderWithoutAngle = "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status";
 constexpr const char* kTruthHeader = "frame,tx,ty,tz,tux,tuy,tuz";
@@ -53,6 +54,8 @@ class PoseTableWriter {
   PoseTableWriter& operator=(PoseTableWriter&&) = delete;
   ~PoseTableWriter();
   void write(const PoseRow& row);
+  /// A poses file's row as the library makes it (edgetrack::poses_csv_row).
+  void write(const edgetrack::PosesCsvRow& row);
   /// Flushes and closes; an Error when anything failed to reach the file.
   edgetrack::Result<bool> close();
 

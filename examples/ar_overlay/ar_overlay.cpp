@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
                             : video.open(argv[5], cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 15, bgr.size())))
     return fail(std::string(argv[5]) + ": cannot write the video");
 
-  std::printf("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n");  // the poses CSV, as minimal prints it
+  std::printf("%s\n", edgetrack::kPosesCsvHeader);  // the poses CSV, as minimal prints it
   for (int index = 0; !bgr.empty(); ++index, capture.read(bgr)) {
     // OpenCV's BGR frame, read in place with its row stride.
     auto tracked = tracker.value().track({bgr.data, bgr.cols, bgr.rows, int(bgr.step), edgetrack::PixelLayout::kBgr24});
@@ -125,11 +125,7 @@ int main(int argc, char** argv) {
       cv::line(bgr, view.pixel(to_cv(model.value().vertices[e.a])), view.pixel(to_cv(model.value().vertices[e.b])),
                cv::Scalar(0, 255, 0), 1, cv::LINE_AA);
     draw_cone(bgr, cone, view);
-    const cv::Vec3d t = view.translation, tu = to_cv(r.camera_from_model.theta_u());
-    long long ns = 0;
-    for (long long step : r.step_ns) ns += step;
-    std::printf("%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.3f,%s\n", index, t[0], t[1], t[2], tu[0], tu[1], tu[2],
-                r.points_matched, ns / 1e6, edgetrack::status_name(r.status));
+    std::printf("%s\n", edgetrack::poses_csv_line(edgetrack::poses_csv_row(index, r)).c_str());
     if (video.isOpened()) {
       video.write(bgr);
     } else {

@@ -42,17 +42,12 @@ int main(int argc, char** argv) {
   auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
   if (!tracker.ok()) return std::fprintf(stderr, "minimal: %s\n", tracker.error().text().c_str()), 1;
 
-  std::printf("frame,tx,ty,tz,tux,tuy,tuz,points,ms,status\n");  // the poses CSV of `edgetrack track --poses`
+  std::printf("%s\n", edgetrack::kPosesCsvHeader);  // the poses CSV of `edgetrack track --poses`
   for (int index = first; index <= last && read_frame(argv[4], index, width, height, frame); ++index) {
     // Any camera layout goes the same way: RGB565, RGB24/BGR24, NV21 or I420, with a row stride.
     auto tracked = tracker.value().track({frame.data(), width, height, width, edgetrack::PixelLayout::kGrey8});
     if (!tracked.ok()) return std::fprintf(stderr, "minimal: frame %d: %s\n", index, tracked.error().text().c_str()), 1;
-    const edgetrack::FrameResult& r = tracked.value();
-    const edgetrack::Vec3 t = r.camera_from_model.translation(), tu = r.camera_from_model.theta_u();
-    long long ns = 0;
-    for (long long step : r.step_ns) ns += step;
-    std::printf("%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.3f,%s\n", index, double(t.x), double(t.y), double(t.z),
-                double(tu.x), double(tu.y), double(tu.z), r.points_matched, ns / 1e6, edgetrack::status_name(r.status));
+    std::printf("%s\n", edgetrack::poses_csv_line(edgetrack::poses_csv_row(index, tracked.value())).c_str());
   }
   return 0;
 }

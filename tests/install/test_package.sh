@@ -124,20 +124,22 @@ for program in "$work/minimal/minimal" "$work/minimal_pc"; do
 done
 cat "$work/minimal/minimal.out"
 # The ms column is a time: every other column is the same in both builds.
-same_rows() { cmp -s <(cut -d, -f1-8,10 "$1") <(cut -d, -f1-8,10 "$2"); }
+same_rows() { cmp -s <(cut -d, -f1-8,10- "$1") <(cut -d, -f1-8,10- "$2"); }
 same_rows "$work/minimal/minimal.out" "$work/minimal_pc.out" || fail "the pkg-config build prints other results"
 run "$prefix/bin/edgetrack" track --model "$mbt/cube.cao" --camera "$camera" --init-pose "$mbt/cube.0.pos" \
     --images "$mbt/cube/image%04d.pgm" --last $last --quiet --poses "$work/track.csv" >/dev/null || fail "edgetrack track failed"
-# minimal prints the poses CSV: the header, no frame lost, 30 points or more on each, and the
-# pose edgetrack track finds for it.
+# minimal prints the poses CSV: track's header, no frame lost, 30 points or more on each, and the
+# pose and edge angle edgetrack track finds for it.
 awk -v frames=$((last + 1)) '
-  FNR == NR { if (FNR > 1) { for (i = 2; i <= 7; i++) pose[$1, i] = $i } ; next }
-  FNR == 1 { if ($0 != "frame,tx,ty,tz,tux,tuy,tuz,points,ms,status") { print "header: " $0; bad++ } ; next }
+  FNR == NR { if (FNR == 1) header = $0; else { for (i = 2; i <= 7; i++) pose[$1, i] = $i; angle[$1] = $11 } ; next }
+  FNR == 1 { if ($0 != header || $11 != "edge_angle_deg") { print "header: " $0 " (edgetrack track: " header ")"; bad++ } ; next }
   {
     n++
     if ($1 != n - 1) { print "line " FNR ": not frame " n - 1 ": " $0; bad++; next }
     if ($10 != "tracked" && $10 != "uncertain") { print "frame " $1 ": " $10; bad++ }
     if ($8 < 30) { print "frame " $1 ": " $8 " points"; bad++ }
+    if (NF != 11 || $11 != angle[$1] || !($11 > 0 && $11 < 90))
+      { print "frame " $1 ": edge angle " $11 ", edgetrack track says " angle[$1]; bad++ }
     for (i = 2; i <= 7; i++) {
       d = $i - pose[$1, i]
       if (d > 1e-5 || d < -1e-5) { print "frame " $1 ": column " i " is " $i ", edgetrack track says " pose[$1, i]; bad++ }

@@ -221,8 +221,8 @@ const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame,
     converted = convert_to_grey(frame, PixelBox{0, 0, frame.height, frame.width}, grey_);
     return grey_;
   }
-  // The points' read boxes (vpGreyOnDemand's 8x8 tiles, measured on the cube sequence,
-  // converted twice the pixels at twice the guest instructions).
+  // The points' read boxes themselves: whole 8x8 tiles around them, measured on the cube
+  // sequence, converted twice the pixels at twice the guest instructions.
   grey_boxes_.clear();
   for (const ControlPoint& point : visible_) grey_boxes_.add(me_search_box(point, me_, range));
   converted = grey_boxes_.convert(frame, grey_);

@@ -111,7 +111,7 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
                    static_cast<double>(faces.min_polygon_area));
   if (params.hypotheses < 1 || params.hypotheses > kMaxHypotheses)
     return unfiled("the number of edge hypotheses", "1 to " + std::to_string(kMaxHypotheses), params.hypotheses);
-  if (params.border < 0 || params.border > kMaxRange)
+  if (params.border < 0 || params.border > static_cast<int>(kMaxRange))
     return unfiled("the image border", "0.." + std::to_string(kMaxRange) + " pixels", params.border);
   const PoseParams& pose = params.pose;
   if (pose.max_evaluations < 1 || pose.max_evaluations > 10000)

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Integer grey conversions of vpImageConvert and the tile bookkeeping of vpGreyOnDemand.
+/// Integer grey conversions of vpImageConvert.
 #include "visp3/core/vpImageConvert.h"
-
-#include <algorithm>
 
 inline namespace edgetrack_ports {
 
@@ -68,59 +66,6 @@ void vpImageConvert::RGB565ToGrey(const uint8_t* src, unsigned int src_stride, u
 void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest) {
   dest.resize(src.getHeight(), src.getWidth());
   RGB565ToGrey(src.bitmap, dest.bitmap, src.getSize());
-}
-
-void vpImageConvert::RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top,
-                                  int left, int bottom, int right) {
-  RGB565ToGrey(src.bitmap, dest, top, left, bottom, right);
-}
-
-unsigned int vpImageConvert::RGB565ToGrey(const uint16_t* src, vpImage<unsigned char>& dest, int top, int left,
-                                          int bottom, int right) {
-  const int width = static_cast<int>(dest.getWidth());
-  top = std::max(top, 0);
-  left = std::max(left, 0);
-  bottom = std::min(bottom, static_cast<int>(dest.getHeight()));
-  right = std::min(right, width);
-  if (left >= right || top >= bottom) return 0;
-  for (int i = top; i < bottom; ++i) {
-    RGB565ToGrey(src + i * width + left, dest[i] + left, static_cast<unsigned int>(right - left));
-  }
-  return static_cast<unsigned int>((bottom - top) * (right - left));
-}
-
-void vpGreyOnDemand::setFrame(const vpImage<uint16_t>& src) {
-  src_ = src.bitmap;
-  const unsigned int rows = src.getHeight(), cols = src.getWidth();
-  if (grey_.getHeight() != rows || grey_.getWidth() != cols) {
-    grey_.resize(rows, cols);
-    tiles_down_ = (static_cast<int>(rows) + kTile - 1) / kTile;
-    tiles_across_ = (static_cast<int>(cols) + kTile - 1) / kTile;
-    tile_frame_.assign(static_cast<std::size_t>(tiles_down_) * tiles_across_, 0);
-    frame_ = 0;
-  }
-  ++frame_;
-  if (frame_ == 0) {  // the counter wrapped: forget every stamp once
-    std::fill(tile_frame_.begin(), tile_frame_.end(), 0);
-    frame_ = 1;
-  }
-  converted_ = 0;
-}
-
-void vpGreyOnDemand::require(int top, int left, int bottom, int right) {
-  if (src_ == nullptr) return;
-  const int ti0 = std::max(top, 0) / kTile, tj0 = std::max(left, 0) / kTile;
-  const int ti1 = std::min((bottom + kTile - 1) / kTile, tiles_down_);
-  const int tj1 = std::min((right + kTile - 1) / kTile, tiles_across_);
-  for (int ti = ti0; ti < ti1; ++ti) {
-    uint32_t* stamp = &tile_frame_[static_cast<std::size_t>(ti) * tiles_across_];
-    for (int tj = tj0; tj < tj1; ++tj) {
-      if (stamp[tj] == frame_) continue;
-      stamp[tj] = frame_;
-      const int i0 = ti * kTile, j0 = tj * kTile;
-      converted_ += vpImageConvert::RGB565ToGrey(src_, grey_, i0, j0, i0 + kTile, j0 + kTile);
-    }
-  }
 }
 
 }  // inline namespace edgetrack_ports

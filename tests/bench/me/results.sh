@@ -70,7 +70,7 @@ echo
 
 echo "### Guest instructions on the emulated PXA270"
 echo
-echo "| build | per track() (mean, min–max) | of which soft-float | full RGB565→grey QVGA | on demand (pixels converted) |"
+echo "| build | per track() (mean, min–max) | of which soft-float | whole RGB565 QVGA to grey | read boxes only (pixels converted) |"
 echo "|---|---|---|---|---|"
 for tree in "$arm_double" "$arm_s40"; do
   name=$(grep -m1 EDGETRACK_REAL: "$tree/CMakeCache.txt" | cut -d= -f2)
@@ -86,6 +86,8 @@ for tree in "$arm_double" "$arm_s40"; do
           name, t / n, lo, hi, sf / n, w[1], w[2], c[6], c[8] }' "$work/s.win" "$work/c.win"
 done
 echo
-echo "Per track(): 128 sites on mbt/cube frame 0 (640x480). Conversion: frame 0 halved to 320x240"
-echo "RGB565; on demand converts the 8x8 tiles that 66 sites (range 7, mask 5) read, via"
-echo "\`vpMeSite::getSearchBox\` and \`vpGreyOnDemand\`; both grey images give the same sites."
+points=$(awk '{ print $4 }' "$work/c.out")
+echo "Per track(): 128 sites on mbt/cube frame 0 (640x480). Conversion: the tracker's grey step"
+echo "(\`grey_conversion.h\`) on frame 0 halved to 320x240 RGB565, the whole frame, or only the read"
+echo "boxes (\`me_search_box.h\`, \`BoxGreyScaler\`) of $points control points on the cube's edges (range 7,"
+echo "mask 5); \`search_moving_edges\` finds the same matches in both grey images."

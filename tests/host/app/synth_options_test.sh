@@ -10,7 +10,7 @@ work=$2/$3
 name=$3
 rm -rf "$work" && mkdir -p "$work"
 
-# fail, expect_error, less, check_poses, track_with_and_without_lens
+# fail, expect_error, expect_usage_error, less, check_poses, track_with_and_without_lens
 source "$(dirname "$0")/cli_common.sh"
 
 synth() { "$edgetrack" synth --frames 10 --supersample 1 "$@"; }
@@ -84,5 +84,12 @@ case $name in
     expect_error "--speed must be 1..16" "$edgetrack" synth --out "$work/seq" --speed 0.5 ;;
   error_synth_bad_hide)
     expect_error "--hide '9:3': expected FIRST:LAST" "$edgetrack" synth --out "$work/seq" --hide 9:3 ;;
+  error_synth_options_named)
+    expect_usage_error "edgetrack synth: --size needs --camera" "$edgetrack" synth --out "$work/seq" --size 640x480
+    expect_usage_error "edgetrack synth: --intrinsics-name needs --intrinsics" \
+      "$edgetrack" synth --out "$work/seq" --intrinsics-name Camera
+    expect_error "--kud and --intrinsics both give the lens: give one" \
+      "$edgetrack" synth --out "$work/seq" --kud -0.2 --intrinsics "$work/none.xml"
+    [ ! -e "$work/seq" ] || fail "synth wrote frames after a refused command line" ;;
   *) fail "unknown case" ;;
 esac

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// The pixels the moving-edge step reads around one control point, so the grey step can convert
-/// only those (on-demand grey scaling, vpGreyOnDemand).
+/// only those (on-demand grey scaling, grey_conversion.h).
 #pragma once
 
 #include "edgetrack/control_points.h"

@@ -133,6 +133,7 @@ Se3 template_pose(const Template& t, const ModelExtent& extent) {
 }
 
 PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
+  if (factor <= 1) return camera;
   const real f(factor), half(0.5);
   return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
           camera.width / factor, camera.height / factor, camera.lens};

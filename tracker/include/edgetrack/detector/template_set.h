@@ -72,7 +72,9 @@ struct TemplateSet {
 /// camera_from_model of a template's view.
 Se3 template_pose(const Template& t, const ModelExtent& extent);
 
-/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5).
+/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5),
+/// for detection's reduced frames and `--downscale`'s tracked ones; `camera` itself for a factor
+/// of 1 or less.
 PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
 
 /// The longest shorter image side detection runs on at full size. A template's features lie

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Mirrors ViSP's visp3/core/vpImageConvert.h for the grey conversions the tracker needs
-/// (RGBa, RGB24 and, new here, RGB565 to grey), plus vpGreyOnDemand, which converts an RGB565
-/// frame only where moving-edge sites read it.
+/// (RGBa, RGB24 and, new here, RGB565 to grey).
 ///
 /// Rounding rule (all three colour formats): with 8-bit channels R, G, B,
 ///   grey = (13933 R + 46871 G + 4732 B + 32768) >> 16,
@@ -16,7 +15,6 @@
 #endif
 
 #include <cstdint>
-#include <vector>
 
 #include "visp3/core/vpImage.h"
 #include "visp3/core/vpRGBa.h"
@@ -53,41 +51,6 @@ class vpImageConvert {
                            unsigned int rows, unsigned int cols);
   /// Whole-frame RGB565 to grey; `dest` takes the size of `src`.
   static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest);
-  /// Converts only rows [top, bottom) and columns [left, right) (clipped to the image);
-  /// `dest` must already have the size of `src`.
-  static void RGB565ToGrey(const vpImage<uint16_t>& src, vpImage<unsigned char>& dest, int top, int left,
-                           int bottom, int right);
-  /// The same from a raw row-major frame of dest's size (a camera buffer, no copy); returns the
-  /// number of pixels converted.
-  static unsigned int RGB565ToGrey(const uint16_t* src, vpImage<unsigned char>& dest, int top, int left,
-                                   int bottom, int right);
-};
-
-/// A grey image filled from one RGB565 frame on demand, in square tiles of kTile pixels:
-/// call require() with the box a site will read (vpMeSite::getSearchBox) before track().
-/// Each tile is converted at most once per frame; setFrame() starts a new frame without
-/// clearing anything (tiles carry the number of the frame they were converted for).
-class vpGreyOnDemand {
- public:
-  static constexpr int kTile = 8;
-
-  /// Starts a frame; `src` must stay alive and unchanged until the next setFrame().
-  void setFrame(const vpImage<uint16_t>& src);
-  /// Makes rows [top, bottom) x columns [left, right) (clipped to the frame) valid in grey().
-  void require(int top, int left, int bottom, int right);
-  /// The grey frame: valid only where require() was called since setFrame().
-  const vpImage<unsigned char>& grey() const { return grey_; }
-  /// Pixels converted since setFrame() (a multiple of the tile area, less at the frame edges).
-  unsigned int convertedPixels() const { return converted_; }
-
- private:
-  const uint16_t* src_ = nullptr;
-  vpImage<unsigned char> grey_;
-  std::vector<uint32_t> tile_frame_;
-  uint32_t frame_ = 0;
-  int tiles_across_ = 0;
-  int tiles_down_ = 0;
-  unsigned int converted_ = 0;
 };
 
 }  // inline namespace edgetrack_ports

@@ -10,8 +10,8 @@
 ///   s.track(I, &me);              // also requires the contrast to stay within [1-mu1, 1+mu2]
 ///   if (s.getState() == vpMeSite::NO_SUPPRESSION) use s.get_ifloat(), s.get_jfloat();
 /// initFromImage() is the alternative to the first track(): it takes convlt from the image at
-/// the given position itself, without searching. getSearchBox() gives the pixels track() reads
-/// (for vpGreyOnDemand). Display code is not ported: setDisplay() only records the choice.
+/// the given position itself, without searching. getSearchBox() gives the pixels track() reads.
+/// Display code is not ported: setDisplay() only records the choice.
 ///
 /// Differences from upstream (docs/ME.md): scalars are `real`; no heap allocation per track()
 /// (upstream's getQueryList() is not provided); sine, cosine and mask index once per track();
