@@ -42,6 +42,8 @@ void check_lens(Scene scene, const char* name, double kud) {
 
 static void test_lens_tracking_cube() { check_lens(Scene::kCube, "cube", -0.25); }
 static void test_lens_tracking_wood_toy() { check_lens(Scene::kWoodToy, "wood toy", 0.12); }
+static void test_lens_tracking_wood_toy_barrel() { check_lens(Scene::kWoodToy, "wood toy", -0.25); }
 
 TESTMAIN(test_lens_tracking_cube)
 TESTMAIN(test_lens_tracking_wood_toy)
+TESTMAIN(test_lens_tracking_wood_toy_barrel)
