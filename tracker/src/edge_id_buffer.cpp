@@ -110,14 +110,16 @@ void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera,
   // lies within half a pixel of it.
   const Vec3 ends[2] = {a_in_camera, b_in_camera};
   const int pieces = lens_pieces(ends, 2, real(0.5), kMostLinePieces);
+  ScreenVertex a, b;
+  if (pieces == 1) {
+    if (clip_and_project_segment(camera_, a_in_camera, b_in_camera, a, b)) add_line(a, b, code, exempt_owner);
+    return;
+  }
   const real step = real(1) / real(pieces);
   const auto at = [&](int k) { return a_in_camera + (real(k) * step) * (b_in_camera - a_in_camera); };
-  ScreenVertex a, b;
-  if (pieces == 1 || !in_front_of_near_plane(ends, 2)) {
+  if (!in_front_of_near_plane(ends, 2)) {
     for (int k = 0; k < pieces; ++k)
-      if (pieces == 1 ? clip_and_project_segment(camera_, a_in_camera, b_in_camera, a, b)
-                      : clip_and_project_segment(camera_, at(k), at(k + 1), a, b))
-        add_line(a, b, code, exempt_owner);
+      if (clip_and_project_segment(camera_, at(k), at(k + 1), a, b)) add_line(a, b, code, exempt_owner);
     return;
   }
   // In front of the near plane: each point of the polyline through the lens once.
