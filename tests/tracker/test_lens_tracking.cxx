@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Tracking through a lens: the generated cube seen through ViSP's radial model with
-/// kud = -0.25 (a wide lens's barrel) and the wood toy through kud = +0.12 (pincushion), QVGA.
+/// kud = -0.25 (a wide lens's barrel) and the wood toy through kud = +0.12 (pincushion) and -0.25, QVGA.
 /// Given the lens, the tracker keeps the error within 1.2 times that of the same frames without
 /// a lens (issue 26's target); left with the pinhole (the distortion ignored) it is over 5 times worse.
 #include <cstdio>
