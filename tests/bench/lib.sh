@@ -52,3 +52,20 @@ callgrind_steps() {
         v/f/1e6, 100*v/total, g/f/1e6, 100*g/total, m/f/1e6, 100*m/total, p/f/1e6, 100*p/total, o/f/1e6, total/f/1e6
     }'
 }
+
+# The boilerplate of a results script (used by tests/bench/camera_eval/*.sh):
+# bench_scratch NAME: sets $work to a new scratch directory, removed when the script exits.
+bench_scratch() {
+  work=$(mktemp -d "${TMPDIR:-/tmp}/$1.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+}
+# bench_heading TITLE BUILDS: the section's title, then the script that prints it, the builds it
+# ran and the machine.
+bench_heading() {
+  echo "## $1"
+  echo
+  echo "\`${BASH_SOURCE[1]#"$top"/}\`: $2, $(bench_machine)."
+  echo
+}
+# bench_value KEY FILE: the value of KEY=... on the first line of FILE that has it.
+bench_value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }

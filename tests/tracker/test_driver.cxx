@@ -28,6 +28,7 @@ DECLARE(test_status_statistics);
 DECLARE(test_edge_support);
 DECLARE(test_pose_files);
 DECLARE(test_lens);
+DECLARE(test_lens_chord_pieces);
 DECLARE(test_camera_file);
 DECLARE(test_model_text);
 
@@ -58,6 +59,7 @@ void register_tests() {
   REGISTER(test_edge_support);
   REGISTER(test_pose_files);
   REGISTER(test_lens);
+  REGISTER(test_lens_chord_pieces);
   REGISTER(test_camera_file);
   REGISTER(test_model_text);
 }

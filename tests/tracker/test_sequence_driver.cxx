@@ -32,6 +32,7 @@ DECLARE(test_normal_mask);
 DECLARE(test_api_door);
 DECLARE(test_lens_tracking_cube);
 DECLARE(test_lens_tracking_wood_toy);
+DECLARE(test_lens_tracking_wood_toy_barrel);
 DECLARE(test_android_frames);
 DECLARE(test_visp_cube_poses);
 
@@ -66,6 +67,7 @@ void register_tests() {
   REGISTER(test_api_door);
   REGISTER(test_lens_tracking_cube);
   REGISTER(test_lens_tracking_wood_toy);
+  REGISTER(test_lens_tracking_wood_toy_barrel);
   REGISTER(test_android_frames);
   REGISTER(test_visp_cube_poses);
 }

@@ -27,62 +27,56 @@ struct Window {
 };
 
 /// Pieces of a projected segment's polyline through a lens, for its length and its points'
-/// parameters: as many as keep the curve within 0.02 px of them (a bend s over the whole
-/// segment leaves s / n^2 over each of n pieces; a piece then errs on its length by under
-/// 1e-3 px), at most kCurvePieces.
+/// parameters: as many as keep the curve within 0.02 px of them (a piece then errs on its length
+/// by under 1e-3 px; the points themselves lie on the curve), at most kCurvePieces.
 constexpr int kCurvePieces = 64;
 
 /// Equation (1) along the image of segment a-b through the lens, a curve: n = floor(curve
 /// length / step) points at the centres of n equal lengths of it, each the image of its 3D
-/// point (on the curve, not on a chord), with the curve's own direction there.
+/// point (on the curve, not on a chord), with the curve's own direction there. The pinhole
+/// image of the segment is a straight line in normalised coordinates; t runs evenly along it,
+/// and the lens moves each of its points.
 void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, int primitive,
                   const PinholeCamera& camera, const SamplingParams& params, const Window& window,
                   std::vector<ControlPoint>& points) {
   using std::floor;
-  // The pinhole image of the segment is straight; t runs evenly along it, and the lens moves
-  // each of its points.
-  const PinholeCamera pinhole = camera.pinhole();
-  using std::ceil;
-  using std::fabs;
-  using std::sqrt;
-  const Vec2 qa = pinhole.project(ca), qb = pinhole.project(cb);
-  const Vec2 chord = qb - qa;
-  // The bend: how far the lens puts the middle of the pinhole line off the chord of its ends.
-  const Vec2 da = camera.distort_pixel(qa), db = camera.distort_pixel(qb);
-  const Vec2 dm = camera.distort_pixel(qa + real(0.5) * chord), ends = db - da;
-  const real ends_length = norm(ends);
-  const real bend = ends_length > real(0) ? fabs(ends.x * (dm.y - da.y) - ends.y * (dm.x - da.x)) / ends_length
-                                          : real(0);
-  const real wanted = ceil(sqrt(bend / real(0.02)));
-  const int pieces = wanted >= real(kCurvePieces) ? kCurvePieces : std::max(1, static_cast<int>(wanted));
+  const Vec2 na{ca.x / ca.z, ca.y / ca.z}, nb{cb.x / cb.z, cb.y / cb.z};
+  const Vec2 chord = nb - na;
+  const int pieces = camera.chord_pieces(na, nb, real(0.02), kCurvePieces);
+  // Lengths in pixels along the polyline of the curve.
+  const auto pixel_length = [&camera](const Vec2& d) { return norm(Vec2{camera.px * d.x, camera.py * d.y}); };
+  // Divisions are costly on the target: each quotient the loops repeat is taken once here.
+  const real per_piece = real(1) / real(pieces);
   real lengths[kCurvePieces + 1];
   lengths[0] = real(0);
-  Vec2 previous = da;
+  Vec2 previous = camera.distort(na);
   for (int k = 1; k <= pieces; ++k) {
-    const Vec2 next = camera.distort_pixel(qa + (real(k) / real(pieces)) * chord);
-    lengths[k] = lengths[k - 1] + norm(next - previous);
+    const Vec2 next = camera.distort(k == pieces ? nb : na + (real(k) * per_piece) * chord);
+    lengths[k] = lengths[k - 1] + pixel_length(next - previous);
     previous = next;
   }
   const real length = lengths[pieces];
   const int n = static_cast<int>(floor(length / params.step));  // equation (1)
   if (n <= 0) return;
   const real wa = real(1) / ca.z, wb = real(1) / cb.z;
+  const real spacing = length / real(n);
   int piece = 0;
   for (int k = 0; k < n; ++k) {
-    const real target = real(2 * k + 1) * length / real(2 * n);  // the centre of part k of n
+    const real target = (real(k) + real(0.5)) * spacing;  // the centre of part k of n
     while (piece + 1 < pieces && lengths[piece + 1] < target) ++piece;
     const real span = lengths[piece + 1] - lengths[piece];
     const real within = span > real(0) ? (target - lengths[piece]) / span : real(0);
-    const real t = (real(piece) + within) / real(pieces);
-    const Vec2 pinhole_pixel = qa + t * chord;
-    const Vec2 pixel = camera.distort_pixel(pinhole_pixel);
+    const real t = (real(piece) + within) * per_piece;
+    LensJacobian j;
+    const Vec2 pixel = camera.to_pixel(camera.distort(na + t * chord, j));
     if (!window.contains(pixel)) continue;
-    const Vec2 along = camera.distort_direction(pinhole_pixel, chord);
+    // The curve's direction: the lens's derivative applied to the line's, in pixels.
+    const Vec2 along{camera.px * (j.xx * chord.x + j.xy * chord.y), camera.py * (j.yx * chord.x + j.yy * chord.y)};
     const real along_length = norm(along);
     if (!(along_length > real(0))) continue;
     const real s = t * wb / ((real(1) - t) * wa + t * wb);
-    points.push_back(make_point(primitive, a + s * (b - a), pixel,
-                                Vec2{along.x / along_length, along.y / along_length}));
+    const real unit = real(1) / along_length;
+    points.push_back(make_point(primitive, a + s * (b - a), pixel, Vec2{along.x * unit, along.y * unit}));
   }
 }
 

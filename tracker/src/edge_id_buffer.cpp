@@ -75,49 +75,59 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
 
 namespace {
 
-/// Through a lens, a line is cut into pieces whose curve stays within 0.1 px of their chords, a
-/// face's triangles within 0.5 px (the faces only hide lines, which are tested within a pixel):
-/// a bend (sagitta) s over a side leaves s / n^2 over each of n pieces. (The bends are given
-/// where they are used, as literals: a `real` made from a variable float would be soft-float
-/// arithmetic on the ARM target.)
+/// Through a lens, a line is cut into pieces whose curve stays within half a pixel of their
+/// chords: a chord's pixels are drawn within half a pixel of it, so a point of the curve rounds
+/// to a pixel at most one pixel across the line from a drawn one, which shows() looks at. A
+/// face's triangles are cut alike (the faces only hide lines). The tolerances are given where
+/// they are used, as literals: a `real` made from a variable float would be soft-float
+/// arithmetic on the ARM target.
 constexpr int kMostLinePieces = 32, kMostFacePieces = 8;
 
 }  // namespace
 
 int EdgeIdBuffer::lens_pieces(const Vec3* corners, int count, const real& bend_pixels, int most) const {
   if (!camera_.distorted()) return 1;
-  using std::ceil;
-  using std::fabs;
-  using std::sqrt;
-  const real near(0.01);  // what is nearer is clipped: cut it as finely as allowed
-  real bend(0);
+  if (!in_front_of_near_plane(corners, count)) return most;  // clipped: cut it as finely as allowed
+  Vec2 normalised[3];
   for (int i = 0; i < count; ++i) {
-    const Vec3 &p = corners[i], &q = corners[(i + 1) % count];
-    if (p.z < near || q.z < near) return most;
-    // How far the lens moves the side's middle off the chord of its ends.
-    const Vec2 a = camera_.project(p), b = camera_.project(q), m = camera_.project(real(0.5) * (p + q));
-    const Vec2 chord = b - a;
-    const real length = norm(chord);
-    if (!(length > real(0))) continue;
-    bend = std::max(bend, fabs(chord.x * (m.y - a.y) - chord.y * (m.x - a.x)) / length);
+    const real w = real(1) / corners[i].z;
+    normalised[i] = Vec2{corners[i].x * w, corners[i].y * w};
   }
-  const real pieces = ceil(sqrt(bend / bend_pixels));
-  return pieces >= real(most) ? most : std::max(1, static_cast<int>(pieces));
+  int pieces = 1;
+  const int sides = count == 2 ? 1 : count;
+  for (int i = 0; i < sides; ++i)
+    pieces = std::max(pieces, camera_.chord_pieces(normalised[i], normalised[(i + 1) % count], bend_pixels, most));
+  return pieces;
+}
+
+void EdgeIdBuffer::add_line(const ScreenVertex& a, const ScreenVertex& b, uint16_t code, int exempt_owner) {
+  const LineWalk line = walk_line(a, b);
+  segments_.push_back({line, line_box(line), code, exempt_owner});
 }
 
 void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner) {
   // Through a lens the line is a curve: drawn as a polyline of pieces short enough that each
-  // lies within a fraction of a pixel of it.
+  // lies within half a pixel of it.
   const Vec3 ends[2] = {a_in_camera, b_in_camera};
-  const int pieces = lens_pieces(ends, 2, real(0.1), kMostLinePieces);
-  for (int k = 0; k < pieces; ++k) {
-    const Vec3 p = pieces == 1 ? a_in_camera : a_in_camera + (real(k) / real(pieces)) * (b_in_camera - a_in_camera);
-    const Vec3 q = pieces == 1 ? b_in_camera
-                               : a_in_camera + (real(k + 1) / real(pieces)) * (b_in_camera - a_in_camera);
-    ScreenVertex a, b;
-    if (!clip_and_project_segment(camera_, p, q, a, b)) continue;
-    const LineWalk line = walk_line(a, b);
-    segments_.push_back({line, line_box(line), code, exempt_owner});
+  const int pieces = lens_pieces(ends, 2, real(0.5), kMostLinePieces);
+  ScreenVertex a, b;
+  if (pieces == 1) {
+    if (clip_and_project_segment(camera_, a_in_camera, b_in_camera, a, b)) add_line(a, b, code, exempt_owner);
+    return;
+  }
+  const real step = real(1) / real(pieces);
+  const auto at = [&](int k) { return a_in_camera + (real(k) * step) * (b_in_camera - a_in_camera); };
+  if (!in_front_of_near_plane(ends, 2)) {
+    for (int k = 0; k < pieces; ++k)
+      if (clip_and_project_segment(camera_, at(k), at(k + 1), a, b)) add_line(a, b, code, exempt_owner);
+    return;
+  }
+  // In front of the near plane: each point of the polyline through the lens once.
+  ProjectedVertex previous = project_vertex(camera_, a_in_camera);
+  for (int k = 1; k <= pieces; ++k) {
+    const ProjectedVertex next = project_vertex(camera_, k == pieces ? b_in_camera : at(k));
+    if (clip_projected_segment(camera_, previous, next, a, b)) add_line(a, b, code, exempt_owner);
+    previous = next;
   }
 }
 
@@ -135,13 +145,29 @@ void EdgeIdBuffer::add_face_triangle(const Vec3 (&corners)[3]) {
     const real s = real(i) * step, t = real(j) * step;
     return corners[0] + s * (corners[1] - corners[0]) + t * (corners[2] - corners[0]);
   };
+  if (!in_front_of_near_plane(corners, 3)) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j) {
+        const Vec3 up[3] = {at(i, j), at(i + 1, j), at(i, j + 1)};
+        add_occluders(polygon, clip_and_project_triangle(camera_, up, polygon), screen_, 0);
+        if (i + j + 1 < n) {
+          const Vec3 down[3] = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+          add_occluders(polygon, clip_and_project_triangle(camera_, down, polygon), screen_, 0);
+        }
+      }
+    return;
+  }
+  // In front of the near plane: each grid point through the lens once.
+  ProjectedVertex grid[kMostFacePieces + 1][kMostFacePieces + 1];
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) grid[i][j] = project_vertex(camera_, at(i, j));
   for (int i = 0; i < n; ++i)
     for (int j = 0; i + j < n; ++j) {
-      const Vec3 up[3] = {at(i, j), at(i + 1, j), at(i, j + 1)};
-      add_occluders(polygon, clip_and_project_triangle(camera_, up, polygon), screen_, 0);
+      const ProjectedVertex up[3] = {grid[i][j], grid[i + 1][j], grid[i][j + 1]};
+      add_occluders(polygon, clip_projected_triangle(camera_, up, polygon), screen_, 0);
       if (i + j + 1 < n) {
-        const Vec3 down[3] = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
-        add_occluders(polygon, clip_and_project_triangle(camera_, down, polygon), screen_, 0);
+        const ProjectedVertex down[3] = {grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]};
+        add_occluders(polygon, clip_projected_triangle(camera_, down, polygon), screen_, 0);
       }
     }
 }

@@ -11,12 +11,8 @@ constexpr int kInversionSteps = 6;
 
 }  // namespace
 
-Vec2 PinholeCamera::distort(const Vec2& n) const {
+Vec2 PinholeCamera::distort_other(const Vec2& n) const {
   const real r2 = n.x * n.x + n.y * n.y;
-  if (lens.model == LensModel::kVisp) {
-    const real factor = real(1) + lens.kud * r2;
-    return {n.x * factor, n.y * factor};
-  }
   if (lens.model == LensModel::kOpenCv) {
     const real radial = real(1) + r2 * (lens.k1 + r2 * (lens.k2 + r2 * lens.k3));
     const real xy2 = real(2) * n.x * n.y;
@@ -76,6 +72,23 @@ Vec2 PinholeCamera::distort_direction(const Vec2& pinhole, const Vec2& along) co
   // In pixels: diag(px, py) J diag(1 / px, 1 / py) along.
   const real ax = along.x / px, ay = along.y / py;
   return {px * (j.xx * ax + j.xy * ay), py * (j.yx * ax + j.yy * ay)};
+}
+
+int PinholeCamera::chord_pieces(const Vec2& a, const Vec2& b, const real& tolerance, int most) const {
+  if (!distorted()) return 1;
+  const Vec2 da = distort(a), db = distort(b), dm = distort(real(0.5) * (a + b));
+  // In pixels: the chord of the ends and the middle's offset from its start.
+  const Vec2 chord{px * (db.x - da.x), py * (db.y - da.y)};
+  const Vec2 middle{px * (dm.x - da.x), py * (dm.y - da.y)};
+  const real length = norm(chord);
+  // Squared, which needs no square root: bend^2 = cross^2 / length^2 <= (tolerance n^2)^2.
+  const real cross = chord.x * middle.y - chord.y * middle.x;
+  const real length_squared = dot(chord, chord);
+  const real bend_squared = length_squared > real(0) ? cross * cross / length_squared : dot(middle, middle);
+  const real tolerance_squared = tolerance * tolerance;
+  int pieces = 1;
+  while (pieces < most && bend_squared > tolerance_squared * real(pieces * pieces * pieces * pieces)) ++pieces;
+  return pieces;
 }
 
 PinholeCamera PinholeCamera::scaled(int factor) const {

@@ -77,11 +77,11 @@ bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, cons
 }
 
 /// distances_to_lines through a lens: delta = a x_d + b y_d + c with (x_d, y_d) the distorted
-/// (X / Z, Y / Z), and the Jacobian's (a, b) J_lens (times the weight) kept for gradf. Apart
-/// from the lens, the same operations as the pinhole's (a x + b y + c there).
+/// (X / Z, Y / Z), whose undistorted (x, y) are kept for gradf (lens_gradients). Apart from the
+/// lens, the same operations as the pinhole's (a x + b y + c there).
 bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t, const real* zx, const real* zy,
                             const real* zz, const real* a, const real* b, const real* c, const real* weight, real* x,
-                            real* y, real* inv_z, real* delta, real* fx, real* grad_a, real* grad_b) {
+                            real* y, real* inv_z, real* delta, real* fx, real* normalised_x, real* normalised_y) {
   for (size_t i = 0; i < n; ++i) {
     const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
     if (!(p.z > real(0))) return false;
@@ -92,16 +92,27 @@ bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t
     const Divisor<real> by_z(p.z);
     inv_z[i] = by_z.divide(real(1));
     const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
-    LensJacobian j;
-    const Vec2 d = camera.distort(normalised, j);
+    normalised_x[i] = normalised.x;
+    normalised_y[i] = normalised.y;
+    const Vec2 d = camera.distort(normalised);
     const real distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
-    const real w = weight ? weight[i] : real(1);
     delta[i] = distance;
-    fx[i] = weight ? w * distance : distance;
+    fx[i] = weight ? weight[i] * distance : distance;
+  }
+  return true;
+}
+
+/// The Jacobian's (a, b) J_lens (times the weight) at the undistorted points of the last
+/// evaluation: only where MINPACK asks for the Jacobian, fewer times than it evaluates.
+void lens_gradients(size_t n, const PinholeCamera& camera, const real* normalised_x, const real* normalised_y,
+                    const real* a, const real* b, const real* weight, real* grad_a, real* grad_b) {
+  for (size_t i = 0; i < n; ++i) {
+    LensJacobian j;
+    camera.distort(Vec2{normalised_x[i], normalised_y[i]}, j);
+    const real w = weight ? weight[i] : real(1);
     grad_a[i] = w * sum_of_products(a[i], j.xx, b[i], j.yx);
     grad_b[i] = w * sum_of_products(a[i], j.xy, b[i], j.yy);
   }
-  return true;
 }
 
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
@@ -130,7 +141,10 @@ class PointToLineProblem {
     }
     w.inverse_depth.resize(count_);
     if (camera.distorted())
-      for (int k = 0; k < 2; ++k) w.lens_gradient[k].resize(count_);
+      for (int k = 0; k < 2; ++k) {
+        w.lens_point[k].resize(count_);
+        w.lens_gradient[k].resize(count_);
+      }
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     // The points in millimetres and the distances' coefficients are the solve_pose call's
@@ -245,7 +259,7 @@ class PointToLineProblem {
     if (camera_.distorted()) {
       if (!distances_through_lens(count_, camera_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
                                   u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
-                                  fx, w_.lens_gradient[0].data(), w_.lens_gradient[1].data()))
+                                  fx, w_.lens_point[0].data(), w_.lens_point[1].data()))
         return false;
     } else if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
                                    u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
@@ -265,6 +279,10 @@ class PointToLineProblem {
     const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
     const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
     // Through a lens, (a, b) J_lens at the last evaluation in place of (a, b).
+    if (camera_.distorted())
+      lens_gradients(count_, camera_, w_.lens_point[0].data(), w_.lens_point[1].data(), w_.unweighted[0].data(),
+                     w_.unweighted[1].data(), weighted_ ? weights_ : nullptr, w_.lens_gradient[0].data(),
+                     w_.lens_gradient[1].data());
     const std::vector<real>* k = camera_.distorted() ? w_.lens_gradient : w_.gradient;
     const std::vector<real>* z = turned_;
     const std::vector<real>* p = w_.moved;

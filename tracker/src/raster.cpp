@@ -15,22 +15,7 @@ const real kNear = real(0.01);
 /// every Q4 coordinate under 2^15 for images up to 1920 pixels wide.
 constexpr int kGuardPixels = 64;
 
-/// A vertex projected to the screen, before conversion to integers.
-struct Projected {
-  real x{0};
-  real y{0};
-  real w{0};
-};
-
-Projected project(const PinholeCamera& camera, const Vec3& p) {
-  const real w = real(1) / p.z;
-  if (camera.distorted()) {
-    // Through the lens at the vertices; callers cut what is long into pieces (edge_id_buffer.h).
-    const Vec2 pixel = camera.to_pixel(camera.distort(Vec2{p.x * w, p.y * w}));
-    return {pixel.x, pixel.y, w};
-  }
-  return {camera.u0 + camera.px * p.x * w, camera.v0 + camera.py * p.y * w, w};
-}
+using Projected = ProjectedVertex;
 
 ScreenVertex to_screen(const Projected& p) {
   using std::floor;
@@ -60,7 +45,44 @@ int clip_pass(const V* in, int count, V* out, Distance distance) {
   return n;
 }
 
+/// The projected polygon a (n3 corners) clipped to the screen grown by the guard band, into out.
+int clip_to_guard_band(const PinholeCamera& camera, ProjectedVertex (&a)[kMaxClippedVertices], int n3,
+                       ScreenVertex (&out)[kMaxClippedVertices]) {
+  Projected b[kMaxClippedVertices];
+  const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
+  const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
+  bool on_screen = true;
+  for (int i = 0; i < n3 && on_screen; ++i)
+    on_screen = a[i].x - lo_x >= real(0) && hi_x - a[i].x >= real(0) && a[i].y - lo_y >= real(0) &&
+                hi_y - a[i].y >= real(0);
+  int n = n3;
+  if (!on_screen) {
+    n = clip_pass(a, n, b, [&](const Projected& v) { return v.x - lo_x; });
+    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_x - v.x; });
+    n = clip_pass(a, n, b, [&](const Projected& v) { return v.y - lo_y; });
+    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_y - v.y; });
+  }
+  for (int i = 0; i < n; ++i) out[i] = to_screen(a[i]);
+  return n >= 3 ? n : 0;
+}
+
 }  // namespace
+
+bool in_front_of_near_plane(const Vec3* corners, int count) {
+  for (int i = 0; i < count; ++i)
+    if (corners[i].z - kNear < real(0)) return false;
+  return true;
+}
+
+ProjectedVertex project_vertex(const PinholeCamera& camera, const Vec3& p) {
+  const real w = real(1) / p.z;
+  if (camera.distorted()) {
+    // Through the lens at the vertices; callers cut what is long into pieces (edge_id_buffer.h).
+    const Vec2 pixel = camera.to_pixel(camera.distort(Vec2{p.x * w, p.y * w}));
+    return {pixel.x, pixel.y, w};
+  }
+  return {camera.u0 + camera.px * p.x * w, camera.v0 + camera.py * p.y * w, w};
+}
 
 bool setup_triangle(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& clip, PixelTriangle& t) {
   int64_t area = int64_t(b.x - a.x) * (c.y - a.y) - int64_t(b.y - a.y) * (c.x - a.x);
@@ -129,23 +151,15 @@ int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camer
     if (n3 < 3) return 0;
     in_front = near_clipped;
   }
-  Projected a[kMaxClippedVertices], b[kMaxClippedVertices];
-  for (int i = 0; i < n3; ++i) a[i] = project(camera, in_front[i]);
-  const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
-  const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
-  bool on_screen = true;
-  for (int i = 0; i < n3 && on_screen; ++i)
-    on_screen = a[i].x - lo_x >= real(0) && hi_x - a[i].x >= real(0) && a[i].y - lo_y >= real(0) &&
-                hi_y - a[i].y >= real(0);
-  int n = n3;
-  if (!on_screen) {
-    n = clip_pass(a, n, b, [&](const Projected& v) { return v.x - lo_x; });
-    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_x - v.x; });
-    n = clip_pass(a, n, b, [&](const Projected& v) { return v.y - lo_y; });
-    n = clip_pass(b, n, a, [&](const Projected& v) { return hi_y - v.y; });
-  }
-  for (int i = 0; i < n; ++i) out[i] = to_screen(a[i]);
-  return n >= 3 ? n : 0;
+  Projected a[kMaxClippedVertices];
+  for (int i = 0; i < n3; ++i) a[i] = project_vertex(camera, in_front[i]);
+  return clip_to_guard_band(camera, a, n3, out);
+}
+
+int clip_projected_triangle(const PinholeCamera& camera, const ProjectedVertex (&corners)[3],
+                            ScreenVertex (&out)[kMaxClippedVertices]) {
+  Projected a[kMaxClippedVertices] = {corners[0], corners[1], corners[2]};
+  return clip_to_guard_band(camera, a, 3, out);
 }
 
 bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const Vec3& b, ScreenVertex& sa,
@@ -154,7 +168,11 @@ bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const 
   if (p.z < kNear && q.z < kNear) return false;
   if (p.z < kNear) p = lerp(p, q, (kNear - p.z) / (q.z - p.z));
   if (q.z < kNear) q = lerp(q, p, (kNear - q.z) / (p.z - q.z));
-  Projected pa = project(camera, p), pb = project(camera, q);
+  return clip_projected_segment(camera, project_vertex(camera, p), project_vertex(camera, q), sa, sb);
+}
+
+bool clip_projected_segment(const PinholeCamera& camera, const ProjectedVertex& pa, const ProjectedVertex& pb,
+                            ScreenVertex& sa, ScreenVertex& sb) {
   // Liang-Barsky against the screen rectangle [-0.5, size - 0.5].
   real t0(0), t1(1);
   const real dx = pb.x - pa.x, dy = pb.y - pa.y;

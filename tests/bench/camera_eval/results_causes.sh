@@ -9,21 +9,17 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/camera_causes.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+bench_scratch camera_causes
 edgetrack=$(bench_tree host double edgetrack)/app/edgetrack
 model=$top/data/models/cube60.cao
 fast_speed=4.2           # about 12 px per QVGA frame
 step_up=0:1,29:1,30:1.4   # 40 % brighter from frame 30 on
 
-# value KEY FILE: the value of KEY=... on the first line of FILE that has it.
-value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }
-
 # mean_over POSES TRUTH FIRST LAST: the mean camera position error (mm) over frames FIRST..LAST.
 mean_over() {
   awk -F, -v a="$3" -v b="$4" 'NR == 1 || ($1 >= a && $1 <= b)' "$1" >"$work/part.csv"
   "$edgetrack" eval --poses "$work/part.csv" --truth "$2" --coverage >"$work/part.txt"
-  value distance_mm "$work/part.txt"
+  bench_value distance_mm "$work/part.txt"
 }
 
 # row LABEL OPTIONS...: renders the cube with synth OPTIONS, tracks it with the defaults.
@@ -35,15 +31,12 @@ row() {
   "$edgetrack" track --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
     --images "$seq/frames/frame%04d.pgm" --poses "$work/poses.csv" --quiet >/dev/null
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
-  printf '| %s | `%s` | %d | %.3f | %.3f | %.3f |\n' "$label" "$*" "$(value lost "$work/eval.txt")" \
-    "$(value distance_mm "$work/eval.txt")" "$(mean_over "$work/poses.csv" "$seq/truth.csv" 0 29)" \
+  printf '| %s | `%s` | %d | %.3f | %.3f | %.3f |\n' "$label" "$*" "$(bench_value lost "$work/eval.txt")" \
+    "$(bench_value distance_mm "$work/eval.txt")" "$(mean_over "$work/poses.csv" "$seq/truth.csv" 0 29)" \
     "$(mean_over "$work/poses.csv" "$seq/truth.csv" 30 59)"
 }
 
-echo "## Real cameras: what the rows over 0.5 mm measure (camera_eval_causes)"
-echo
-echo "\`tests/bench/camera_eval/results_causes.sh\`: host double build, $(bench_machine)."
-echo
+bench_heading "Real cameras: what the rows over 0.5 mm measure (camera_eval_causes)" "host double build"
 echo "The generated QVGA cube (\`edgetrack synth --pgm\`, 60 frames, as in camera_eval) tracked with the"
 echo "defaults: the camera position error (mm) over all frames, over frames 0-29 and over 30-59 (an"
 echo "exposure step comes at frame 30). Rolling shutter: the tracker fits one rigid pose to rows seen at"

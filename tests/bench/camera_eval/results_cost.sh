@@ -11,8 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 frames=30   # the first 30 frames of the 60 the profile section counts: the emulator is slow
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/camera_cost.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+bench_scratch camera_cost
 export EDGETRACK_PLUGIN_DIR=$work/plugin
 arm=$(bench_tree arm s40_23 bench_tracker)/tests/bench/tracker/bench_tracker
 host=$(bench_tree host double bench_tracker)/tests/bench/tracker/bench_tracker
@@ -65,9 +64,7 @@ for scene in cube toy; do
   done
 done
 
-echo "## Real cameras: what the lens costs per frame (camera_eval_cost)"
-echo
-echo "\`tests/bench/camera_eval/results_cost.sh\`, $(bench_machine),"
+bench_heading "Real cameras: what the lens costs per frame (camera_eval_cost)" "ARM S40.23 and host double builds"
 echo "$(qemu-arm --version | head -n 1 | sed 's/ (.*//') \`-cpu pxa270\`, $(date -u +%Y-%m-%d)."
 echo
 echo "\`bench_tracker $frames cube|toy ... kud\`: the generated QVGA cube and wood toy ($frames frames, the portable"

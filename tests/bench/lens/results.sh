@@ -32,7 +32,7 @@ echo
 echo "| build | sequence | kud | frames | lens given mm | lens ignored mm | no lens mm | lost (given, ignored, no lens) |"
 echo "|---|---|---:|---:|---:|---:|---:|---|"
 for tree in "$host" "$host_s40"; do
-  for test in test_lens_tracking_cube test_lens_tracking_wood_toy; do
+  for test in test_lens_tracking_cube test_lens_tracking_wood_toy test_lens_tracking_wood_toy_barrel; do
     "$tree/tests/tracker/tracker_sequence_test_all" "$test" >"$work/lens.txt"
     # "<real> <name> through kud = <k>, <n> frames: mean camera position error <a> mm with the
     # lens given, <b> mm ignoring it, <c> mm on the same frames without a lens; lost <x>, <y>, <z>"

@@ -74,6 +74,8 @@ class EdgeIdBuffer {
   /// a pinhole.
   int lens_pieces(const Vec3* corners, int count, const real& bend_pixels, int most) const;
   void add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera, uint16_t code, int exempt_owner);
+  /// One projected, clipped piece of a segment to draw.
+  void add_line(const ScreenVertex& a, const ScreenVertex& b, uint16_t code, int exempt_owner);
   /// A face's triangle as occluders (through a lens, cut into smaller ones).
   void add_face_triangle(const Vec3 (&corners)[3]);
   void collect_segments(const EdgeModel& model, const Se3& camera_from_model);

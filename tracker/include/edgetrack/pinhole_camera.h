@@ -71,8 +71,13 @@ struct PinholeCamera {
     return {n.x * depth, n.y * depth, depth};
   }
 
-  /// Normalised coordinates through the lens, and its derivative there.
-  Vec2 distort(const Vec2& normalised) const;
+  /// Normalised coordinates through the lens (ViSP's model inline: every sample, polyline
+  /// point and pose-step match goes through it), and the lens's derivative there.
+  Vec2 distort(const Vec2& n) const {
+    if (lens.model != LensModel::kVisp) return distort_other(n);
+    const real factor = real(1) + lens.kud * (n.x * n.x + n.y * n.y);
+    return {n.x * factor, n.y * factor};
+  }
   LensJacobian lens_jacobian(const Vec2& normalised) const;
   /// Both at once (the pose step's residuals and Jacobian, every match of every evaluation):
   /// ViSP's model inline, sharing r^2 and its factor.
@@ -94,16 +99,24 @@ struct PinholeCamera {
   /// Distorted normalised coordinates back through the lens: with kdu for ViSP's model, by
   /// inverting the forward model for OpenCV's.
   Vec2 undistort(const Vec2& distorted_normalised) const;
+  /// distort() for the models other than ViSP's.
+  Vec2 distort_other(const Vec2& normalised) const;
   /// The exact inverse of distort() (Newton's method on the forward model), whatever the
   /// model: where a render must land on the pixels project() gives.
   Vec2 invert_distortion(const Vec2& distorted_normalised) const;
 
   Vec2 to_pixel(const Vec2& normalised) const { return {u0 + px * normalised.x, v0 + py * normalised.y}; }
   Vec2 to_normalised(const Vec2& pixel) const { return {(pixel.x - u0) / px, (pixel.y - v0) / py}; }
-  /// The pinhole pixel `pinhole` (the image without the lens) as the lens shows it.
-  Vec2 distort_pixel(const Vec2& pinhole) const { return to_pixel(distort(to_normalised(pinhole))); }
   /// A direction `along` at the pinhole pixel `pinhole`, as the lens turns and stretches it.
   Vec2 distort_direction(const Vec2& pinhole, const Vec2& along) const;
+
+  /// How many pieces of equal parameter the image of the straight normalised segment a-b is cut
+  /// into so that each piece's curve stays within `tolerance` pixels of its chord, at most `most`
+  /// (1 for a pinhole). The bend s, how far the lens puts the image of the middle off the chord
+  /// of the ends' images, leaves s / n^2 over each of n pieces: the curve is a parabola across
+  /// the chord (ViSP's model: the distance d of the line from the centre gives an offset
+  /// d (1 + k r^2), quadratic along it), and a parabola's sagitta falls with its chord squared.
+  int chord_pieces(const Vec2& a, const Vec2& b, const real& tolerance, int most) const;
 
   /// The same camera without its lens.
   PinholeCamera pinhole() const { return {px, py, u0, v0, width, height}; }

@@ -36,6 +36,25 @@ int clip_and_project_triangle(const PinholeCamera& camera, const Vec3 (&in_camer
 bool clip_and_project_segment(const PinholeCamera& camera, const Vec3& a, const Vec3& b, ScreenVertex& sa,
                               ScreenVertex& sb);
 
+/// A point in front of the near plane as the camera (and its lens) shows it: pixel and 1/Z, before
+/// the conversion to integers. Through a lens, a polyline's or a grid's points are projected once
+/// each and their pieces clipped to the screen from these.
+struct ProjectedVertex {
+  real x{0};
+  real y{0};
+  real w{0};
+};
+/// Whether no point of the segment or polygon with these corners is cut by the near plane.
+bool in_front_of_near_plane(const Vec3* corners, int count);
+/// `point` (Z at or beyond the near plane) projected.
+ProjectedVertex project_vertex(const PinholeCamera& camera, const Vec3& point);
+/// clip_and_project_triangle for a triangle wholly in front of the near plane, already projected.
+int clip_projected_triangle(const PinholeCamera& camera, const ProjectedVertex (&corners)[3],
+                            ScreenVertex (&out)[kMaxClippedVertices]);
+/// clip_and_project_segment for a segment wholly in front of the near plane, already projected.
+bool clip_projected_segment(const PinholeCamera& camera, const ProjectedVertex& pa, const ProjectedVertex& pb,
+                            ScreenVertex& sa, ScreenVertex& sb);
+
 /// Pixels [x0, x1] x [y0, y1] of an image, inclusive.
 struct PixelRect {
   int x0 = 0;
