@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "edgetrack/control_points.h"
+#include "edgetrack/me_search_box.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/se3.h"
 #include "real/real.h"
 #include "visp3/core/vpImage.h"
-#include "visp3/me/vpMe.h"
 
 namespace edgetrack {
 
@@ -33,12 +33,13 @@ real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& norma
 /// The support of `pose` along `points` (sampled at another pose, with their normals): the
 /// Sobel gradient where each point's normal crosses its edge projected with `pose` (the
 /// projected point moved back along the edge onto the normal), only inside the pixels the
-/// moving edges searching `range` read for it (me_search_box, where the grey image is up to
-/// date); a point projected elsewhere, or into the image border, is not measured. A point is
-/// measured where the Sobel gradient's magnitude reaches `gradient_floor` (StatusParams says
-/// what the settings stand for).
+/// moving edges read for it (`read_boxes`, one per point: the search's own me_search_box, where
+/// the grey image is up to date); a point projected elsewhere, or into the image border, is not
+/// measured. A point is measured where the Sobel gradient's magnitude reaches `gradient_floor`
+/// and supported where across <= tan(support_angle_deg) along, the tangent that of the angle's
+/// polynomial (StatusParams says what the settings stand for).
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                         const PinholeCamera& camera, const Se3& pose, const vpMe& me, unsigned range,
+                         const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
                          const real& gradient_floor, const real& support_angle_deg);
 
 }  // namespace edgetrack
