@@ -78,24 +78,24 @@ static void test_edge_support() {
   for (const ControlPoint& point : points) boxes.push_back(me_search_box(point, me, range));
   // A 30-level step: Sobel 120 across it.
   const vpImage<unsigned char> edge = step_image(0, 80, 110);
-  const EdgeSupport on = edge_support(edge, points, boxes, kCamera, Se3(), floor, angle);
+  const EdgeSupport on = edge_support(edge, points, boxes, kCamera, Se3(), floor, support_bound(angle));
   TEST_EQUAL("every point looked at", on.visible, static_cast<int>(points.size()));
   TEST_EQUAL("the pose on the edge: every point supported", on.supported, on.visible);
   TEST("at a small angle", on.mean_angle_deg < real(1), true);
   // The same pose 3 px right of the edge (within the range searched): flat image.
   const Se3 beside(Mat33::identity(), Vec3{real(0.03), real(0), real(0)});
-  const EdgeSupport off = edge_support(edge, points, boxes, kCamera, beside, floor, angle);
+  const EdgeSupport off = edge_support(edge, points, boxes, kCamera, beside, floor, support_bound(angle));
   TEST_EQUAL("3 px beside the edge over flat image nothing is measured", off.measured, 0);
   TEST_EQUAL("nor supported", off.supported, 0);
   // Beyond the range searched the grey image is not the frame's: not read.
   const Se3 far(Mat33::identity(), Vec3{real(-0.2), real(0), real(0)});
   TEST_EQUAL("beyond the range searched nothing is read",
-             edge_support(edge, points, boxes, kCamera, far, floor, angle).measured, 0);
+             edge_support(edge, points, boxes, kCamera, far, floor, support_bound(angle)).measured, 0);
   // A weak step (5 levels, Sobel 20) is under the floor.
   TEST_EQUAL("a step under the gradient floor is not measured",
-             edge_support(step_image(0, 80, 85), points, boxes, kCamera, Se3(), floor, angle).measured, 0);
+             edge_support(step_image(0, 80, 85), points, boxes, kCamera, Se3(), floor, support_bound(angle)).measured, 0);
   // An edge turned 60 degrees from the model's: measured, not supported.
-  const EdgeSupport turned = edge_support(step_image(60, 80, 140), points, boxes, kCamera, Se3(), floor, angle);
+  const EdgeSupport turned = edge_support(step_image(60, 80, 140), points, boxes, kCamera, Se3(), floor, support_bound(angle));
   TEST("an edge turned 60 degrees is measured", turned.measured > 0, true);
   TEST_EQUAL("but supports nothing", turned.supported, 0);
   TEST_NEAR("at about 60 degrees", turned.mean_angle_deg, 60.0, 5.0);
@@ -106,7 +106,7 @@ static void test_edge_support() {
     std::vector<PixelBox> turned_boxes;
     for (const ControlPoint& point : turned_points) turned_boxes.push_back(me_search_box(point, me, range));
     const real limit = turn < 45 ? angle : real(60);
-    const EdgeSupport s = edge_support(edge, turned_points, turned_boxes, kCamera, Se3(), floor, limit);
+    const EdgeSupport s = edge_support(edge, turned_points, turned_boxes, kCamera, Se3(), floor, support_bound(limit));
     TEST_EQUAL("normals turned from the gradient: every point measured", s.measured, s.visible);
     TEST_NEAR("at the turn", s.mean_angle_deg, turn, 0.1);
     TEST_EQUAL("supported within the support angle, none past it", s.supported, turn < static_cast<double>(limit) ? s.visible : 0);

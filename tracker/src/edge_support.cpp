@@ -20,39 +20,42 @@ int nearest_pixel(const real& x) {
   return static_cast<int>(floor(x + real(0.5)));
 }
 
-/// The tangent t in [0, 1] whose arctangent_deg is `angle_deg` (at most 45), by bisection: the
-/// polynomial rises monotonically on [0, 1], so across <= t along is exactly the test
-/// arctangent_deg(across / along) <= angle_deg, with no division.
-real tangent_of(const real& angle_deg) {
-  real low(0), high(1);
-  for (int step = 0; step < 40; ++step) {
-    const real middle = (low + high) / real(2);
-    if (arctangent_deg(middle) <= angle_deg) low = middle;
-    else high = middle;
-  }
-  return low;
+/// The angle atan(across / along) in degrees, [0, 90], of a gradient's magnitudes along and
+/// across a normal.
+real angle_of_components(const real& along, const real& across) {
+  if (along == real(0) && across == real(0)) return real(0);
+  if (across <= along) return arctangent_deg(across / along);
+  return real(90) - arctangent_deg(along / across);
 }
 
 }  // namespace
 
 real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& normal) {
   using std::fabs;
-  const real along = fabs(gx * normal.x + gy * normal.y);
-  const real across = fabs(gx * normal.y - gy * normal.x);
-  if (along == real(0) && across == real(0)) return real(0);
-  if (across <= along) return arctangent_deg(across / along);
-  return real(90) - arctangent_deg(along / across);
+  return angle_of_components(fabs(gx * normal.x + gy * normal.y), fabs(gx * normal.y - gy * normal.x));
+}
+
+SupportBound support_bound(const real& support_angle_deg) {
+  // Bisection on [0, 1], where the polynomial rises monotonically: arctangent_deg(tangent) is
+  // at most the angle, so across <= tangent along gives arctangent_deg(across / along)'s verdict.
+  SupportBound bound;
+  bound.within_45 = support_angle_deg <= real(45);
+  const real angle = bound.within_45 ? support_angle_deg : real(90) - support_angle_deg;
+  real low(0), high(1);
+  for (int step = 0; step < 48; ++step) {
+    const real middle = (low + high) * real(0.5);
+    if (arctangent_deg(middle) <= angle) low = middle;
+    else high = middle;
+  }
+  bound.tangent = low;
+  return bound;
 }
 
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                          const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
-                         const real& gradient_floor, const real& support_angle_deg) {
+                         const real& gradient_floor, const SupportBound& bound) {
   using std::fabs;
   EdgeSupport support;
-  // Supported: the angle atan(across / along) at most support_angle_deg; past 45 degrees the
-  // test turns to along / across at least the tangent of its complement.
-  const bool within_45 = support_angle_deg <= real(45);
-  const real tangent = tangent_of(within_45 ? support_angle_deg : real(90) - support_angle_deg);
   support.visible = static_cast<int>(points.size());
   const int height = static_cast<int>(grey.getHeight()), width = static_cast<int>(grey.getWidth());
   const real floor_squared = gradient_floor * gradient_floor;
@@ -81,8 +84,8 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
     const real along = fabs(real(gx) * point.normal.x + real(gy) * point.normal.y);
     const real across = fabs(real(gx) * point.normal.y - real(gy) * point.normal.x);
     ++support.measured;
-    angle_sum += gradient_normal_angle_deg(real(gx), real(gy), point.normal);
-    if (within_45 ? across <= tangent * along : along >= tangent * across) ++support.supported;
+    angle_sum += angle_of_components(along, across);
+    if (bound.within_45 ? across <= bound.tangent * along : along >= bound.tangent * across) ++support.supported;
   }
   if (support.measured > 0) support.mean_angle_deg = angle_sum / real(support.measured);
   return support;

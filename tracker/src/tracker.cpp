@@ -85,6 +85,7 @@ class Tracker::State {
   PinholeCamera camera_;
   TrackerParams params_;
   vpMe me_;  ///< the masks of params_.me, built once per settings
+  SupportBound support_bound_;  ///< params_.status.support_angle_deg's test, once per settings
   FaceVisibility face_visibility_;
   FaceVisibility faces_before_;  ///< face_visibility_ before this frame, for a retry
   Se3 camera_from_model_;
@@ -185,6 +186,7 @@ Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const
       camera_(camera),
       params_(params),
       me_(moving_edge_masks(params.me)),
+      support_bound_(support_bound(params.status.support_angle_deg)),
       face_visibility_(model),
       faces_before_(model),
       camera_from_model_(initial),
@@ -207,6 +209,7 @@ std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
 void Tracker::State::set_params(const TrackerParams& params) {
   params_ = params;
   me_ = moving_edge_masks(params.me);
+  support_bound_ = support_bound(params.status.support_angle_deg);
   motion_.set_params(params.motion);
 }
 
@@ -340,8 +343,8 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
       pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
-  const EdgeSupport support = edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor,
-                                           params_.status.support_angle_deg);
+  const EdgeSupport support =
+      edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_);
   m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
   m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =
