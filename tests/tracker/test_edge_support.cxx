@@ -7,6 +7,7 @@
 
 #include "edgetrack/angles.h"
 #include "edgetrack/edge_support.h"
+#include "edgetrack/me_search_box.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/tracker_params.h"
 #include "testlib/testlib_test.h"
@@ -31,15 +32,16 @@ vpImage<unsigned char> step_image(double tilt_deg, int dark, int bright) {
   return image;
 }
 
-/// Control points on the vertical line x = 49.5 at depth 1, normal +x, every 5 rows.
-std::vector<ControlPoint> vertical_points() {
+/// Control points on the vertical line x = 49.5 at depth 1, every 5 rows, their normal +x turned
+/// by `normal_deg`.
+std::vector<ControlPoint> vertical_points(double normal_deg = 0) {
   std::vector<ControlPoint> points;
   for (int r = 20; r <= 80; r += 5) {
     ControlPoint p;
     p.pixel = Vec2{real(49.5), real(r)};
     p.point_in_model = kCamera.unproject(p.pixel, real(1));
     p.direction = Vec2{real(0), real(1)};
-    p.normal = Vec2{real(1), real(0)};
+    p.normal = Vec2{real(std::cos(normal_deg * kRadiansPerDegree)), real(std::sin(normal_deg * kRadiansPerDegree))};
     points.push_back(p);
   }
   return points;
@@ -72,29 +74,43 @@ static void test_edge_support() {
   const std::vector<ControlPoint> points = vertical_points();
   const real floor(40), angle(30);
   const unsigned range = 4;
+  std::vector<PixelBox> boxes;
+  for (const ControlPoint& point : points) boxes.push_back(me_search_box(point, me, range));
   // A 30-level step: Sobel 120 across it.
   const vpImage<unsigned char> edge = step_image(0, 80, 110);
-  const EdgeSupport on = edge_support(edge, points, kCamera, Se3(), me, range, floor, angle);
+  const EdgeSupport on = edge_support(edge, points, boxes, kCamera, Se3(), floor, support_bound(angle));
   TEST_EQUAL("every point looked at", on.visible, static_cast<int>(points.size()));
   TEST_EQUAL("the pose on the edge: every point supported", on.supported, on.visible);
   TEST("at a small angle", on.mean_angle_deg < real(1), true);
   // The same pose 3 px right of the edge (within the range searched): flat image.
   const Se3 beside(Mat33::identity(), Vec3{real(0.03), real(0), real(0)});
-  const EdgeSupport off = edge_support(edge, points, kCamera, beside, me, range, floor, angle);
+  const EdgeSupport off = edge_support(edge, points, boxes, kCamera, beside, floor, support_bound(angle));
   TEST_EQUAL("3 px beside the edge over flat image nothing is measured", off.measured, 0);
   TEST_EQUAL("nor supported", off.supported, 0);
   // Beyond the range searched the grey image is not the frame's: not read.
   const Se3 far(Mat33::identity(), Vec3{real(-0.2), real(0), real(0)});
   TEST_EQUAL("beyond the range searched nothing is read",
-             edge_support(edge, points, kCamera, far, me, range, floor, angle).measured, 0);
+             edge_support(edge, points, boxes, kCamera, far, floor, support_bound(angle)).measured, 0);
   // A weak step (5 levels, Sobel 20) is under the floor.
   TEST_EQUAL("a step under the gradient floor is not measured",
-             edge_support(step_image(0, 80, 85), points, kCamera, Se3(), me, range, floor, angle).measured, 0);
+             edge_support(step_image(0, 80, 85), points, boxes, kCamera, Se3(), floor, support_bound(angle)).measured, 0);
   // An edge turned 60 degrees from the model's: measured, not supported.
-  const EdgeSupport turned = edge_support(step_image(60, 80, 140), points, kCamera, Se3(), me, range, floor, angle);
+  const EdgeSupport turned = edge_support(step_image(60, 80, 140), points, boxes, kCamera, Se3(), floor, support_bound(angle));
   TEST("an edge turned 60 degrees is measured", turned.measured > 0, true);
   TEST_EQUAL("but supports nothing", turned.supported, 0);
   TEST_NEAR("at about 60 degrees", turned.mean_angle_deg, 60.0, 5.0);
+  // Points on the edge whose normals are turned against its gradient: supported up to the
+  // support angle (the tangent test), past it not, on either side of 45 degrees.
+  for (const double turn : {29.0, 31.0, 55.0, 65.0}) {
+    const std::vector<ControlPoint> turned_points = vertical_points(turn);
+    std::vector<PixelBox> turned_boxes;
+    for (const ControlPoint& point : turned_points) turned_boxes.push_back(me_search_box(point, me, range));
+    const real limit = turn < 45 ? angle : real(60);
+    const EdgeSupport s = edge_support(edge, turned_points, turned_boxes, kCamera, Se3(), floor, support_bound(limit));
+    TEST_EQUAL("normals turned from the gradient: every point measured", s.measured, s.visible);
+    TEST_NEAR("at the turn", s.mean_angle_deg, turn, 0.1);
+    TEST_EQUAL("supported within the support angle, none past it", s.supported, turn < static_cast<double>(limit) ? s.visible : 0);
+  }
 }
 
 TESTMAIN(test_edge_support)

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "edgetrack/me_search_box.h"
-
 namespace edgetrack {
 namespace {
 
@@ -22,26 +20,48 @@ int nearest_pixel(const real& x) {
   return static_cast<int>(floor(x + real(0.5)));
 }
 
-}  // namespace
-
-real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& normal) {
-  using std::fabs;
-  const real along = fabs(gx * normal.x + gy * normal.y);
-  const real across = fabs(gx * normal.y - gy * normal.x);
+/// The angle atan(across / along) in degrees, [0, 90], of a gradient's magnitudes along and
+/// across a normal.
+real angle_of_components(const real& along, const real& across) {
   if (along == real(0) && across == real(0)) return real(0);
   if (across <= along) return arctangent_deg(across / along);
   return real(90) - arctangent_deg(along / across);
 }
 
+}  // namespace
+
+real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& normal) {
+  using std::fabs;
+  return angle_of_components(fabs(gx * normal.x + gy * normal.y), fabs(gx * normal.y - gy * normal.x));
+}
+
+SupportBound support_bound(const real& support_angle_deg) {
+  // Bisection on [0, 1], where the polynomial rises monotonically: arctangent_deg(tangent) is
+  // at most the angle, so across <= tangent along gives arctangent_deg(across / along)'s verdict.
+  SupportBound bound;
+  bound.within_45 = support_angle_deg <= real(45);
+  const real angle = bound.within_45 ? support_angle_deg : real(90) - support_angle_deg;
+  real low(0), high(1);
+  for (int step = 0; step < 48; ++step) {
+    const real middle = (low + high) * real(0.5);
+    if (arctangent_deg(middle) <= angle) low = middle;
+    else high = middle;
+  }
+  bound.tangent = low;
+  return bound;
+}
+
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                         const PinholeCamera& camera, const Se3& pose, const vpMe& me, unsigned range,
-                         const real& gradient_floor, const real& support_angle_deg) {
+                         const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
+                         const real& gradient_floor, const SupportBound& bound) {
+  using std::fabs;
   EdgeSupport support;
   support.visible = static_cast<int>(points.size());
   const int height = static_cast<int>(grey.getHeight()), width = static_cast<int>(grey.getWidth());
   const real floor_squared = gradient_floor * gradient_floor;
   real angle_sum(0);
-  for (const ControlPoint& point : points) {
+  for (size_t p = 0; p < points.size(); ++p) {
+    const ControlPoint& point = points[p];
     const Vec3 in_camera = pose * point.point_in_model;
     if (in_camera.z <= real(0)) continue;
     // Where the edge projected with `pose` crosses the point's normal: the point's search path,
@@ -50,7 +70,7 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
     const Vec2 pixel = point.pixel + shift * point.normal;
     // Read only where this frame's grey image is up to date for the point, one pixel inside
     // for the Sobel's 3x3 neighbourhood.
-    const PixelBox box = me_search_box(point, me, range);
+    const PixelBox& box = read_boxes[p];
     const real top = real(std::max(box.top, 0) + 1), left = real(std::max(box.left, 0) + 1);
     const real bottom = real(std::min(box.bottom, height) - 2), right = real(std::min(box.right, width) - 2);
     if (!(pixel.y >= top && pixel.y <= bottom && pixel.x >= left && pixel.x <= right)) continue;
@@ -61,10 +81,11 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
     const int gx = (above[c + 1] + 2 * row[c + 1] + below[c + 1]) - (above[c - 1] + 2 * row[c - 1] + below[c - 1]);
     const int gy = (below[c - 1] + 2 * below[c] + below[c + 1]) - (above[c - 1] + 2 * above[c] + above[c + 1]);
     if (real(gx * gx + gy * gy) < floor_squared) continue;
-    const real angle = gradient_normal_angle_deg(real(gx), real(gy), point.normal);
+    const real along = fabs(real(gx) * point.normal.x + real(gy) * point.normal.y);
+    const real across = fabs(real(gx) * point.normal.y - real(gy) * point.normal.x);
     ++support.measured;
-    angle_sum += angle;
-    if (angle <= support_angle_deg) ++support.supported;
+    angle_sum += angle_of_components(along, across);
+    if (bound.within_45 ? across <= bound.tangent * along : along >= bound.tangent * across) ++support.supported;
   }
   if (support.measured > 0) support.mean_angle_deg = angle_sum / real(support.measured);
   return support;

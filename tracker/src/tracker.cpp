@@ -85,6 +85,7 @@ class Tracker::State {
   PinholeCamera camera_;
   TrackerParams params_;
   vpMe me_;  ///< the masks of params_.me, built once per settings
+  SupportBound support_bound_;  ///< params_.status.support_angle_deg's test, once per settings
   FaceVisibility face_visibility_;
   FaceVisibility faces_before_;  ///< face_visibility_ before this frame, for a retry
   Se3 camera_from_model_;
@@ -101,6 +102,7 @@ class Tracker::State {
   // they have grown to the largest frame seen.
   std::vector<ControlPoint> sampled_;
   std::vector<ControlPoint> visible_;
+  std::vector<PixelBox> read_boxes_;  ///< per visible point, the pixels its moving-edge search reads
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
@@ -111,9 +113,9 @@ class Tracker::State {
   StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
 
  private:
-  /// The grey step: converts what the moving edges searching `range` will read and returns the
-  /// image they read.
-  const vpImage<unsigned char>& grey_scale(const FrameView& frame, unsigned range, unsigned int& converted);
+  /// The grey step: converts what the moving edges will read (read_boxes_) and returns the image
+  /// they read.
+  const vpImage<unsigned char>& grey_scale(const FrameView& frame, unsigned int& converted);
   void begin(Step step) {
     if (step_observer_) step_observer_->begin(step);
   }
@@ -184,6 +186,7 @@ Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const
       camera_(camera),
       params_(params),
       me_(moving_edge_masks(params.me)),
+      support_bound_(support_bound(params.status.support_angle_deg)),
       face_visibility_(model),
       faces_before_(model),
       camera_from_model_(initial),
@@ -206,11 +209,11 @@ std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
 void Tracker::State::set_params(const TrackerParams& params) {
   params_ = params;
   me_ = moving_edge_masks(params.me);
+  support_bound_ = support_bound(params.status.support_angle_deg);
   motion_.set_params(params.motion);
 }
 
-const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned range,
-                                                         unsigned int& converted) {
+const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
   converted = 0;
   if (grey_in_place(frame)) {
     // Only read through const references: the moving edges never write the grey image.
@@ -224,7 +227,7 @@ const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame,
   // The points' read boxes themselves: whole 8x8 tiles around them, measured on the cube
   // sequence, converted twice the pixels at twice the guest instructions.
   grey_boxes_.clear();
-  for (const ControlPoint& point : visible_) grey_boxes_.add(me_search_box(point, me_, range));
+  for (const PixelBox& box : read_boxes_) grey_boxes_.add(box);
   converted = grey_boxes_.convert(frame, grey_);
   return grey_;
 }
@@ -292,7 +295,9 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
   unsigned int converted = 0;
-  const vpImage<unsigned char>& grey = grey_scale(frame, range, converted);
+  read_boxes_.clear();
+  for (const ControlPoint& point : visible_) read_boxes_.push_back(me_search_box(point, me_, range));
+  const vpImage<unsigned char>& grey = grey_scale(frame, converted);
   result.grey_pixels += converted;
   end(Step::kGreyScaling);
   clock.lap(Step::kGreyScaling, result);
@@ -338,8 +343,8 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
       pose_uncertainty_px(matches_, model_, camera_, solved, sigma, params_.pose.tukey_c, params_.pose.tukey_floor);
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
-  const EdgeSupport support = edge_support(grey, visible_, camera_, solved, me_, range, params_.status.gradient_floor,
-                                           params_.status.support_angle_deg);
+  const EdgeSupport support =
+      edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_);
   m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
   m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =

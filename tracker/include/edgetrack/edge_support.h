@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "edgetrack/control_points.h"
+#include "edgetrack/me_search_box.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/se3.h"
 #include "real/real.h"
 #include "visp3/core/vpImage.h"
-#include "visp3/me/vpMe.h"
 
 namespace edgetrack {
 
@@ -30,15 +30,27 @@ struct EdgeSupport {
 /// across and along the normal, by a polynomial within 0.1 degree of the arctangent.
 real gradient_normal_angle_deg(const real& gx, const real& gy, const Vec2& normal);
 
+/// The support test of an angle bound, computed once per setting (support_bound): a gradient
+/// whose magnitudes along and across the normal are along and across is within the bound when
+/// across <= tangent along (a bound of at most 45 degrees), else when along >= tangent across
+/// (tangent that of the bound's complement). The tangent is the one whose polynomial arctangent
+/// is the angle, so the test is the angle's own verdict without its division.
+struct SupportBound {
+  real tangent{0};
+  bool within_45 = true;
+};
+SupportBound support_bound(const real& support_angle_deg);
+
 /// The support of `pose` along `points` (sampled at another pose, with their normals): the
 /// Sobel gradient where each point's normal crosses its edge projected with `pose` (the
 /// projected point moved back along the edge onto the normal), only inside the pixels the
-/// moving edges searching `range` read for it (me_search_box, where the grey image is up to
-/// date); a point projected elsewhere, or into the image border, is not measured. A point is
-/// measured where the Sobel gradient's magnitude reaches `gradient_floor` (StatusParams says
-/// what the settings stand for).
+/// moving edges read for it (`read_boxes`, one per point: the search's own me_search_box, where
+/// the grey image is up to date); a point projected elsewhere, or into the image border, is not
+/// measured. A point is measured where the Sobel gradient's magnitude reaches `gradient_floor`
+/// and supported within `bound` (support_bound of StatusParams::support_angle_deg; StatusParams
+/// says what the settings stand for).
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
-                         const PinholeCamera& camera, const Se3& pose, const vpMe& me, unsigned range,
-                         const real& gradient_floor, const real& support_angle_deg);
+                         const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
+                         const real& gradient_floor, const SupportBound& bound);
 
 }  // namespace edgetrack
