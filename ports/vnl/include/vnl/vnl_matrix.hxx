@@ -636,7 +636,7 @@ template <class T>
 bool vnl_matrix<T>::is_equal(const vnl_matrix& rhs, double tol) const {
   if (rhs.num_rows_ != num_rows_ || rhs.num_cols_ != num_cols_) return false;
   for (std::size_t i = 0; i < size(); ++i) {
-    if (static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) > tol) return false;
+    if (!(static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) <= tol)) return false;  // NaN is unequal
   }
   return true;
 }

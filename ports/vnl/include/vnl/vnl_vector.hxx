@@ -476,7 +476,7 @@ template <class T>
 bool vnl_vector<T>::is_equal(const vnl_vector& rhs, double tol) const {
   if (rhs.size() != size()) return false;
   for (std::size_t i = 0; i < num_elmts_; ++i) {
-    if (static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) > tol) return false;
+    if (!(static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) <= tol)) return false;  // NaN is unequal
   }
   return true;
 }
@@ -556,18 +556,27 @@ vnl_vector<T> element_quotient(const vnl_vector<T>& a, const vnl_vector<T>& b) {
 }
 
 template <class T>
-typename vnl_numeric_traits<T>::abs_t angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
-  using abs_t = typename vnl_numeric_traits<T>::abs_t;
-  using std::acos;
-  const abs_t norms = a.two_norm() * b.two_norm();
-  abs_t cosine = abs_t(vnl_math::abs(inner_product(a, b))) / norms;
-  if (cosine > abs_t(1)) cosine = abs_t(1);
-  return abs_t(acos(cosine));
+T cos_angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
+  using real_t = typename vnl_numeric_traits<T>::real_t;
+  using abs_r = typename vnl_numeric_traits<typename vnl_numeric_traits<T>::abs_t>::real_t;
+  using std::sqrt;
+  const real_t ab = real_t(inner_product(a, b));
+  const real_t norms = real_t(sqrt(abs_r(a.squared_magnitude() * b.squared_magnitude())));
+  return T(ab / norms);
+}
+
+template <class T>
+double angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
+  using abs_r = typename vnl_numeric_traits<typename vnl_numeric_traits<T>::abs_t>::real_t;
+  const abs_r c = abs_r(cos_angle(a, b));
+  if (c >= abs_r(1)) return 0;
+  if (c <= abs_r(-1)) return vnl_math::pi;
+  return std::acos(c);
 }
 
 template <class T>
 T vnl_cross_2d(const vnl_vector<T>& a, const vnl_vector<T>& b) {
-  assert(a.size() == 2 && b.size() == 2);
+  assert(a.size() >= 2 && b.size() >= 2);  // as upstream: the first two elements of longer vectors
   return a[0] * b[1] - a[1] * b[0];
 }
 
