@@ -43,6 +43,14 @@ bool read_element(std::istream& s, T& x) {
     return true;
   }
 }
+/// The square root of a norm, taken in the norm type's real_t as upstream (double for the
+/// integers and vnl_rational, the type itself for float, double and fixed point).
+template <class A>
+A root(const A& x) {
+  using std::sqrt;
+  using real_t = typename vnl_numeric_traits<A>::real_t;
+  return A(sqrt(real_t(x)));
+}
 /// The order min_value and arg_min use: <, or the magnitude for complex values.
 template <class T>
 bool less(const T& a, const T& b) {
@@ -340,8 +348,7 @@ typename vnl_vector<T>::abs_t vnl_vector<T>::one_norm() const {
 
 template <class T>
 typename vnl_vector<T>::abs_t vnl_vector<T>::two_norm() const {
-  using std::sqrt;
-  return abs_t(sqrt(squared_magnitude()));
+  return vnl_detail::root(squared_magnitude());
 }
 
 template <class T>
@@ -356,8 +363,7 @@ typename vnl_vector<T>::abs_t vnl_vector<T>::inf_norm() const {
 
 template <class T>
 typename vnl_vector<T>::abs_t vnl_vector<T>::rms() const {
-  using std::sqrt;
-  return empty() ? abs_t(0) : abs_t(sqrt(squared_magnitude() / abs_t(static_cast<int>(num_elmts_))));
+  return empty() ? abs_t(0) : vnl_detail::root(abs_t(squared_magnitude() / abs_t(static_cast<int>(num_elmts_))));
 }
 
 template <class T>
