@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The vnl_matrix / vnl_vector interface that upstream's vnl_matrix_fixed and vnl_vector_fixed
 // also have, and the conversions between fixed and dense containers, each found missing when
-// upstream's test_container_interface, test_matrix_fixed, test_vector, test_quaternion and
-// test_diag_matrix were compiled against ports/ (tests/ports/upstream/check-vxl-tests.sh).
+// upstream's test_container_interface, test_matrix_fixed, test_vector, test_quaternion,
+// test_diag_matrix, test_diag_matrix_fixed and test_matrix_fixed_ref were compiled against
+// ports/ (tests/ports/upstream/check-vxl-tests.sh).
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <utility>
 
 #include "testlib/testlib_test.h"
 #include "vnl/vnl_c_vector.h"
+#include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+#include "vnl/vnl_matrix_fixed_ref.h"
 #include "vnl/vnl_quaternion.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
@@ -135,6 +140,32 @@ void test_angles_and_std() {
   TEST("vnl_cross_2d takes the first two elements of longer vectors", vnl_cross_2d(x, y), 1.0f);
 }
 
+void test_diag_matrix_fixed_with_fixed() {
+  vnl_diag_matrix_fixed<double, 2> d;
+  d(0, 0) = 2;  // element assignment, as upstream
+  d(1, 1) = 3;
+  const vnl_matrix_fixed<double, 2, 2> ones(1.0);
+  const vnl_matrix_fixed<double, 2, 2> sum = d + ones, diff = ones - d, rdiff = d - ones;
+  TEST("diag + fixed", sum(0, 0) == 3 && sum(1, 1) == 4 && sum(0, 1) == 1, true);
+  TEST("fixed - diag", diff(0, 0) == -1 && diff(1, 0) == 1, true);
+  TEST("diag - fixed", rdiff(1, 1) == 2 && rdiff(0, 1) == -1, true);
+  const vnl_vector_fixed<double, 2> v(1.0, 1.0);
+  const vnl_vector_fixed<double, 2> vd = v * d;
+  TEST("vector * diag", vd[0] == 2 && vd[1] == 3, true);
+  std::ostringstream out;
+  out << d;
+  TEST("<< prints diag([ d0 d1 ])", out.str(), std::string("diag([ 2 3 ])"));
+}
+
+void test_matrix_fixed_ref_arithmetic() {
+  vnl_matrix_fixed<double, 2, 2> a(1.0), b(2.0);
+  const vnl_matrix_fixed_ref<double, 2, 2> ra(a);
+  const vnl_matrix_fixed_ref_const<double, 2, 2> rb(b);
+  TEST("a view's begin/end are the viewed block", ra.begin() == a.data_block() && rb.end() - rb.begin() == 4, true);
+  TEST("view + view", (ra + rb)(1, 0), 3.0);
+  TEST("view - view", (ra - rb)(0, 1), -1.0);
+}
+
 void test_vxl_fixed_api() {
   test_matrix_fixed_shape_and_assignment();
   test_matrix_fixed_members();
@@ -142,6 +173,8 @@ void test_vxl_fixed_api() {
   test_vector_fixed_members();
   test_quaternion_from_fixed();
   test_angles_and_std();
+  test_diag_matrix_fixed_with_fixed();
+  test_matrix_fixed_ref_arithmetic();
 }
 
 }  // namespace

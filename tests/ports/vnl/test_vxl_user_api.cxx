@@ -4,13 +4,18 @@
 // (tests/ports/upstream/check-vxl-tests.sh): included only through the headers those tests
 // include, with upstream's behaviour.
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "testlib/testlib_test.h"
+#include "vnl/vnl_complexify.h"
+#include "vnl/vnl_diag_matrix.h"
+#include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_finite.h"
+#include "vnl/vnl_imag.h"
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
@@ -18,6 +23,7 @@
 #include "vnl/vnl_polynomial.h"
 #include "vnl/vnl_rational.h"
 #include "vnl/vnl_rational_traits.h"
+#include "vnl/vnl_real.h"
 #include "vnl/vnl_real_polynomial.h"
 #include "vnl/vnl_rotation_matrix.h"
 #include "vnl/vnl_sym_matrix.h"
@@ -173,6 +179,22 @@ void test_rational_as_upstream() {
   TEST("vnl_matrix<vnl_rational> is instantiated", m(0, 1), vnl_rational(4, 5));
 }
 
+void test_complexify_diag_and_sym() {
+  const vnl_diag_matrix<double> re(2, 1.5), im(2, -2.0);
+  const vnl_diag_matrix<std::complex<double>> c = vnl_complexify(re, im);
+  TEST("vnl_complexify(diag, diag)", c(1, 1), std::complex<double>(1.5, -2.0));
+  TEST("vnl_real / vnl_imag of a complex diag", vnl_real(c)(0, 0) == 1.5 && vnl_imag(c)(1, 1) == -2.0, true);
+  const vnl_diag_matrix_fixed<float, 2> fixed_re(3.0f);
+  TEST("vnl_complexify(diag fixed)", vnl_complexify(fixed_re)(1, 1), std::complex<float>(3.0f, 0.0f));
+  TEST("vnl_imag(diag fixed)", vnl_imag(vnl_complexify(fixed_re, fixed_re))(0, 0), 3.0f);
+  const vnl_sym_matrix<double> sym_re(2, 4.0), sym_im(2, 5.0);
+  const vnl_sym_matrix<std::complex<double>> sym = vnl_complexify(sym_re, sym_im);
+  TEST("vnl_complexify(sym, sym)", sym(0, 1), std::complex<double>(4.0, 5.0));
+  TEST("vnl_real(complex sym)", vnl_real(sym)(1, 0), 4.0);
+  const vnl_vector_fixed<double, 2> vr(1.0, 2.0), vi(3.0, 4.0);
+  TEST("vnl_complexify(fixed, fixed)", vnl_complexify(vr, vi)[1], std::complex<double>(2.0, 4.0));
+}
+
 void test_vxl_user_api() {
   test_c_vector_through_vector_h();
   test_math_constants();
@@ -185,6 +207,7 @@ void test_vxl_user_api() {
   test_finite_zero_divisor();
   test_math_rounding_and_classes();
   test_rational_as_upstream();
+  test_complexify_diag_and_sym();
 }
 
 }  // namespace

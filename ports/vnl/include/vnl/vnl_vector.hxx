@@ -577,7 +577,8 @@ double angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
   const abs_r c = abs_r(cos_angle(a, b));
   if (c >= abs_r(1)) return 0;
   if (c <= abs_r(-1)) return vnl_math::pi;
-  return std::acos(c);
+  using std::acos;  // fixed point finds its own acos
+  return static_cast<double>(acos(c));
 }
 
 template <class T>
