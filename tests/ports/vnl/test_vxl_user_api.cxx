@@ -12,6 +12,8 @@
 
 #include "testlib/testlib_test.h"
 #include "vnl/vnl_complexify.h"
+#include "vnl/vnl_decnum.h"
+#include "vnl/vnl_decnum_traits.h"
 #include "vnl/vnl_diag_matrix.h"
 #include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_finite.h"
@@ -136,6 +138,13 @@ void test_polynomials() {
   p[1] = vnl_rational(1, 2);
   p[0] = vnl_rational(1, 3);
   TEST("vnl_polynomial<vnl_rational> evaluates exactly", p.evaluate(vnl_rational(2)), vnl_rational(4, 3));
+  std::ostringstream printed;
+  printed << p;
+  TEST("vnl_polynomial<vnl_rational> prints its coefficients as rationals", printed.str(), std::string(" 1/2 X +1/3"));
+  vnl_polynomial<vnl_decnum> q(1);
+  q[1] = vnl_decnum(3);
+  q[0] = vnl_decnum(-1);
+  TEST("vnl_polynomial<vnl_decnum> is instantiated", q.evaluate(vnl_decnum(2)), vnl_decnum(5));
 }
 
 void test_finite_zero_divisor() {
