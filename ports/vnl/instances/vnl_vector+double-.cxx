@@ -5,5 +5,8 @@
 inline namespace edgetrack_ports {
 
 VNL_VECTOR_INSTANTIATE(double);
+/// cos_angle() and angle() need a floating-point square root and acos: only float and double have them compiled in.
+template double cos_angle(const vnl_vector<double>&, const vnl_vector<double>&);
+template double angle(const vnl_vector<double>&, const vnl_vector<double>&);
 
 }  // inline namespace edgetrack_ports

@@ -13,25 +13,21 @@ namespace {
 using int_type = vnl_rational::int_type;
 constexpr double kMaxInt = 9.2233720368547748e18;  // just below 2^63: products past it overflow
 
-/// The continued fraction of d, stopped when the next convergent would overflow or d is exact.
+/// The continued fraction of d with upstream's stopping rule: a convergent is taken while the
+/// remainder times the current numerator and denominator stays below 1e9, and the expansion
+/// stops once the remainder drops under 1e-6 (so 0.42857142857 gives 3/7). Magnitudes from
+/// 1e9 up, and infinities, give +-infinity, as upstream.
 void continued_fraction(double d, int_type& num, int_type& den) {
   const bool negative = d < 0;
   double x = negative ? -d : d;
-  if (x >= kMaxInt) {  // beyond the 64-bit range: infinity
-    num = negative ? -1 : 1, den = 0;
-    return;
-  }
   int_type p0 = 0, q0 = 1, p1 = 1, q1 = 0;  // convergents p/q
-  for (int step = 0; step < 64; ++step) {
-    const double whole = std::floor(x);
-    const double p2 = whole * p1 + p0, q2 = whole * q1 + q0;
-    if (p2 >= kMaxInt || q2 >= kMaxInt) break;
-    p0 = p1, q0 = q1;
-    p1 = static_cast<int_type>(p2), q1 = static_cast<int_type>(q2);
-    const double fraction = x - whole;
-    if (fraction < 1e-18 || std::fabs(static_cast<double>(p1) / static_cast<double>(q1) - (negative ? -d : d)) == 0)
-      break;
-    x = 1 / fraction;
+  while (x * static_cast<double>(p1) < 1e9 && x * static_cast<double>(q1) < 1e9) {
+    const auto whole = static_cast<int_type>(x);
+    x -= static_cast<double>(whole);
+    const int_type p2 = whole * p1 + p0, q2 = whole * q1 + q0;
+    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+    if (x < 1e-6) break;
+    x = 1 / x;
   }
   num = negative ? -p1 : p1, den = q1;
 }

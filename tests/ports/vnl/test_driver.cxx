@@ -55,6 +55,7 @@ DECLARE(test_bignum);
 DECLARE(test_decnum);
 DECLARE(test_matlab);
 DECLARE(test_vxl_user_api);
+DECLARE(test_vxl_fixed_api);
 
 void register_tests() {
   REGISTER(test_vector);
@@ -110,6 +111,7 @@ void register_tests() {
   REGISTER(test_decnum);
   REGISTER(test_matlab);
   REGISTER(test_vxl_user_api);
+  REGISTER(test_vxl_fixed_api);
 }
 
 DEFINE_MAIN

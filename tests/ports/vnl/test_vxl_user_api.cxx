@@ -4,18 +4,28 @@
 // (tests/ports/upstream/check-vxl-tests.sh): included only through the headers those tests
 // include, with upstream's behaviour.
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "testlib/testlib_test.h"
+#include "vnl/vnl_complexify.h"
+#include "vnl/vnl_decnum.h"
+#include "vnl/vnl_decnum_traits.h"
+#include "vnl/vnl_diag_matrix.h"
+#include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_finite.h"
+#include "vnl/vnl_imag.h"
 #include "vnl/vnl_math.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_na.h"
 #include "vnl/vnl_polynomial.h"
 #include "vnl/vnl_rational.h"
+#include "vnl/vnl_rational_traits.h"
+#include "vnl/vnl_real.h"
 #include "vnl/vnl_real_polynomial.h"
 #include "vnl/vnl_rotation_matrix.h"
 #include "vnl/vnl_sym_matrix.h"
@@ -128,10 +138,70 @@ void test_polynomials() {
   p[1] = vnl_rational(1, 2);
   p[0] = vnl_rational(1, 3);
   TEST("vnl_polynomial<vnl_rational> evaluates exactly", p.evaluate(vnl_rational(2)), vnl_rational(4, 3));
+  std::ostringstream printed;
+  printed << p;
+  TEST("vnl_polynomial<vnl_rational> prints its coefficients as rationals", printed.str(), std::string(" 1/2 X +1/3"));
+  vnl_polynomial<vnl_decnum> q(1);
+  q[1] = vnl_decnum(3);
+  q[0] = vnl_decnum(-1);
+  TEST("vnl_polynomial<vnl_decnum> is instantiated", q.evaluate(vnl_decnum(2)), vnl_decnum(5));
 }
 
 void test_finite_zero_divisor() {
   TEST("0 is a zero divisor of Z_2 (division by it is undefined)", vnl_finite_int<2>(0).is_zero_divisor(), true);
+}
+
+void test_math_rounding_and_classes() {
+  TEST("rnd_halfinttoeven(2.5) == 2", vnl_math::rnd_halfinttoeven(2.5), 2);
+  TEST("rnd_halfinttoeven(-1.5f) == -2", vnl_math::rnd_halfinttoeven(-1.5f), -2);
+  TEST("rnd_halfinttoeven(3.5) == 4", vnl_math::rnd_halfinttoeven(3.5), 4);
+  TEST("rnd_halfintup(-2.5) == -2", vnl_math::rnd_halfintup(-2.5), -2);
+  TEST("rnd_halfintup(2.5f) == 3", vnl_math::rnd_halfintup(2.5f), 3);
+  TEST("isnormal(1.0)", vnl_math::isnormal(1.0), true);
+  TEST("isnormal(denormal float)", vnl_math::isnormal(std::numeric_limits<float>::denorm_min()), false);
+  TEST("isnormal(int 0)", vnl_math::isnormal(0), false);
+  TEST("vnl_huge_val(double) is infinite", std::isinf(vnl_huge_val(double())), true);
+  TEST("vnl_huge_val(int) is INT_MAX", vnl_huge_val(int()), std::numeric_limits<int>::max());
+  const double tiny = 2 * std::numeric_limits<double>::epsilon();
+  const double wrapped = vnl_math::angle_0_to_2pi(-tiny);
+  TEST("angle_0_to_2pi(-tiny) is just below 2 pi", wrapped < vnl_math::twopi && wrapped > 6.283, true);
+  TEST("angle_minuspi_to_pi(-pi) stays -pi", vnl_math::angle_minuspi_to_pi(-vnl_math::pi), -vnl_math::pi);
+  TEST("angle_minuspi_to_pi(-tiny) stays -tiny", vnl_math::angle_minuspi_to_pi(-tiny), -tiny);
+}
+
+void test_rational_as_upstream() {
+  const vnl_rational seven_halves(7, 2);
+  TEST("integer == rational", 5L == vnl_rational(5) && -7 == vnl_rational(-7), true);
+  TEST("integer <= / >= rational", 3L <= seven_halves && 4 >= seven_halves && !(4 < seven_halves), true);
+  TEST("free truncate / round / floor / ceil",
+       truncate(seven_halves) == 3 && round(-seven_halves) == -4 && floor(-seven_halves) == -4 &&
+           ceil(seven_halves) == 4,
+       true);
+  TEST("0.42857142857 converts to 3/7 (upstream's cut)", vnl_rational(0.42857142857), vnl_rational(3, 7));
+  TEST("-1.23456 converts to -123456/100000", vnl_rational(-1.23456), vnl_rational(-123456, 100000));
+  vnl_vector<vnl_rational> v(2);
+  v[0] = vnl_rational(3, 5);
+  v[1] = vnl_rational(4, 5);
+  TEST("vnl_vector<vnl_rational>::two_norm (via double)", v.two_norm(), vnl_rational(1));
+  vnl_matrix<vnl_rational> m(1, 2);
+  m.set_row(0, v);
+  TEST("vnl_matrix<vnl_rational> is instantiated", m(0, 1), vnl_rational(4, 5));
+}
+
+void test_complexify_diag_and_sym() {
+  const vnl_diag_matrix<double> re(2, 1.5), im(2, -2.0);
+  const vnl_diag_matrix<std::complex<double>> c = vnl_complexify(re, im);
+  TEST("vnl_complexify(diag, diag)", c(1, 1), std::complex<double>(1.5, -2.0));
+  TEST("vnl_real / vnl_imag of a complex diag", vnl_real(c)(0, 0) == 1.5 && vnl_imag(c)(1, 1) == -2.0, true);
+  const vnl_diag_matrix_fixed<float, 2> fixed_re(3.0f);
+  TEST("vnl_complexify(diag fixed)", vnl_complexify(fixed_re)(1, 1), std::complex<float>(3.0f, 0.0f));
+  TEST("vnl_imag(diag fixed)", vnl_imag(vnl_complexify(fixed_re, fixed_re))(0, 0), 3.0f);
+  const vnl_sym_matrix<double> sym_re(2, 4.0), sym_im(2, 5.0);
+  const vnl_sym_matrix<std::complex<double>> sym = vnl_complexify(sym_re, sym_im);
+  TEST("vnl_complexify(sym, sym)", sym(0, 1), std::complex<double>(4.0, 5.0));
+  TEST("vnl_real(complex sym)", vnl_real(sym)(1, 0), 4.0);
+  const vnl_vector_fixed<double, 2> vr(1.0, 2.0), vi(3.0, 4.0);
+  TEST("vnl_complexify(fixed, fixed)", vnl_complexify(vr, vi)[1], std::complex<double>(2.0, 4.0));
 }
 
 void test_vxl_user_api() {
@@ -144,6 +214,9 @@ void test_vxl_user_api() {
   test_rotation_overloads();
   test_polynomials();
   test_finite_zero_divisor();
+  test_math_rounding_and_classes();
+  test_rational_as_upstream();
+  test_complexify_diag_and_sym();
 }
 
 }  // namespace

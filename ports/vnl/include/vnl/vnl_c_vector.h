@@ -137,12 +137,10 @@ class vnl_c_vector {
   }
   static T mean(const T* p, unsigned n) { return T(sum(p, n) / abs_t(static_cast<int>(n))); }
   /// Population standard deviation of p.
+  /// The sample standard deviation (1/(n-1) normalisation, as upstream).
   static real_t std(const T* p, unsigned n) {
     using std::sqrt;
-    const T m = mean(p, n);
-    abs_t total(0);
-    for (unsigned i = 0; i < n; ++i) total += abs_t(vnl_math::squared_magnitude(p[i] - m));
-    return real_t(sqrt(total / abs_t(static_cast<int>(n))));
+    return real_t(sqrt(real_t(sum_sq_diff_means(p, n)) / real_t(static_cast<int>(n) - 1)));
   }
   static abs_t sum_sq_diff_means(const T* v, unsigned n) {
     const T m = mean(v, n);

@@ -8,6 +8,7 @@
 #endif
 
 #include <cassert>
+#include <ostream>
 
 #include "vnl/vnl_matrix_fixed.h"
 #include "vnl/vnl_vector_fixed.h"
@@ -48,6 +49,12 @@ class vnl_diag_matrix_fixed {
     for (unsigned i = 0; i < N; ++i) (*out)[i] = b[i] / diagonal_[i];
   }
   T operator()(unsigned i, unsigned j) const { return i == j ? diagonal_[i] : T(0); }
+  /// A diagonal element, for writing (i must equal j), as upstream's.
+  T& operator()(unsigned i, unsigned j) {
+    assert(i == j);
+    (void)j;
+    return diagonal_[i];
+  }
   T& operator()(unsigned i) { return diagonal_[i]; }
   const T& operator()(unsigned i) const { return diagonal_[i]; }
   T& operator[](unsigned i) { return diagonal_[i]; }
@@ -115,6 +122,38 @@ vnl_matrix_fixed<T, N, N> operator*(const vnl_diag_matrix_fixed<T, N>& d, const 
     for (unsigned c = 0; c < N; ++c) result(r, c) *= d[r];
   }
   return result;
+}
+
+template <class T, unsigned N>
+vnl_vector_fixed<T, N> operator*(const vnl_vector_fixed<T, N>& v, const vnl_diag_matrix_fixed<T, N>& d) {
+  return element_product(v, d.diagonal());
+}
+/// Sums and differences with a full fixed matrix: the diagonal added to (taken from) it.
+template <class T, unsigned N>
+vnl_matrix_fixed<T, N, N> operator+(const vnl_diag_matrix_fixed<T, N>& d, vnl_matrix_fixed<T, N, N> a) {
+  for (unsigned i = 0; i < N; ++i) a(i, i) += d[i];
+  return a;
+}
+template <class T, unsigned N>
+vnl_matrix_fixed<T, N, N> operator+(const vnl_matrix_fixed<T, N, N>& a, const vnl_diag_matrix_fixed<T, N>& d) {
+  return d + a;
+}
+template <class T, unsigned N>
+vnl_matrix_fixed<T, N, N> operator-(const vnl_matrix_fixed<T, N, N>& a, const vnl_diag_matrix_fixed<T, N>& d) {
+  vnl_matrix_fixed<T, N, N> result(a);
+  for (unsigned i = 0; i < N; ++i) result(i, i) -= d[i];
+  return result;
+}
+template <class T, unsigned N>
+vnl_matrix_fixed<T, N, N> operator-(const vnl_diag_matrix_fixed<T, N>& d, const vnl_matrix_fixed<T, N, N>& a) {
+  return d + (-a);
+}
+/// Prints diag([ d0 d1 ... ]), as upstream.
+template <class T, unsigned N>
+std::ostream& operator<<(std::ostream& s, const vnl_diag_matrix_fixed<T, N>& d) {
+  s << "diag([ ";
+  for (unsigned i = 0; i < N; ++i) s << d[i] << ' ';
+  return s << "])";
 }
 
 }  // inline namespace edgetrack_ports

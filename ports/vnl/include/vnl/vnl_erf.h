@@ -14,7 +14,8 @@ inline namespace edgetrack_ports {
 
 inline double vnl_erf(double x) { return std::erf(x); }
 double vnl_erfc(double x);
-/// exp(x^2) erfc(x), finite for large x.
-double vnl_scaled_erfc(double x);
+/// exp(x^2) erfc(x) as upstream defines it: its large-x asymptote 1/(x sqrt(pi)), for every x
+/// (so close to 0 for x far below zero, where the exact value is infinite).
+inline double vnl_scaled_erfc(double x) { return 0.56418958354775628695 / x; }
 
 }  // inline namespace edgetrack_ports

@@ -8,8 +8,11 @@
 
 #include <complex>
 
+#include "vnl/vnl_diag_matrix.h"
+#include "vnl/vnl_diag_matrix_fixed.h"
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_fixed.h"
+#include "vnl/vnl_sym_matrix.h"
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_fixed.h"
 
@@ -41,6 +44,22 @@ template <class T, unsigned int NRow, unsigned int NCol>
 vnl_matrix_fixed<T, NRow, NCol> vnl_imag(const vnl_matrix_fixed<std::complex<T>, NRow, NCol>& C) {
   vnl_matrix_fixed<T, NRow, NCol> R;
   vnl_imag(C.data_block(), R.data_block(), NRow * NCol);
+  return R;
+}
+
+/// The diagonal and symmetric forms, as upstream's: the stored elements' imag parts.
+template <class T>
+vnl_diag_matrix<T> vnl_imag(const vnl_diag_matrix<std::complex<T>>& C) {
+  return vnl_diag_matrix<T>(vnl_imag(C.diagonal()));
+}
+template <class T, unsigned int N>
+vnl_diag_matrix_fixed<T, N> vnl_imag(const vnl_diag_matrix_fixed<std::complex<T>, N>& C) {
+  return vnl_diag_matrix_fixed<T, N>(vnl_imag(C.diagonal()));
+}
+template <class T>
+vnl_sym_matrix<T> vnl_imag(const vnl_sym_matrix<std::complex<T>>& C) {
+  vnl_sym_matrix<T> R(C.rows());
+  vnl_imag(C.begin(), R.begin(), static_cast<unsigned>(C.end() - C.begin()));
   return R;
 }
 

@@ -122,6 +122,33 @@ template <class T>
 bool isfinite(const std::complex<T>& x) {
   return vnl_math::isfinite(x.real()) && vnl_math::isfinite(x.imag());
 }
+/// Neither zero, subnormal, infinite nor NaN; a non-zero integer or fixed-point value is normal.
+template <class T>
+bool isnormal(const T& x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::isnormal(x);
+  } else {
+    return !(x == T(0));
+  }
+}
+/// Rounds to the nearest integer, exact halves to the even one (upstream's, independent of the
+/// FPU's rounding mode here).
+namespace detail {
+template <class F>
+int round_half_to_even(F x) {
+  const F below = std::floor(x);
+  const F fraction = x - below;
+  const int r = static_cast<int>(below);
+  if (fraction > F(0.5)) return r + 1;
+  if (fraction < F(0.5)) return r;
+  return r % 2 == 0 ? r : r + 1;
+}
+}  // namespace detail
+inline int rnd_halfinttoeven(float x) { return detail::round_half_to_even(x); }
+inline int rnd_halfinttoeven(double x) { return detail::round_half_to_even(x); }
+/// Rounds to the nearest integer, exact halves upwards (towards +infinity).
+inline int rnd_halfintup(float x) { return static_cast<int>(std::floor(x + 0.5f)); }
+inline int rnd_halfintup(double x) { return static_cast<int>(std::floor(x + 0.5)); }
 /// Rounds to the nearest integer, halves away from zero (upstream's rnd_halfintup differs
 /// only on exact halves of negative numbers).
 inline int rnd(double x) { return static_cast<int>(x < 0 ? x - 0.5 : x + 0.5); }
@@ -146,13 +173,21 @@ T remainder_floored(T x, T y) {
   return (r != T(0) && ((r < T(0)) != (y < T(0)))) ? r + y : r;
 }
 /// The angle in [0, 2 pi) or (-pi, pi].
+/// The angle in [0, 2 pi): a tiny negative angle whose sum with 2 pi rounds to 2 pi gives the
+/// largest double below 2 pi, as upstream.
 inline double angle_0_to_2pi(double angle) {
-  const double a = remainder_floored(angle, 6.28318530717958647692);
-  return a;
+  const double a = std::fmod(angle, twopi);
+  if (a >= 0) return a;
+  const double wrapped = a + twopi;
+  return wrapped < twopi ? wrapped : std::nextafter(twopi, 0.0);
 }
+/// The angle in [-pi, pi]: fmod by 2 pi, then one turn off either end, as upstream (small
+/// negative angles stay exactly as they are).
 inline double angle_minuspi_to_pi(double angle) {
-  const double a = angle_0_to_2pi(angle);
-  return a > 3.14159265358979323846 ? a - 6.28318530717958647692 : a;
+  double a = std::fmod(angle, twopi);
+  if (a > pi) a -= twopi;
+  if (a < -pi) a += twopi;
+  return a;
 }
 /// Real cube root, for negative x too.
 inline double cuberoot(double x) { return std::cbrt(x); }
@@ -197,6 +232,16 @@ T hypot(const T& a, const T& b) {
 }
 
 }  // namespace vnl_math
+
+/// Type-selected infinities, as upstream's: +infinity for the floating types, the largest value
+/// for the integers.
+inline long double vnl_huge_val(long double) { return std::numeric_limits<long double>::infinity(); }
+inline double vnl_huge_val(double) { return std::numeric_limits<double>::infinity(); }
+inline float vnl_huge_val(float) { return std::numeric_limits<float>::infinity(); }
+inline long vnl_huge_val(long) { return std::numeric_limits<long>::max(); }
+inline int vnl_huge_val(int) { return std::numeric_limits<int>::max(); }
+inline short vnl_huge_val(short) { return std::numeric_limits<short>::max(); }
+inline char vnl_huge_val(char) { return std::numeric_limits<char>::max(); }
 
 // The free-function spellings of older VXL (the paper's era), for code written against them.
 template <class T>

@@ -492,12 +492,11 @@ vnl_matrix<T>& vnl_matrix<T>::fliplr() {
 
 template <class T>
 vnl_matrix<T>& vnl_matrix<T>::normalize_rows() {
-  using std::sqrt;
   for (std::size_t r = 0; r < num_rows_; ++r) {
     abs_t total(0);
     for (std::size_t c = 0; c < num_cols_; ++c) total += abs_t(vnl_math::squared_magnitude((*this)(r, c)));
     if (total == abs_t(0)) continue;
-    const abs_t norm = abs_t(sqrt(total));
+    const abs_t norm = vnl_detail::root(total);
     for (std::size_t c = 0; c < num_cols_; ++c) (*this)(r, c) = T((*this)(r, c) / norm);
   }
   return *this;
@@ -505,12 +504,11 @@ vnl_matrix<T>& vnl_matrix<T>::normalize_rows() {
 
 template <class T>
 vnl_matrix<T>& vnl_matrix<T>::normalize_columns() {
-  using std::sqrt;
   for (std::size_t c = 0; c < num_cols_; ++c) {
     abs_t total(0);
     for (std::size_t r = 0; r < num_rows_; ++r) total += abs_t(vnl_math::squared_magnitude((*this)(r, c)));
     if (total == abs_t(0)) continue;
-    const abs_t norm = abs_t(sqrt(total));
+    const abs_t norm = vnl_detail::root(total);
     for (std::size_t r = 0; r < num_rows_; ++r) (*this)(r, c) = T((*this)(r, c) / norm);
   }
   return *this;
@@ -636,7 +634,7 @@ template <class T>
 bool vnl_matrix<T>::is_equal(const vnl_matrix& rhs, double tol) const {
   if (rhs.num_rows_ != num_rows_ || rhs.num_cols_ != num_cols_) return false;
   for (std::size_t i = 0; i < size(); ++i) {
-    if (static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) > tol) return false;
+    if (!(static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) <= tol)) return false;  // NaN is unequal
   }
   return true;
 }

@@ -10,6 +10,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "vnl/vnl_matrix.h"
 #include "vnl/vnl_matrix_ref.h"
@@ -21,16 +22,30 @@ template <class T, unsigned int num_rows, unsigned int num_cols>
 class vnl_matrix_fixed {
  public:
   using element_type = T;
+  using self = vnl_matrix_fixed;
+  using size_type = std::size_t;
+  using iterator = T*;
+  using const_iterator = const T*;
+  using abs_t = typename vnl_matrix<T>::abs_t;
 
   /// All zeros (upstream leaves it uninitialised).
   vnl_matrix_fixed() { fill(T(0)); }
+  /// Upstream's shape-checked form for code generic over vnl_matrix: the sizes must match.
+  vnl_matrix_fixed(unsigned rows, unsigned cols) : vnl_matrix_fixed() {
+    assert(rows == num_rows && cols == num_cols);
+    (void)rows;
+    (void)cols;
+  }
   explicit vnl_matrix_fixed(const T& value) { fill(value); }
   /// From row-major data.
   explicit vnl_matrix_fixed(const T* data) { copy_in(data); }
-  explicit vnl_matrix_fixed(const vnl_matrix<T>& m) {
+  /// Implicit, as upstream's: a dense matrix of the same shape converts.
+  vnl_matrix_fixed(const vnl_matrix<T>& m) {
     assert(m.rows() == num_rows && m.cols() == num_cols);
     copy_in(m.data_block());
   }
+  /// Every element set to `value`, as upstream's.
+  vnl_matrix_fixed& operator=(const T& value) { return fill(value); }
   /// Copies a dense matrix of the same shape, as upstream's assignment.
   vnl_matrix_fixed& operator=(const vnl_matrix<T>& m) {
     assert(m.rows() == num_rows && m.cols() == num_cols);
@@ -50,8 +65,17 @@ class vnl_matrix_fixed {
   const T* operator[](std::size_t r) const { return data_[r]; }
   T get(std::size_t r, std::size_t c) const { return data_[r][c]; }
   void put(std::size_t r, std::size_t c, const T& v) { data_[r][c] = v; }
+  vnl_matrix_fixed& set(unsigned r, unsigned c, const T& v) {
+    data_[r][c] = v;
+    return *this;
+  }
   T* data_block() { return data_[0]; }
   const T* data_block() const { return data_[0]; }
+  iterator begin() { return data_[0]; }
+  iterator end() { return data_[0] + size(); }
+  const_iterator begin() const { return data_[0]; }
+  const_iterator end() const { return data_[0] + size(); }
+  static constexpr bool empty() { return num_rows == 0 && num_cols == 0; }
 
   vnl_matrix_fixed& fill(const T& value) {
     for (auto& row : data_) {
@@ -69,6 +93,10 @@ class vnl_matrix_fixed {
       for (unsigned c = 0; c < num_cols; ++c) data_[r][c] = data[r * num_cols + c];
     }
     return *this;
+  }
+  vnl_matrix_fixed& set(const T* data) { return copy_in(data); }
+  void copy_out(T* data) const {
+    for (unsigned i = 0; i < size(); ++i) data[i] = data_block()[i];
   }
   /// A heap copy, for code written against vnl_matrix.
   vnl_matrix<T> as_matrix() const { return vnl_matrix<T>(data_block(), num_rows, num_cols); }
@@ -106,14 +134,110 @@ class vnl_matrix_fixed {
     for (unsigned r = 0; r < num_rows; ++r) column[r] = data_[r][c];
     return column;
   }
-  vnl_matrix_fixed& set_row(unsigned r, const vnl_vector_fixed<T, num_cols>& v) {
+  vnl_matrix_fixed& set_row(unsigned r, const vnl_vector_fixed<T, num_cols>& v) { return set_row(r, v.data_block()); }
+  vnl_matrix_fixed& set_row(unsigned r, const vnl_vector<T>& v) {
+    assert(v.size() == num_cols);
+    return set_row(r, v.data_block());
+  }
+  vnl_matrix_fixed& set_row(unsigned r, const T* v) {
     for (unsigned c = 0; c < num_cols; ++c) data_[r][c] = v[c];
     return *this;
   }
+  vnl_matrix_fixed& set_row(unsigned r, T value) {
+    for (unsigned c = 0; c < num_cols; ++c) data_[r][c] = value;
+    return *this;
+  }
   vnl_matrix_fixed& set_column(unsigned c, const vnl_vector_fixed<T, num_rows>& v) {
+    return set_column(c, v.data_block());
+  }
+  vnl_matrix_fixed& set_column(unsigned c, const vnl_vector<T>& v) {
+    assert(v.size() == num_rows);
+    return set_column(c, v.data_block());
+  }
+  vnl_matrix_fixed& set_column(unsigned c, const T* v) {
     for (unsigned r = 0; r < num_rows; ++r) data_[r][c] = v[r];
     return *this;
   }
+  vnl_matrix_fixed& set_column(unsigned c, T value) {
+    for (unsigned r = 0; r < num_rows; ++r) data_[r][c] = value;
+    return *this;
+  }
+  /// Writes the columns of m from column `starting_column` on.
+  vnl_matrix_fixed& set_columns(unsigned starting_column, const vnl_matrix<T>& m) {
+    as_ref().non_const().set_columns(starting_column, m);
+    return *this;
+  }
+  vnl_matrix<T> get_rows(const vnl_vector<unsigned int>& i) const { return as_ref().get_rows(i); }
+  vnl_matrix<T> get_columns(const vnl_vector<unsigned int>& i) const { return as_ref().get_columns(i); }
+  vnl_matrix<T> get_n_rows(unsigned rowstart, unsigned n) const { return as_ref().get_n_rows(rowstart, n); }
+  vnl_matrix<T> get_n_columns(unsigned colstart, unsigned n) const { return as_ref().get_n_columns(colstart, n); }
+  vnl_vector_fixed<T, num_rows * num_cols> flatten_row_major() const {
+    return vnl_vector_fixed<T, num_rows * num_cols>(data_block());
+  }
+  vnl_vector_fixed<T, num_rows * num_cols> flatten_column_major() const { return transpose().flatten_row_major(); }
+  vnl_matrix_fixed<T, num_cols, num_rows> conjugate_transpose() const {
+    return vnl_matrix_fixed<T, num_cols, num_rows>(as_ref().conjugate_transpose());
+  }
+  /// Transposes a square matrix in place.
+  vnl_matrix_fixed& inplace_transpose() {
+    static_assert(num_rows == num_cols, "in-place transpose of a square matrix");
+    return *this = transpose();
+  }
+  vnl_matrix_fixed& flipud() {
+    as_ref().non_const().flipud();
+    return *this;
+  }
+  vnl_matrix_fixed& fliplr() {
+    as_ref().non_const().fliplr();
+    return *this;
+  }
+  vnl_matrix_fixed& normalize_rows() {
+    as_ref().non_const().normalize_rows();
+    return *this;
+  }
+  vnl_matrix_fixed& normalize_columns() {
+    as_ref().non_const().normalize_columns();
+    return *this;
+  }
+  vnl_matrix_fixed& scale_row(unsigned row, T value) {
+    for (unsigned c = 0; c < num_cols; ++c) data_[row][c] *= value;
+    return *this;
+  }
+  vnl_matrix_fixed& scale_column(unsigned col, T value) {
+    for (unsigned r = 0; r < num_rows; ++r) data_[r][col] *= value;
+    return *this;
+  }
+  void swap(vnl_matrix_fixed& that) {
+    for (unsigned i = 0; i < size(); ++i) std::swap(data_block()[i], that.data_block()[i]);
+  }
+  /// f applied to each element; apply_rowwise / apply_columnwise reduce each row / column.
+  vnl_matrix_fixed apply(T (*f)(T)) const { return applied(f); }
+  vnl_matrix_fixed apply(T (*f)(const T&)) const { return applied(f); }
+  vnl_vector_fixed<T, num_rows> apply_rowwise(T (*f)(const vnl_vector_fixed<T, num_cols>&)) const {
+    vnl_vector_fixed<T, num_rows> result;
+    for (unsigned r = 0; r < num_rows; ++r) result[r] = f(get_row(r));
+    return result;
+  }
+  vnl_vector_fixed<T, num_cols> apply_columnwise(T (*f)(const vnl_vector_fixed<T, num_rows>&)) const {
+    vnl_vector_fixed<T, num_cols> result;
+    for (unsigned c = 0; c < num_cols; ++c) result[c] = f(get_column(c));
+    return result;
+  }
+  abs_t rms() const { return as_ref().rms(); }
+  T min_value() const { return as_ref().min_value(); }
+  T max_value() const { return as_ref().max_value(); }
+  unsigned arg_min() const { return unsigned(as_ref().arg_min()); }
+  unsigned arg_max() const { return unsigned(as_ref().arg_max()); }
+  T mean() const { return as_ref().mean(); }
+  bool is_zero(double tol) const { return as_ref().is_zero(tol); }
+  bool is_equal(const vnl_matrix_fixed& rhs, double tol) const { return as_ref().is_equal(rhs.as_ref(), tol); }
+  bool is_finite() const { return as_ref().is_finite(); }
+  bool has_nans() const { return as_ref().has_nans(); }
+  void assert_size(unsigned r, unsigned c) const { as_ref().assert_size(r, c); }
+  void assert_finite() const { as_ref().assert_finite(); }
+  bool operator_eq(const vnl_matrix_fixed& rhs) const { return *this == rhs; }
+  bool operator==(const vnl_matrix<T>& that) const { return as_ref() == that; }
+  bool operator!=(const vnl_matrix<T>& that) const { return !(as_ref() == that); }
 
   vnl_matrix_fixed& operator+=(const vnl_matrix_fixed& rhs) {
     for (unsigned r = 0; r < num_rows; ++r) {
@@ -127,6 +251,18 @@ class vnl_matrix_fixed {
     }
     return *this;
   }
+  vnl_matrix_fixed& operator+=(const vnl_matrix<T>& rhs) {
+    assert(rhs.rows() == num_rows && rhs.cols() == num_cols);
+    for (unsigned i = 0; i < size(); ++i) data_block()[i] += rhs.data_block()[i];
+    return *this;
+  }
+  vnl_matrix_fixed& operator-=(const vnl_matrix<T>& rhs) {
+    assert(rhs.rows() == num_rows && rhs.cols() == num_cols);
+    for (unsigned i = 0; i < size(); ++i) data_block()[i] -= rhs.data_block()[i];
+    return *this;
+  }
+  /// Right-multiplies by a square matrix in place.
+  vnl_matrix_fixed& operator*=(const vnl_matrix_fixed<T, num_cols, num_cols>& s);
   vnl_matrix_fixed& operator+=(T s) {
     for (auto& row : data_) {
       for (T& x : row) x += s;
@@ -171,8 +307,15 @@ class vnl_matrix_fixed {
     }
     return *this;
   }
+  vnl_matrix_fixed& update(const vnl_matrix_fixed& m, unsigned top = 0, unsigned left = 0) {
+    return update(m.as_ref(), top, left);
+  }
   vnl_matrix<T> extract(unsigned rows, unsigned cols, unsigned top = 0, unsigned left = 0) const {
     return as_matrix().extract(rows, cols, top, left);
+  }
+  /// Fills sub_matrix (already sized) from the block at (top, left).
+  void extract(vnl_matrix<T>& sub_matrix, unsigned top = 0, unsigned left = 0) const {
+    as_ref().extract(sub_matrix, top, left);
   }
   /// Largest row sum of |a_ij|.
   T operator_inf_norm() const {
@@ -193,9 +336,12 @@ class vnl_matrix_fixed {
     }
     return true;
   }
-  vnl_matrix_fixed operator-() const {
-    vnl_matrix_fixed result(*this);
-    result *= T(-1);
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_matrix_fixed<typename vnl_numeric_traits<T>::signed_t, num_rows, num_cols> operator-() const {
+    vnl_matrix_fixed<typename vnl_numeric_traits<T>::signed_t, num_rows, num_cols> result;
+    for (unsigned r = 0; r < num_rows; ++r) {
+      for (unsigned c = 0; c < num_cols; ++c) result(r, c) = -typename vnl_numeric_traits<T>::signed_t(data_[r][c]);
+    }
     return result;
   }
 
@@ -229,8 +375,25 @@ class vnl_matrix_fixed {
   bool operator!=(const vnl_matrix_fixed& rhs) const { return !(*this == rhs); }
 
  private:
+  template <class F>
+  vnl_matrix_fixed applied(F f) const {
+    vnl_matrix_fixed result;
+    for (unsigned i = 0; i < size(); ++i) result.data_block()[i] = f(data_block()[i]);
+    return result;
+  }
+
   T data_[num_rows][num_cols];
 };
+
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c>& vnl_matrix_fixed<T, r, c>::operator*=(const vnl_matrix_fixed<T, c, c>& s) {
+  return *this = *this * s;
+}
+
+template <class T, unsigned r, unsigned c>
+void swap(vnl_matrix_fixed<T, r, c>& a, vnl_matrix_fixed<T, r, c>& b) {
+  a.swap(b);
+}
 
 template <class T, unsigned r, unsigned c>
 vnl_matrix_fixed<T, r, c> operator+(vnl_matrix_fixed<T, r, c> a, const vnl_matrix_fixed<T, r, c>& b) {
@@ -329,6 +492,24 @@ template <class T, unsigned r, unsigned c>
 std::istream& operator>>(std::istream& is, vnl_matrix_fixed<T, r, c>& m) {
   m.read_ascii(is);
   return is;
+}
+
+/// Sums and differences of a fixed and a dense matrix, as upstream's (a dense vnl_matrix result).
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator+(const vnl_matrix_fixed<T, r, c>& a, const vnl_matrix<T>& b) {
+  return a.as_ref() + b;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator+(const vnl_matrix<T>& a, const vnl_matrix_fixed<T, r, c>& b) {
+  return a + b.as_ref();
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator-(const vnl_matrix_fixed<T, r, c>& a, const vnl_matrix<T>& b) {
+  return a.as_ref() - b;
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix<T> operator-(const vnl_matrix<T>& a, const vnl_matrix_fixed<T, r, c>& b) {
+  return a - b.as_ref();
 }
 
 /// Products of a fixed and a dense matrix, as upstream's (a dense vnl_matrix result).

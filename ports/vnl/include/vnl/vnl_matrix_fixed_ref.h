@@ -27,6 +27,8 @@ class vnl_matrix_fixed_ref_const {
   explicit vnl_matrix_fixed_ref_const(const T* dataptr) : data_(const_cast<T*>(dataptr)) {}
 
   const T* data_block() const { return data_; }
+  const T* begin() const { return data_; }
+  const T* end() const { return data_ + size(); }
   static constexpr unsigned rows() { return num_rows; }
   static constexpr unsigned cols() { return num_cols; }
   static constexpr unsigned columns() { return num_cols; }
@@ -84,6 +86,8 @@ class vnl_matrix_fixed_ref : public vnl_matrix_fixed_ref_const<T, num_rows, num_
   const vnl_matrix_fixed_ref& operator=(const Base& rhs) const { return copy_in(rhs.data_block()); }
 
   T* data_block() const { return this->data_; }
+  T* begin() const { return this->data_; }
+  T* end() const { return this->data_ + Base::size(); }
   T& operator()(unsigned r, unsigned c) const { return this->data_[r * num_cols + c]; }
   T* operator[](unsigned r) const { return this->data_ + r * num_cols; }
   void put(unsigned r, unsigned c, const T& v) const { (*this)(r, c) = v; }
@@ -194,6 +198,18 @@ template <class T, unsigned r, unsigned c>
 vnl_vector_fixed<T, r> operator*(const vnl_matrix_fixed_ref_const<T, r, c>& a,
                                  const vnl_vector_fixed_ref_const<T, c>& v) {
   return a.as_fixed() * v.as_fixed();
+}
+
+/// Sums and differences of two views, into a fixed matrix, as upstream's.
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator+(const vnl_matrix_fixed_ref_const<T, r, c>& a,
+                                    const vnl_matrix_fixed_ref_const<T, r, c>& b) {
+  return a.as_fixed() + b.as_fixed();
+}
+template <class T, unsigned r, unsigned c>
+vnl_matrix_fixed<T, r, c> operator-(const vnl_matrix_fixed_ref_const<T, r, c>& a,
+                                    const vnl_matrix_fixed_ref_const<T, r, c>& b) {
+  return a.as_fixed() - b.as_fixed();
 }
 
 }  // inline namespace edgetrack_ports

@@ -91,11 +91,18 @@ vnl_polynomial<T> vnl_polynomial<T>::primitive() const {
 
 namespace vnl_polynomial_detail {
 template <class T>
+struct is_fixed_point : std::false_type {};
+template <int F>
+struct is_fixed_point<fixedpoint::fixed64<F>> : std::true_type {};
+
+/// A coefficient as its own << prints it (vnl_rational as 1/2, as upstream); fixed point as a
+/// double (I/O only).
+template <class T>
 void print_value(std::ostream& os, const T& x) {
-  if constexpr (std::is_arithmetic_v<T>) {
-    os << x;
+  if constexpr (is_fixed_point<T>::value) {
+    os << static_cast<double>(x);
   } else {
-    os << static_cast<double>(x);  // fixed point, I/O only
+    os << x;
   }
 }
 }  // namespace vnl_polynomial_detail

@@ -29,10 +29,10 @@ class vnl_quaternion : public vnl_vector_fixed<T, 4> {
   vnl_quaternion(const vnl_vector_fixed<T, 3>& axis, double angle);
   /// The rotation whose transposed matrix is `transform` (see rotation_matrix_transpose).
   explicit vnl_quaternion(const vnl_matrix_fixed<T, 3, 3>& transform);
-  /// The pure quaternion (vec, 0).
-  explicit vnl_quaternion(const vnl_vector_fixed<T, 3>& vec);
-  /// The four values in (x, y, z, r) order.
-  explicit vnl_quaternion(const vnl_vector_fixed<T, 4>& vec) : Base(vec) {}
+  /// The pure quaternion (vec, 0); implicit, as upstream's.
+  vnl_quaternion(const vnl_vector_fixed<T, 3>& vec);
+  /// The four values in (x, y, z, r) order; implicit, as upstream's.
+  vnl_quaternion(const vnl_vector_fixed<T, 4>& vec) : Base(vec) {}
   /// Rotation about X by theta_x, then Y by theta_y, then Z by theta_z (Rz * Ry * Rx).
   vnl_quaternion(T theta_x, T theta_y, T theta_z);
 

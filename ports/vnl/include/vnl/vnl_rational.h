@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Mirrors VXL's core/vnl/vnl_rational.h: exact rational numbers num/den with 64-bit integer
 /// parts, always in lowest terms with den > 0; 1/0 and -1/0 are +-infinity (0/0 is not
-/// allowed). A double converts by its continued fraction. As upstream, a product or sum that
+/// allowed). A double converts by its continued fraction, cut as upstream cuts it (remainder
+/// under 1e-6, terms under 1e9; magnitudes from 1e9 are infinite). As upstream, a product or sum that
 /// would overflow 64 bits gives the nearest representable approximation instead.
 #pragma once
 
@@ -23,7 +24,7 @@ class vnl_rational {
   template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
   vnl_rational(T num) : num_(static_cast<int_type>(num)), den_(1) {}
   vnl_rational(int_type num, int_type den) : num_(num), den_(den) { normalize(); }
-  /// The continued-fraction approximation of d (exact for dyadic values that fit).
+  /// The continued-fraction approximation of d (upstream's cut: 0.42857142857 is 3/7).
   vnl_rational(double d);
   vnl_rational(float f) : vnl_rational(static_cast<double>(f)) {}
 
@@ -96,6 +97,38 @@ inline vnl_rational operator-(vnl_rational a, const vnl_rational& b) { return a 
 inline vnl_rational operator*(vnl_rational a, const vnl_rational& b) { return a *= b; }
 inline vnl_rational operator/(vnl_rational a, const vnl_rational& b) { return a /= b; }
 inline vnl_rational operator%(vnl_rational a, const vnl_rational& b) { return a %= b; }
+
+/// Comparisons with an integer on the left, as upstream's.
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator==(T a, const vnl_rational& b) {
+  return b == vnl_rational(a);
+}
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator!=(T a, const vnl_rational& b) {
+  return b != vnl_rational(a);
+}
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator<(T a, const vnl_rational& b) {
+  return b > vnl_rational(a);
+}
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator>(T a, const vnl_rational& b) {
+  return b < vnl_rational(a);
+}
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator<=(T a, const vnl_rational& b) {
+  return b >= vnl_rational(a);
+}
+template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+bool operator>=(T a, const vnl_rational& b) {
+  return b <= vnl_rational(a);
+}
+
+/// The rounding members as free functions, as upstream's.
+inline vnl_rational::int_type truncate(const vnl_rational& r) { return r.truncate(); }
+inline vnl_rational::int_type floor(const vnl_rational& r) { return r.floor(); }
+inline vnl_rational::int_type ceil(const vnl_rational& r) { return r.ceil(); }
+inline vnl_rational::int_type round(const vnl_rational& r) { return r.round(); }
 
 /// Prints num/den; reads two integers, num then den.
 std::ostream& operator<<(std::ostream& s, const vnl_rational& r);

@@ -76,6 +76,10 @@ class vnl_vector {
   iterator end() { return data_ + num_elmts_; }
   const_iterator begin() const { return data_; }
   const_iterator end() const { return data_ + num_elmts_; }
+  T& front() { return data_[0]; }
+  const T& front() const { return data_[0]; }
+  T& back() { return data_[num_elmts_ - 1]; }
+  const T& back() const { return data_[num_elmts_ - 1]; }
   /// A view of this vector's memory.
   vnl_vector_ref<T> as_ref();
   const vnl_vector_ref<T> as_ref() const;
@@ -202,10 +206,13 @@ template <class T>
 vnl_vector<T> element_product(const vnl_vector<T>& a, const vnl_vector<T>& b);
 template <class T>
 vnl_vector<T> element_quotient(const vnl_vector<T>& a, const vnl_vector<T>& b);
+/// <a, b> / (|a| |b|), in T as upstream.
+template <class T>
+T cos_angle(const vnl_vector<T>& a, const vnl_vector<T>& b);
 /// The angle between a and b in radians, in [0, pi].
 template <class T>
-typename vnl_numeric_traits<T>::abs_t angle(const vnl_vector<T>& a, const vnl_vector<T>& b);
-/// a x b of two 2-vectors, a scalar.
+double angle(const vnl_vector<T>& a, const vnl_vector<T>& b);
+/// a x b of the first two elements of a and b (each at least 2 long), a scalar.
 template <class T>
 T vnl_cross_2d(const vnl_vector<T>& a, const vnl_vector<T>& b);
 /// Cross product of two 3-vectors.

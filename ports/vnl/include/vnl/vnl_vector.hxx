@@ -43,6 +43,14 @@ bool read_element(std::istream& s, T& x) {
     return true;
   }
 }
+/// The square root of a norm, taken in the norm type's real_t as upstream (double for the
+/// integers and vnl_rational, the type itself for float, double and fixed point).
+template <class A>
+A root(const A& x) {
+  using std::sqrt;
+  using real_t = typename vnl_numeric_traits<A>::real_t;
+  return A(sqrt(real_t(x)));
+}
 /// The order min_value and arg_min use: <, or the magnitude for complex values.
 template <class T>
 bool less(const T& a, const T& b) {
@@ -340,8 +348,7 @@ typename vnl_vector<T>::abs_t vnl_vector<T>::one_norm() const {
 
 template <class T>
 typename vnl_vector<T>::abs_t vnl_vector<T>::two_norm() const {
-  using std::sqrt;
-  return abs_t(sqrt(squared_magnitude()));
+  return vnl_detail::root(squared_magnitude());
 }
 
 template <class T>
@@ -356,8 +363,7 @@ typename vnl_vector<T>::abs_t vnl_vector<T>::inf_norm() const {
 
 template <class T>
 typename vnl_vector<T>::abs_t vnl_vector<T>::rms() const {
-  using std::sqrt;
-  return empty() ? abs_t(0) : abs_t(sqrt(squared_magnitude() / abs_t(static_cast<int>(num_elmts_))));
+  return empty() ? abs_t(0) : vnl_detail::root(abs_t(squared_magnitude() / abs_t(static_cast<int>(num_elmts_))));
 }
 
 template <class T>
@@ -476,7 +482,7 @@ template <class T>
 bool vnl_vector<T>::is_equal(const vnl_vector& rhs, double tol) const {
   if (rhs.size() != size()) return false;
   for (std::size_t i = 0; i < num_elmts_; ++i) {
-    if (static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) > tol) return false;
+    if (!(static_cast<double>(vnl_math::abs(data_[i] - rhs.data_[i])) <= tol)) return false;  // NaN is unequal
   }
   return true;
 }
@@ -556,18 +562,28 @@ vnl_vector<T> element_quotient(const vnl_vector<T>& a, const vnl_vector<T>& b) {
 }
 
 template <class T>
-typename vnl_numeric_traits<T>::abs_t angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
-  using abs_t = typename vnl_numeric_traits<T>::abs_t;
-  using std::acos;
-  const abs_t norms = a.two_norm() * b.two_norm();
-  abs_t cosine = abs_t(vnl_math::abs(inner_product(a, b))) / norms;
-  if (cosine > abs_t(1)) cosine = abs_t(1);
-  return abs_t(acos(cosine));
+T cos_angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
+  using real_t = typename vnl_numeric_traits<T>::real_t;
+  using abs_r = typename vnl_numeric_traits<typename vnl_numeric_traits<T>::abs_t>::real_t;
+  using std::sqrt;
+  const real_t ab = real_t(inner_product(a, b));
+  const real_t norms = real_t(sqrt(abs_r(a.squared_magnitude() * b.squared_magnitude())));
+  return T(ab / norms);
+}
+
+template <class T>
+double angle(const vnl_vector<T>& a, const vnl_vector<T>& b) {
+  using abs_r = typename vnl_numeric_traits<typename vnl_numeric_traits<T>::abs_t>::real_t;
+  const abs_r c = abs_r(cos_angle(a, b));
+  if (c >= abs_r(1)) return 0;
+  if (c <= abs_r(-1)) return vnl_math::pi;
+  using std::acos;  // fixed point finds its own acos
+  return static_cast<double>(acos(c));
 }
 
 template <class T>
 T vnl_cross_2d(const vnl_vector<T>& a, const vnl_vector<T>& b) {
-  assert(a.size() == 2 && b.size() == 2);
+  assert(a.size() >= 2 && b.size() >= 2);  // as upstream: the first two elements of longer vectors
   return a[0] * b[1] - a[1] * b[0];
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
+#include <utility>
 
 #include "vnl/vnl_vector.h"
 #include "vnl/vnl_vector_ref.h"
@@ -46,8 +47,8 @@ class vnl_vector_fixed {
     data_[2] = z;
     data_[3] = w;
   }
-  /// From a vnl_vector of the same size.
-  explicit vnl_vector_fixed(const vnl_vector<T>& v) {
+  /// From a vnl_vector of the same size (implicit, as upstream's).
+  vnl_vector_fixed(const vnl_vector<T>& v) {
     assert(v.size() == n);
     copy_in(v.data_block());
   }
@@ -119,11 +120,56 @@ class vnl_vector_fixed {
     for (T& x : data_) x /= s;
     return *this;
   }
-  vnl_vector_fixed operator-() const {
-    vnl_vector_fixed result;
-    for (unsigned i = 0; i < n; ++i) result.data_[i] = -data_[i];
+  vnl_vector_fixed& operator+=(const vnl_vector<T>& rhs) {
+    assert(rhs.size() == n);
+    for (unsigned i = 0; i < n; ++i) data_[i] += rhs[i];
+    return *this;
+  }
+  vnl_vector_fixed& operator-=(const vnl_vector<T>& rhs) {
+    assert(rhs.size() == n);
+    for (unsigned i = 0; i < n; ++i) data_[i] -= rhs[i];
+    return *this;
+  }
+  /// -x element by element; unsigned elements give their signed type, as upstream.
+  vnl_vector_fixed<typename vnl_numeric_traits<T>::signed_t, n> operator-() const {
+    using signed_t = typename vnl_numeric_traits<T>::signed_t;
+    vnl_vector_fixed<signed_t, n> result;
+    for (unsigned i = 0; i < n; ++i) result[i] = -signed_t(data_[i]);
     return result;
   }
+  vnl_vector_fixed& set(const T* data) { return copy_in(data); }
+  vnl_vector_fixed apply(T (*f)(T)) const { return applied(f); }
+  vnl_vector_fixed apply(T (*f)(const T&)) const { return applied(f); }
+  /// The len elements from `start`.
+  vnl_vector<T> extract(unsigned len, unsigned start = 0) const {
+    assert(start + len <= n);
+    return vnl_vector<T>(data_ + start, len);
+  }
+  /// Writes v from position `start` on.
+  vnl_vector_fixed& update(const vnl_vector<T>& v, unsigned start = 0) {
+    assert(start + v.size() <= n);
+    for (unsigned i = 0; i < v.size(); ++i) data_[start + i] = v[i];
+    return *this;
+  }
+  vnl_vector_fixed& flip() {
+    for (unsigned i = 0; i < n / 2; ++i) std::swap(data_[i], data_[n - 1 - i]);
+    return *this;
+  }
+  typename vnl_vector<T>::abs_t rms() const { return as_ref().rms(); }
+  T min_value() const { return as_ref().min_value(); }
+  T max_value() const { return as_ref().max_value(); }
+  unsigned arg_min() const { return unsigned(as_ref().arg_min()); }
+  unsigned arg_max() const { return unsigned(as_ref().arg_max()); }
+  T mean() const { return as_ref().mean(); }
+  bool is_finite() const { return as_ref().is_finite(); }
+  bool is_zero() const { return as_ref().is_zero(); }
+  bool is_equal(const vnl_vector_fixed& rhs, double tol) const { return as_ref().is_equal(rhs.as_ref(), tol); }
+  void assert_size(unsigned sz) const {
+    assert(sz == n);
+    (void)sz;
+  }
+  void assert_finite() const { as_ref().assert_finite(); }
+  static constexpr bool empty() { return n == 0; }
 
   T squared_magnitude() const {
     T total(0);
@@ -169,6 +215,13 @@ class vnl_vector_fixed {
   bool operator!=(const vnl_vector_fixed& rhs) const { return !(*this == rhs); }
 
  private:
+  template <class F>
+  vnl_vector_fixed applied(F f) const {
+    vnl_vector_fixed result;
+    for (unsigned i = 0; i < n; ++i) result[i] = f(data_[i]);
+    return result;
+  }
+
   T data_[n];
 };
 
@@ -228,6 +281,20 @@ vnl_vector_fixed<T, n> element_quotient(const vnl_vector_fixed<T, n>& a, const v
   vnl_vector_fixed<T, n> result;
   for (unsigned i = 0; i < n; ++i) result[i] = a[i] / b[i];
   return result;
+}
+
+/// Sum of squared differences, as vnl_vector's.
+template <class T, unsigned int n>
+typename vnl_numeric_traits<T>::abs_t vnl_vector_ssd(const vnl_vector_fixed<T, n>& a, const vnl_vector_fixed<T, n>& b) {
+  return vnl_vector_ssd(a.as_ref(), b.as_ref());
+}
+template <class T, unsigned int n>
+typename vnl_numeric_traits<T>::abs_t vnl_vector_ssd(const vnl_vector_fixed<T, n>& a, const vnl_vector<T>& b) {
+  return vnl_vector_ssd(a.as_ref(), b);
+}
+template <class T, unsigned int n>
+typename vnl_numeric_traits<T>::abs_t vnl_vector_ssd(const vnl_vector<T>& a, const vnl_vector_fixed<T, n>& b) {
+  return vnl_vector_ssd(a, b.as_ref());
 }
 
 template <class T>
