@@ -110,9 +110,9 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
     echo "## VXL's own tests compiled against ports/"
     echo
     echo "Upstream's \`core/vnl/tests\` driver tests and vnl_algo's \`test_levenberg_marquardt.cxx\`, each"
-    echo "compiled unchanged against ports/ and our testlib and run, by"
-    echo "\`tests/ports/upstream/check-vxl-tests.sh VXL_CHECKOUT BUILD WORK_DIR > tests/bench/ports/upstream_tests/BUILD.tsv\`"
-    echo "(a VXL checkout at the commit above; nothing of it enters the repository). test_matlab and"
+    echo "compiled unchanged against ports/ and our testlib and run, from a VXL checkout at the commit"
+    echo "above, outside this repository: neither fetched code nor a script that builds it is committed,"
+    echo "so \`tests/bench/ports/upstream_tests/BUILD.tsv\` holds each build's outcome as measured. test_matlab and"
     echo "test_sample need VXL's vpl and vul libraries, which are not ported."
     echo
     echo "What of upstream's tests depends on the platform or the configuration: the long double"

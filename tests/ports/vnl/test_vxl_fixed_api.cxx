@@ -3,7 +3,7 @@
 // also have, and the conversions between fixed and dense containers, each found missing when
 // upstream's test_container_interface, test_matrix_fixed, test_vector, test_quaternion,
 // test_diag_matrix, test_diag_matrix_fixed and test_matrix_fixed_ref were compiled against
-// ports/ (tests/ports/upstream/check-vxl-tests.sh).
+// ports/.
 #include <cmath>
 #include <limits>
 #include <sstream>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The names, overloads and conversions VXL's own vnl tests use (a VXL user's program), each
-// found missing or shaped differently when upstream's tests were compiled against ports/
-// (tests/ports/upstream/check-vxl-tests.sh): included only through the headers those tests
+// found missing or shaped differently when upstream's tests were compiled against ports/:
+// included only through the headers those tests
 // include, with upstream's behaviour.
 #include <cmath>
 #include <complex>
