@@ -17,7 +17,7 @@ set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 # No FPU, soft-float ABI; sections per function so that the linker drops what no image calls.
 set(EDGETRACK_MCU_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${EDGETRACK_MCU_FLAGS}")
-# -Wno-psabi: as in armv5te-pxa270.cmake (GCC's note on 8-byte-aligned vector elements).
+# -Wno-psabi: as in cross-linux.cmake (GCC's note on 8-byte-aligned vector elements).
 # -D_GNU_SOURCE: what g++ defines on Linux; newlib hides M_PI, strnlen, ... without it under -std=c++17.
 set(CMAKE_CXX_FLAGS_INIT "${EDGETRACK_MCU_FLAGS} -D_GNU_SOURCE -fno-exceptions -fno-rtti -Wno-psabi")
 # Our own startup (toolchains/mcu/startup.c), not newlib's crt0.

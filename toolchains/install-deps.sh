@@ -14,6 +14,7 @@ packages=(
   libopencv-dev libosmesa6-dev               # host image/video I/O and offscreen GL
   libx11-dev xvfb xauth xdotool              # track --init-click: display check; its test on a virtual display
   dpkg-dev                                   # cpack -G DEB: dpkg-shlibdeps fills the tools' Depends
+  valgrind                                   # callgrind: the benchmarks' instruction counts (tests/bench)
   pybind11-dev python3-dev python3-numpy     # the Python module (python/) and its tests
   clang libclang-rt-14-dev                   # libFuzzer, ASan and UBSan for the fuzz tree (tests/fuzz)
 )

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// A frame's result from Python: every FrameResult field as a read-only property (one line
-/// each, converted by to_py), the status enums, and the control points as N x 2 arrays.
+/// A frame's result from Python: every FrameResult field as a read-only property (one `field`
+/// line each, converted by to_py), the status enums, and the control points as N x 2 arrays.
 #include "bindings.h"
 
 namespace edgetrack_python {
@@ -30,6 +30,33 @@ py::object to_py(const int64_t (&v)[kStepCount]) {
   return d;
 }
 
+/// Read-only properties of the Python class `cls`, one `field` call each: the Python name, a
+/// member of the struct Part (the bound object itself, or a struct it holds, reached by `part`)
+/// and the docstring; each value converted by to_py when read.
+template <class Bound, class Part>
+class Fields {
+ public:
+  using PartOf = const Part& (*)(const Bound&);
+  Fields(py::class_<Bound>& cls, PartOf part) : cls_(cls), part_(part) {}
+
+  template <class Member>
+  Fields& field(const char* name, Member Part::*member, const char* doc) {
+    const PartOf part = part_;
+    cls_.def_property_readonly(name, [part, member](const Bound& o) { return to_py(part(o).*member); }, doc);
+    return *this;
+  }
+
+ private:
+  py::class_<Bound>& cls_;
+  PartOf part_;
+};
+
+/// The rows of a struct bound as itself.
+template <class T>
+Fields<T, T> fields(py::class_<T>& cls) {
+  return {cls, [](const T& o) -> const T& { return o; }};
+}
+
 py::array_t<double> points_of(const std::vector<Vec2>& points) {
   py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t(2)});
   auto a = out.mutable_unchecked<2>();
@@ -54,10 +81,6 @@ TrackedFrame tracked_frame(const FrameResult& result, const Tracker& tracker) {
   }
   return out;
 }
-
-// One line per field: a field added to a struct is one more line here.
-#define EDGETRACK_FIELD(cls, type, member, name, doc) \
-  cls.def_property_readonly(name, [](const type& o) { return to_py(o.member); }, doc)
 
 void bind_results(py::module_& m) {
   py::enum_<TrackingStatus>(m, "Status", "A frame's status (tracking_status.h).")
@@ -85,44 +108,48 @@ void bind_results(py::module_& m) {
   m.def("reason_name", [](StatusReason r) { return reason_name(r); }, py::arg("reason"), "The reason in words.");
 
   py::class_<FrameMeasures> measures(m, "Measures", "What the status rule read of a frame.");
-  EDGETRACK_FIELD(measures, FrameMeasures, visible, "visible", "Visible control points.");
-  EDGETRACK_FIELD(measures, FrameMeasures, matched, "matched", "Of those, the ones the moving edges found.");
-  EDGETRACK_FIELD(measures, FrameMeasures, kept, "kept", "Of those, the ones the robust pose solve kept.");
-  EDGETRACK_FIELD(measures, FrameMeasures, solved, "solved", "The pose step solved.");
-  EDGETRACK_FIELD(measures, FrameMeasures, matched_share, "matched_share", "kept / visible.");
-  EDGETRACK_FIELD(measures, FrameMeasures, inlier_share, "inlier_share", "kept / matched.");
-  EDGETRACK_FIELD(measures, FrameMeasures, residual_scale, "residual_scale", "Robust residual scale, pixels.");
-  EDGETRACK_FIELD(measures, FrameMeasures, correction_px, "correction_px", "Largest control point move, pixels.");
-  EDGETRACK_FIELD(measures, FrameMeasures, translation_change_mm, "translation_change_mm", "Solved against predicted, mm.");
-  EDGETRACK_FIELD(measures, FrameMeasures, rotation_change_deg, "rotation_change_deg", "Solved against predicted, degrees.");
-  EDGETRACK_FIELD(measures, FrameMeasures, range, "range", "Moving-edge range searched, pixels.");
-  EDGETRACK_FIELD(measures, FrameMeasures, after_loss, "after_loss", "The previous frame was lost.");
-  EDGETRACK_FIELD(measures, FrameMeasures, saturations, "saturations", "Fixed-point saturations during the frame.");
-  EDGETRACK_FIELD(measures, FrameMeasures, pose_uncertainty_px, "pose_uncertainty_px", "Overlay standard deviation, pixels.");
-  EDGETRACK_FIELD(measures, FrameMeasures, support_share, "support_share", "Share of the visible outline the image gradient supports.");
-  EDGETRACK_FIELD(measures, FrameMeasures, gradient_angle_deg, "gradient_angle_deg", "Mean angle between image gradient and edge normal, degrees (the quality figure).");
+  fields(measures)
+      .field("visible", &FrameMeasures::visible, "Visible control points.")
+      .field("matched", &FrameMeasures::matched, "Of those, the ones the moving edges found.")
+      .field("kept", &FrameMeasures::kept, "Of those, the ones the robust pose solve kept.")
+      .field("solved", &FrameMeasures::solved, "The pose step solved.")
+      .field("matched_share", &FrameMeasures::matched_share, "kept / visible.")
+      .field("inlier_share", &FrameMeasures::inlier_share, "kept / matched.")
+      .field("residual_scale", &FrameMeasures::residual_scale, "Robust residual scale, pixels.")
+      .field("correction_px", &FrameMeasures::correction_px, "Largest control point move, pixels.")
+      .field("translation_change_mm", &FrameMeasures::translation_change_mm, "Solved against predicted, mm.")
+      .field("rotation_change_deg", &FrameMeasures::rotation_change_deg, "Solved against predicted, degrees.")
+      .field("range", &FrameMeasures::range, "Moving-edge range searched, pixels.")
+      .field("after_loss", &FrameMeasures::after_loss, "The previous frame was lost.")
+      .field("saturations", &FrameMeasures::saturations, "Fixed-point saturations during the frame.")
+      .field("pose_uncertainty_px", &FrameMeasures::pose_uncertainty_px, "Overlay standard deviation, pixels.")
+      .field("support_share", &FrameMeasures::support_share, "Share of the visible outline the image gradient supports.")
+      .field("gradient_angle_deg", &FrameMeasures::gradient_angle_deg,
+       "Mean angle between image gradient and edge normal, degrees (the quality figure).");
 
   py::class_<PoseSolution> pose(m, "PoseSolution", "The pose step's residuals and counts.");
-  EDGETRACK_FIELD(pose, PoseSolution, start_rms, "start_rms", "RMS point-to-line distance before, pixels.");
-  EDGETRACK_FIELD(pose, PoseSolution, end_rms, "end_rms", "RMS point-to-line distance after, pixels.");
-  EDGETRACK_FIELD(pose, PoseSolution, evaluations, "evaluations", "Residual evaluations.");
-  EDGETRACK_FIELD(pose, PoseSolution, iterations, "iterations", "Jacobian evaluations.");
-  EDGETRACK_FIELD(pose, PoseSolution, outliers, "outliers", "Matches given weight 0 in the last robust solve.");
-  EDGETRACK_FIELD(pose, PoseSolution, residual_scale, "residual_scale", "Robust residual scale, pixels.");
-  EDGETRACK_FIELD(pose, PoseSolution, solved, "solved", "Whether the solve succeeded.");
+  fields(pose)
+      .field("start_rms", &PoseSolution::start_rms, "RMS point-to-line distance before, pixels.")
+      .field("end_rms", &PoseSolution::end_rms, "RMS point-to-line distance after, pixels.")
+      .field("evaluations", &PoseSolution::evaluations, "Residual evaluations.")
+      .field("iterations", &PoseSolution::iterations, "Jacobian evaluations.")
+      .field("outliers", &PoseSolution::outliers, "Matches given weight 0 in the last robust solve.")
+      .field("residual_scale", &PoseSolution::residual_scale, "Robust residual scale, pixels.")
+      .field("solved", &PoseSolution::solved, "Whether the solve succeeded.");
 
   py::class_<TrackedFrame> frame(m, "FrameResult", "What one frame did: pose, status, measures, times, points.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.camera_from_model, "camera_from_model",
-                  "The pose as a 4x4 float64 matrix (on a lost frame, the prediction the next frame starts from).");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.status, "status", "edgetrack.Status.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.reason, "reason", "edgetrack.Reason.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.measures, "measures", "edgetrack.Measures: what the status read.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.step_ns, "step_ns", "Nanoseconds of each of the paper's four steps, by name.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.points_sampled, "points_sampled", "Visible control points.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.points_matched, "points_matched", "Of those, matched and kept.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.grey_pixels, "grey_pixels", "Pixels the grey step converted.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.pose, "pose", "edgetrack.PoseSolution.");
-  EDGETRACK_FIELD(frame, TrackedFrame, result.retried, "retried", "Tracked again from the last trusted pose.");
+  Fields<TrackedFrame, FrameResult>(frame, [](const TrackedFrame& f) -> const FrameResult& { return f.result; })
+      .field("camera_from_model", &FrameResult::camera_from_model,
+       "The pose as a 4x4 float64 matrix (on a lost frame, the prediction the next frame starts from).")
+      .field("status", &FrameResult::status, "edgetrack.Status.")
+      .field("reason", &FrameResult::reason, "edgetrack.Reason.")
+      .field("measures", &FrameResult::measures, "edgetrack.Measures: what the status read.")
+      .field("step_ns", &FrameResult::step_ns, "Nanoseconds of each of the paper's four steps, by name.")
+      .field("points_sampled", &FrameResult::points_sampled, "Visible control points.")
+      .field("points_matched", &FrameResult::points_matched, "Of those, matched and kept.")
+      .field("grey_pixels", &FrameResult::grey_pixels, "Pixels the grey step converted.")
+      .field("pose", &FrameResult::pose, "edgetrack.PoseSolution.")
+      .field("retried", &FrameResult::retried, "Tracked again from the last trusted pose.");
   frame
       .def_property_readonly("translation", [](const TrackedFrame& f) { return vector_of(f.result.camera_from_model.translation()); },
                              "The pose's translation, metres, a float64 array of 3.")

@@ -4,7 +4,8 @@
 # scratch prefix (mode prefix, found through PYTHONPATH as docs/PYTHON.md says), or from the
 # python3-edgetrack .deb CPack makes, unpacked with dpkg-deb -x (mode deb: its Depends checked).
 # Then, in a fresh interpreter started outside the build tree, the module loads from there and
-# examples/python/track_sequence.py tracks the first frames of ViSP's mbt/cube.
+# examples/python/track_sequence.py tracks the first frames of ViSP's mbt/cube and evaluate.py a
+# generated sequence.
 # usage: test_python_package.sh prefix|deb BUILD SOURCE WORK VERSION PYTHON VISP_IMAGES
 set -euo pipefail
 mode=$1 build=$2 source=$3 work=$4 version=$5 python=$6 visp=$7
@@ -41,4 +42,10 @@ PYTHONPATH="$site" "$python" "$source/examples/python/track_sequence.py" "$visp/
   "$visp/mbt/cube.0.pos" "$visp/mbt/cube/image%04d.pgm" 0 4 --poses "$work/poses.csv" >"$work/track.log" ||
   fail "track_sequence.py failed: $(cat "$work/track.log")"
 [ "$(grep -c ',tracked,' "$work/poses.csv")" = 5 ] || fail "the installed module did not track the 5 frames: $(cat "$work/poses.csv")"
+# examples/python/evaluate.py on a short sequence of the build's `edgetrack synth`.
+"$build/app/edgetrack" synth --out "$work/seq" --model "$source/data/models/cube60.cao" --frames 4 --supersample 1 \
+  >"$work/synth.log" 2>&1 || fail "edgetrack synth failed: $(cat "$work/synth.log")"
+PYTHONPATH="$site" "$python" "$source/examples/python/evaluate.py" "$source/data/models/cube60.cao" "$work/seq" \
+  >"$work/evaluate.log" 2>&1 || fail "evaluate.py failed: $(cat "$work/evaluate.log")"
+grep -Eq '^4 frames, [34] tracked: ' "$work/evaluate.log" || fail "evaluate.py did not track 3 of the 4 frames: $(cat "$work/evaluate.log")"
 echo "$mode: the module loads from $site and tracks"

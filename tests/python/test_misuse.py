@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Bad arrays, bad files and misuse raise edgetrack.Error with a clear line, never crash, and
-leave the tracker as it was."""
+leave the tracker as it was; one tracker called from two threads at once refuses the second call."""
 import os
+import threading
 import unittest
 
 import numpy as np
@@ -103,6 +104,50 @@ class Misuse(unittest.TestCase):
             edgetrack.Tracker(None, self.config, self.initial)
         with self.assertRaises(TypeError):
             edgetrack.Tracker()
+
+    def refused_while_tracking(self, call):
+        """Runs `call(tracker)` in this thread while another thread tracks frames with the same
+        tracker (the GIL released inside track), until one of the two threads' calls is refused
+        (the worker stops after 2000 frames, seconds after a call would be refused otherwise);
+        returns the refusal."""
+        tracker = edgetrack.Tracker(self.model, self.config, self.initial)
+        frames = [cube_frame(k) for k in range(10)]
+        refusals, stop = [], threading.Event()
+
+        def track_frames():
+            for k in range(2000):
+                if stop.is_set():
+                    return
+                frame = frames[k % len(frames)]
+                try:
+                    tracker.track(frame)
+                except edgetrack.Error as error:  # this thread's call came second
+                    refusals.append(error)
+                    return
+
+        worker = threading.Thread(target=track_frames)
+        worker.start()
+        try:
+            while worker.is_alive() and not refusals:
+                try:
+                    call(tracker)
+                except edgetrack.Error as error:
+                    refusals.append(error)
+        finally:
+            stop.set()
+            worker.join()
+        self.assertTrue(refusals, "a second call on a tracker that is tracking in another thread is refused")
+        tracker.reset(self.initial)
+        self.assertEqual(tracker.track(self.grey).status, edgetrack.Status.TRACKED, "the tracker still tracks")
+        return refusals[0]
+
+    def test_one_tracker_from_two_threads_refuses_the_second_call(self):
+        message = "this tracker is already tracking a frame in another thread: use one tracker per thread"
+        params = self.tracker.params
+        for name, call in (("track", lambda t: t.track(self.grey)), ("reset", lambda t: t.reset(self.initial)),
+                           ("set_params", lambda t: t.set_params(params))):
+            with self.subTest(call=name):
+                self.assertEqual(str(self.refused_while_tracking(call)), message)
 
 
 if __name__ == "__main__":

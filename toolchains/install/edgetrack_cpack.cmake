@@ -3,11 +3,8 @@
 # edgetrack (component tools: the command line and the models) and libedgetrack-<real>-dev
 # (component dev: headers, libraries, CMake and pkg-config files), for the build's
 # architecture: the host's (dpkg --print-architecture) or the ARM toolchain's (armel, armhf, arm64).
-if(CMAKE_CROSSCOMPILING AND NOT EDGETRACK_DEB_ARCHITECTURE)
-  # Debian's name for the soft-float ARM EABI of the PXA270 toolchain file; the other toolchain
-  # files name their own.
-  set(EDGETRACK_DEB_ARCHITECTURE armel)
-else()
+# A cross toolchain file names its own (cross-linux.cmake); a host build asks dpkg.
+if(NOT CMAKE_CROSSCOMPILING)
   find_program(EDGETRACK_DPKG dpkg)
   if(EDGETRACK_DPKG)
     execute_process(COMMAND ${EDGETRACK_DPKG} --print-architecture OUTPUT_VARIABLE EDGETRACK_DEB_ARCHITECTURE

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// The C++ side of the binding's cost: ViSP's mbt/cube frames, held in memory as grey8, tracked
-/// through the C++ API by a new tracker on each pass; prints the mean time of one track() call
-/// over each pass, in microseconds, one pass a line (bench.py does the same from Python).
-/// usage: cpp_track_loop MODEL CONFIG INIT PATTERN FIRST LAST PASSES
+/// The C++ side of the binding's cost: reads ViSP's mbt/cube frames FIRST..LAST into memory as
+/// grey8, creates a tracker, tracks the first TRACKED of them through the C++ API and prints the
+/// mean time of one track() call in microseconds (bench.py does the same from Python). Run with
+/// TRACKED = 0 it does all but the tracking: the difference of two runs' instruction counts is
+/// what the TRACKED calls cost (results.sh).
+/// usage: cpp_track_loop MODEL CONFIG INIT PATTERN FIRST LAST TRACKED
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,7 @@ bool read_pgm(const std::string& path, int& width, int& height, std::vector<uint
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 8) return std::fprintf(stderr, "usage: %s MODEL CONFIG INIT PATTERN FIRST LAST PASSES\n", argv[0]), 2;
+  if (argc != 8) return std::fprintf(stderr, "usage: %s MODEL CONFIG INIT PATTERN FIRST LAST TRACKED\n", argv[0]), 2;
   auto model = edgetrack::load_model(argv[1]);
   edgetrack::TrackerConfig config;
   auto read = edgetrack::apply_visp_config(argv[2], config);
@@ -43,17 +44,17 @@ int main(int argc, char** argv) {
     frames.emplace_back();
     if (!read_pgm(path, width, height, frames.back())) return std::fprintf(stderr, "cpp_track_loop: %s\n", path), 1;
   }
-  for (int pass = 0; pass < std::atoi(argv[7]); ++pass) {
-    auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
-    if (!tracker.ok()) return std::fprintf(stderr, "cpp_track_loop: %s\n", tracker.error().text().c_str()), 1;
-    long long ns = 0;
-    for (const std::vector<uint8_t>& frame : frames) {
-      const auto begin = std::chrono::steady_clock::now();
-      auto r = tracker.value().track(edgetrack::packed_frame(frame.data(), width, height, edgetrack::PixelLayout::kGrey8));
-      ns += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - begin).count();
-      if (!r.ok()) return std::fprintf(stderr, "cpp_track_loop: %s\n", r.error().text().c_str()), 1;
-    }
-    std::printf("%.3f\n", ns / 1e3 / static_cast<double>(frames.size()));
+  const size_t tracked = static_cast<size_t>(std::atoi(argv[7]));
+  if (tracked > frames.size()) return std::fprintf(stderr, "cpp_track_loop: only %zu frames\n", frames.size()), 2;
+  auto tracker = edgetrack::Tracker::create(model.value(), config.camera, initial.value(), config.params);
+  if (!tracker.ok()) return std::fprintf(stderr, "cpp_track_loop: %s\n", tracker.error().text().c_str()), 1;
+  long long ns = 0;
+  for (size_t k = 0; k < tracked; ++k) {
+    const auto begin = std::chrono::steady_clock::now();
+    auto r = tracker.value().track(edgetrack::packed_frame(frames[k].data(), width, height, edgetrack::PixelLayout::kGrey8));
+    ns += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - begin).count();
+    if (!r.ok()) return std::fprintf(stderr, "cpp_track_loop: %s\n", r.error().text().c_str()), 1;
   }
+  if (tracked > 0) std::printf("%.3f\n", ns / 1e3 / static_cast<double>(tracked));
   return 0;
 }
