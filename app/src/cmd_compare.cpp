@@ -251,7 +251,7 @@ Result<Setup> read_setup(const Args& a, const SourceOptions& source, int factor,
   if (!configured.ok()) return configured.error();
   if (camera.width != first.pixels.width || camera.height != first.pixels.height)
     return Error{first.name, 0, "image size does not match the camera's (" + setup.xml + ")"};
-  setup.camera = downscaled(camera, factor);
+  setup.camera = edgetrack::downscaled_camera(camera, factor);
   downscale_settings(setup.params, factor);
   return setup;
 }

@@ -309,7 +309,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
                                 " does not match the camera's " + std::to_string(full_camera.width) + "x" +
                                 std::to_string(full_camera.height) + " (" + a.text("--camera") + ")"});
   if (auto refused = edgetrack::check_camera(full_camera)) return report("track", {a.text("--camera"), 0, refused->message});
-  in.camera = downscaled(full_camera, request.factor);
+  in.camera = edgetrack::downscaled_camera(full_camera, request.factor);
   if (in.camera.width == 0 || in.camera.height == 0)
     return report("track", {"--downscale " + std::to_string(request.factor), 0,
                             "leaves no pixel of a " + std::to_string(in.full_width) + "x" +
@@ -322,6 +322,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
     auto made = auto_init_tracker(a, in.model, in.camera, params);
     if (!made.ok()) return report("track", made.error());
     in.auto_tracker = std::move(made).value();
+    print_detection_reduction(in.camera, "track");
   }
   auto initial = initial_pose(request, in, full_camera);
   if (!initial.ok()) return report("track", initial.error());

@@ -6,13 +6,6 @@
 
 namespace edgetrack_app {
 
-edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int factor) {
-  if (factor <= 1) return camera;
-  const real f(factor), half(0.5);
-  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
-          camera.width / factor, camera.height / factor, camera.lens};
-}
-
 void downscale_settings(edgetrack::TrackerParams& params, int factor) {
   if (factor <= 1) return;
   const real f(factor);

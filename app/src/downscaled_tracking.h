@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Tracking frames N times smaller than the camera's (`--downscale N` of track and compare): the
-/// camera and the pixel-sized settings follow the frame.
+/// camera (edgetrack::downscaled_camera) and the pixel-sized settings follow the frame.
 #pragma once
 
 #include "edgetrack/pinhole_camera.h"
@@ -8,9 +8,6 @@
 #include "image_io.h"
 
 namespace edgetrack_app {
-
-/// The camera for a frame `factor` times smaller: the same rays land at (u + 0.5) / factor - 0.5.
-edgetrack::PinholeCamera downscaled(const edgetrack::PinholeCamera& camera, int factor);
 
 /// The sample step, the range and the level-of-detail length are pixels of the input frames,
 /// like the camera: scaled with it (the area by factor^2), the smaller frames get the same

@@ -85,4 +85,11 @@ PinholeCamera PinholeCamera::scaled(int factor) const {
   return {px * factor, py * factor, u0 * factor + shift, v0 * factor + shift, width * factor, height * factor, lens};
 }
 
+PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
+  if (factor <= 1) return camera;
+  const real f(factor), half(0.5);
+  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
+          camera.width / factor, camera.height / factor, camera.lens};
+}
+
 }  // namespace edgetrack
