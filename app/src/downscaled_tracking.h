@@ -3,6 +3,7 @@
 /// camera (edgetrack::downscaled_camera) and the pixel-sized settings follow the frame.
 #pragma once
 
+#include "edgetrack/downscaled_camera.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/tracker.h"
 #include "image_io.h"

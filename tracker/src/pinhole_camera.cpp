@@ -2,6 +2,8 @@
 /// The pinhole camera and its lens models.
 #include "edgetrack/pinhole_camera.h"
 
+#include "edgetrack/downscaled_camera.h"
+
 namespace edgetrack {
 namespace {
 

@@ -111,9 +111,4 @@ struct PinholeCamera {
   PinholeCamera scaled(int factor) const;
 };
 
-/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5);
-/// `camera` itself for a factor of 1 or less. The one owner of this scaling: `--downscale` and
-/// the detector's reduction of large frames (detection_reduction) both use it.
-PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
-
 }  // namespace edgetrack

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "edgetrack/detector/viewpoints.h"
+#include "edgetrack/downscaled_camera.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
