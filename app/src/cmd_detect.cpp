@@ -9,7 +9,6 @@
 #include "commands.h"
 #include "configuration.h"
 #include "detection_options.h"
-#include "downscaled_tracking.h"
 #include "edgetrack/detector/detector.h"
 #include "edgetrack/model_io.h"
 #include "edgetrack/pose_io.h"
@@ -77,13 +76,7 @@ int detect_main(int argc, char** argv) {
                              "image size " + std::to_string(image.value().width) + "x" +
                                  std::to_string(image.value().height) + " does not match the camera's " +
                                  std::to_string(camera.width) + "x" + std::to_string(camera.height)});
-  // A large image is detected on a reduced copy when the templates are made now; a template file
-  // fixes the camera, and with it the size, detection runs at (track --init-auto reads the same
-  // files on full-size frames). The pose found is the full-size camera's.
-  int factor = 1;
-  if (!a.has("--templates")) camera = detection_camera(camera, "detect", factor);
-  FramePixels reduced;
-  const edgetrack::FrameView frame = tracked_frame(image.value(), factor, reduced);
+  print_detection_reduction(camera, "detect");
   auto templates = templates_for(a, model.value(), camera);
   if (!templates.ok()) {
     edgetrack::Error error = templates.error();
@@ -95,7 +88,7 @@ int detect_main(int argc, char** argv) {
                                               edgetrack::DetectorParams{}, config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
   const auto start = std::chrono::steady_clock::now();
-  const auto detected = detector.value().detect(frame);
+  const auto detected = detector.value().detect(image.value().view());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!detected.ok()) return report("detect", {a.text("--image"), 0, detected.error().message});
   const edgetrack::Detection& detection = detected.value();

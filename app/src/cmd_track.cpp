@@ -322,6 +322,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
     auto made = auto_init_tracker(a, in.model, in.camera, params);
     if (!made.ok()) return report("track", made.error());
     in.auto_tracker = std::move(made).value();
+    print_detection_reduction(in.camera, "track");
   }
   auto initial = initial_pose(request, in, full_camera);
   if (!initial.ok()) return report("track", initial.error());

@@ -115,14 +115,13 @@ Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args
   return std::unique_ptr<edgetrack::AutoInitTracker>(new edgetrack::AutoInitTracker(std::move(made).value()));
 }
 
-edgetrack::PinholeCamera detection_camera(const edgetrack::PinholeCamera& camera, const char* command, int& factor) {
-  factor = edgetrack::detection_reduction(camera);
-  if (factor == 1) return camera;
-  const edgetrack::PinholeCamera reduced = edgetrack::downscaled_camera(camera, factor);
+void print_detection_reduction(const edgetrack::PinholeCamera& camera, const char* command) {
+  const int factor = edgetrack::detection_reduction(camera);
+  if (factor == 1) return;
+  const edgetrack::PinholeCamera reduced = edgetrack::detection_camera(camera);
   std::printf("%s: the image's shorter side is above the detector's %d px: detecting at 1/%d size (%dx%d), the pose "
               "is the full-size camera's\n",
               command, edgetrack::kMaxDetectionSide, factor, reduced.width, reduced.height);
-  return reduced;
 }
 
 Result<edgetrack::TemplateSet> templates_for(const Args& args, const edgetrack::EdgeModel& model,

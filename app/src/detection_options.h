@@ -29,10 +29,9 @@ edgetrack::Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker
                                                                                  const edgetrack::PinholeCamera& camera,
                                                                                  const edgetrack::TrackerParams& tracking);
 
-/// The camera detection runs with for images of `camera`'s size (edgetrack::detection_reduction):
-/// `camera` itself, or the camera of frames `factor` times smaller, with a line on stdout saying
-/// so (`command`: the command's name).
-edgetrack::PinholeCamera detection_camera(const edgetrack::PinholeCamera& camera, const char* command, int& factor);
+/// A line on stdout when the detector reduces frames of `camera`'s size (edgetrack::
+/// detection_reduction), naming the size it detects at (`command`: the command's name).
+void print_detection_reduction(const edgetrack::PinholeCamera& camera, const char* command);
 
 /// The templates of `--templates FILE` when given (checked against the model and the camera),
 /// else made now from the range options.

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Tracking frames N times smaller than the camera's (`--downscale N` of track and compare): the
-/// camera and the pixel-sized settings follow the frame.
+/// camera (edgetrack::downscaled_camera) and the pixel-sized settings follow the frame.
 #pragma once
 
+#include "edgetrack/downscaled_camera.h"
+#include "edgetrack/pinhole_camera.h"
 #include "edgetrack/tracker.h"
 #include "image_io.h"
 

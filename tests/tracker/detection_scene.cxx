@@ -132,4 +132,13 @@ void render_trial(const EdgeModel& model, const PinholeCamera& camera, const Se3
   renderer.render(with_object ? model : nothing, pose, seed + 1, additions, frame);
 }
 
+TemplateParams oblique_range() {
+  TemplateParams params;
+  params.views.axis = normalized(Vec3{real(0.5), real(-0.6), real(1)});
+  params.views.max_angle = real(25.0 * 3.141592653589793 / 180);
+  params.views.distance_min = real(0.14);
+  params.views.distance_max = real(0.17);
+  return params;
+}
+
 }  // namespace edgetrack_test

@@ -40,6 +40,10 @@ edgetrack::Se3 random_view(const edgetrack::EdgeModel& model, const edgetrack::P
 std::vector<edgetrack::Segment3> background_lines(const edgetrack::EdgeModel& model,
                                                   const edgetrack::Se3& camera_from_model, int count, uint32_t seed);
 
+/// A small template range for the tests on one or two views: a 25-degree cone about an oblique
+/// axis (0.5, -0.6, 1), 140 to 170 mm.
+edgetrack::TemplateParams oblique_range();
+
 /// Renders a trial: `model` (or, when `with_object` is false, nothing but the background and
 /// the lines) at `pose`, background texture and noise from `seed`.
 void render_trial(const edgetrack::EdgeModel& model, const edgetrack::PinholeCamera& camera,

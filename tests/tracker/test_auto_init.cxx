@@ -30,15 +30,6 @@ struct Shot {
 const Shot kShots[] = {{11, 1}, {11, 2}, {11, 3}, {0, 4}, {0, 5}, {13, 6}, {13, 7}, {13, 8}};
 constexpr int kFirstBack = 5;
 
-TemplateParams small_range() {
-  TemplateParams params;
-  params.views.axis = normalized(Vec3{real(0.5), real(-0.6), real(1)});
-  params.views.max_angle = real(25.0 * 3.141592653589793 / 180);
-  params.views.distance_min = real(0.14);
-  params.views.distance_max = real(0.17);
-  return params;
-}
-
 }  // namespace
 
 static void test_auto_init_recovery() {
@@ -46,7 +37,7 @@ static void test_auto_init_recovery() {
   TEST("the model loads", model.ok(), true);
   if (!model.ok()) return;
   const PinholeCamera camera = qvga_camera();
-  const TemplateParams params = small_range();
+  const TemplateParams params = oblique_range();
   Result<TemplateSet> templates = make_template_set(model.value(), camera, params);
   TEST("templates are made", templates.ok(), true);
   if (!templates.ok()) return;

@@ -22,6 +22,7 @@ DECLARE(test_detection_wood_toy);
 DECLARE(test_detection_refine_from_truth);
 DECLARE(test_detection_restarts);
 DECLARE(test_auto_init_recovery);
+DECLARE(test_detection_large_frames);
 DECLARE(test_pose_uncertainty_measure);
 DECLARE(test_pose_unconstrained_leaving_view);
 DECLARE(test_back_and_forth);
@@ -57,6 +58,7 @@ void register_tests() {
   REGISTER(test_detection_refine_from_truth);
   REGISTER(test_detection_restarts);
   REGISTER(test_auto_init_recovery);
+  REGISTER(test_detection_large_frames);
   REGISTER(test_pose_uncertainty_measure);
   REGISTER(test_pose_unconstrained_leaving_view);
   REGISTER(test_back_and_forth);

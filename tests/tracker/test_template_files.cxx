@@ -94,9 +94,14 @@ static void test_template_files() {
   TEST("another camera is refused at the camera line", refused(good, cube.value(), other, 3, "another camera"), true);
   TEST("a file that is not a template file is refused",
        refused("V1\n# a model\n8\n", cube.value(), camera, 1, "not an edgetrack template file"), true);
+  const std::string header = "edgetrack-templates " + std::to_string(kTemplateFormatVersion);
   TEST("another format version is refused",
-       refused(replaced(good, "edgetrack-templates 1", "edgetrack-templates 7"), cube.value(), camera, 1,
-               "format version 7"), true);
+       refused(replaced(good, header, "edgetrack-templates 7"), cube.value(), camera, 1, "format version 7"), true);
+  const std::string version_1 = output("version_1_templates.txt");
+  write_text(version_1, replaced(good, header, "edgetrack-templates 1"));
+  const Result<TemplateSet> read_1 = read_templates(version_1, cube.value(), camera);
+  TEST("a version 1 file for a camera detection does not reduce is read",
+       read_1.ok() && read_1.value().features.size() == a.features.size(), true);
   const std::string cut = good.substr(0, good.find("\nt ", good.find("\nt ") + 1));
   TEST("a file cut short is refused at its end",
        refused(cut, cube.value(), camera, 9, "the file ends"), true);
@@ -111,6 +116,32 @@ static void test_template_files() {
        refused(replaced(good, "features 2 32", "features two 32"), cube.value(), camera, 5, "downscale"), true);
   TEST("more templates than the header states are refused",
        refused(good + line + "\n", cube.value(), camera, static_cast<int>(9 + a.templates.size()), "more than"), true);
+
+  // A camera above the detector's side: the file records it, and holds the templates made for
+  // the camera detection reduces its frames to; a version 1 file (made at full size) is refused.
+  const PinholeCamera large = camera.scaled(4);
+  const Result<TemplateSet> made_large = make_template_set(cube.value(), large, params);
+  const Result<TemplateSet> made_reduced = make_template_set(cube.value(), detection_camera(large), params);
+  TEST("templates are made for a 1280x960 camera and for the camera it is detected at",
+       made_large.ok() && made_reduced.ok(), true);
+  if (!made_large.ok() || !made_reduced.ok()) return;
+  TEST_EQUAL("1280x960 is detected at 640x480", detection_camera(large).width, 640);
+  int large_differ = made_large.value().features.size() != made_reduced.value().features.size();
+  for (size_t i = 0; !large_differ && i < made_large.value().features.size(); ++i)
+    large_differ += made_large.value().features[i].x != made_reduced.value().features[i].x ||
+                    made_large.value().features[i].y != made_reduced.value().features[i].y ||
+                    made_large.value().features[i].bin != made_reduced.value().features[i].bin;
+  TEST_EQUAL("they are the reduced camera's templates", large_differ, 0);
+  const std::string large_path = output("large_templates.txt");
+  TEST("they are written", write_templates(large_path, made_large.value()).ok(), true);
+  const Result<TemplateSet> read_large = read_templates(large_path, cube.value(), large);
+  TEST("and read back for the 1280x960 camera",
+       read_large.ok() && camera_description(read_large.value().camera) == camera_description(large), true);
+  const Result<std::string> large_text = read_input_text(large_path);
+  if (!large_text.ok()) return;
+  TEST("a version 1 file for a camera detection reduces is refused at its version",
+       refused(replaced(large_text.value(), header, "edgetrack-templates 1"), cube.value(), large, 1,
+               "version 1 for frames above 480 px"), true);
 }
 
 TESTMAIN(test_template_files)

@@ -2,6 +2,8 @@
 /// The pinhole camera and its lens models.
 #include "edgetrack/pinhole_camera.h"
 
+#include "edgetrack/downscaled_camera.h"
+
 namespace edgetrack {
 namespace {
 
@@ -96,6 +98,13 @@ PinholeCamera PinholeCamera::scaled(int factor) const {
   // `factor` times larger, the same ray lands at factor * (u + 0.5) - 0.5.
   const real shift = real(factor - 1) / 2;
   return {px * factor, py * factor, u0 * factor + shift, v0 * factor + shift, width * factor, height * factor, lens};
+}
+
+PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
+  if (factor <= 1) return camera;
+  const real f(factor), half(0.5);
+  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
+          camera.width / factor, camera.height / factor, camera.lens};
 }
 
 }  // namespace edgetrack

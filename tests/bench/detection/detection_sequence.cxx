@@ -35,7 +35,7 @@
 
 #include "configuration.h"
 #include "detection_scene.h"
-#include "edgetrack/detector/template_set.h"
+#include "downscaled_tracking.h"
 #include "edgetrack/detector/viewpoints.h"
 #include "edgetrack/model_io.h"
 #include "pose_table.h"
@@ -222,7 +222,7 @@ int corners_main(int argc, char** argv) {
   auto a = read_rows(argv[5]), b = read_rows(argv[6]);
   for (const Error* bad : {&model.error(), &camera.error(), &a.error(), &b.error()})
     if (!bad->message.empty()) return std::fprintf(stderr, "%s\n", bad->text().c_str()), 1;
-  const PinholeCamera tracked = downscaled_camera(camera.value(), std::atoi(argv[4]));
+  const PinholeCamera tracked = edgetrack::downscaled_camera(camera.value(), std::atoi(argv[4]));
   std::map<int, Se3> other;
   for (const PoseRow& row : b.value()) other[row.frame] = edgetrack_app::pose_of(row);
   double sum = 0, largest = 0;

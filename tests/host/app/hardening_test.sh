@@ -158,6 +158,14 @@ case $name in
     expect_error "$work/wide.xml:1: <camera><width> must be 1..16384" "$edgetrack" templates --model "$mbt/cube.cao" \
       --camera "$work/wide.xml" --out "$work/t.txt"
     [ ! -e "$work/t.txt" ] || fail "a refused templates run wrote its file" ;;
+  downscale_refusal_named)
+    # A --downscale the frame cannot take is blamed on --downscale, not on the init-pose file,
+    # before any output is made.
+    { printf 'P5\n7 7\n255\n'; head -c 49 /dev/zero; } >"$work/small.pgm"
+    expect_error "track: --downscale 8: leaves no pixel of a 7x7 frame" track --images "$work/small.pgm" --downscale 8 \
+      --poses "$work/small.csv"
+    ! grep -q "cube.0.pos" "$work/stderr" || fail "the init-pose file is blamed"
+    [ ! -e "$work/small.csv" ] && [ ! -e "$work/small.csv.partial" ] || fail "a poses file was written" ;;
   frame_gap_named)
     mkdir -p "$work/seq"
     for i in 0 1 2 4; do ln -s "$mbt/cube/image000$i.pgm" "$work/seq/image000$i.pgm"; done

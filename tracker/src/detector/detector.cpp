@@ -95,6 +95,9 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   if (camera_description(templates.camera) != camera_description(camera))
     return Error{"", 0, "the templates were made for another camera (" + camera_description(templates.camera) +
                             ", this one is " + camera_description(camera) + ")"};
+  // The refining trackers work at the camera detection runs at (frames above kMaxDetectionSide
+  // reduced); their settings are taken as given, pixels of frames of that size.
+  const PinholeCamera detecting = templates.detection_camera();
   const ModelExtent extent = model_extent(model);
   const Se3 start(Mat33::identity(), Vec3{real(0), real(0), real(4) * extent.radius + real(0.1)} - extent.centre);
   // One image, so nothing moves between its frames: no velocity is predicted; and each frame's
@@ -112,17 +115,18 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   TrackerParams wide_tracking = refining, fine_tracking = refining;
   wide_tracking.me.range = params.wide_range;
   fine_tracking.me.range = params.fine_range;
-  Result<Tracker> screen = Tracker::create(model, camera, start, screening);
+  Result<Tracker> screen = Tracker::create(model, detecting, start, screening);
   if (!screen.ok()) return screen.error();
-  Result<Tracker> tracker = Tracker::create(model, camera, start, refining);
+  Result<Tracker> tracker = Tracker::create(model, detecting, start, refining);
   if (!tracker.ok()) return tracker.error();
-  Result<Tracker> wide = Tracker::create(model, camera, start, wide_tracking);
+  Result<Tracker> wide = Tracker::create(model, detecting, start, wide_tracking);
   if (!wide.ok()) return wide.error();
-  Result<Tracker> fine = Tracker::create(model, camera, start, fine_tracking);
+  Result<Tracker> fine = Tracker::create(model, detecting, start, fine_tracking);
   if (!fine.ok()) return fine.error();
   Detector detector(std::move(templates), params, std::move(screen).value(), std::move(wide).value(),
                     std::move(tracker).value(), std::move(fine).value());
   detector.model_ = model;
+  detector.detecting_ = detecting;
   detector.tracking_range_ = tracking.me.range;
   return detector;
 }
@@ -144,13 +148,16 @@ void Detector::match(const FrameView& frame) {
   whole.bottom = camera.height;
   whole.right = camera.width;
   convert_to_grey(frame, whole, grey);
+  // A frame above kMaxDetectionSide is reduced once, here; matching and refining read the copy.
+  const int reduction = detection_reduction(camera);
+  if (reduction > 1) downscale_grey(grey_.data(), camera.width, camera.height, reduction, reduced_);
   const int factor = templates_.params.downscale;
-  const uint8_t* image = grey_.data();
+  const uint8_t* image = reduction > 1 ? reduced_.data() : grey_.data();
   if (factor > 1) {
-    downscale_grey(grey_.data(), camera.width, camera.height, factor, small_);
+    downscale_grey(image, detecting_.width, detecting_.height, factor, small_);
     image = small_.data();
   }
-  quantise_orientations(image, camera.width / factor, camera.height / factor, params_.orientations, scratch_,
+  quantise_orientations(image, detecting_.width / factor, detecting_.height / factor, params_.orientations, scratch_,
                         orientations_);
   spread_orientations(orientations_, params_.spread, scratch_, spread_);
   maps_.compute(spread_, params_.spread);
@@ -213,7 +220,7 @@ RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& m
 bool Detector::same_as_earlier(const RefinedCandidate& candidate, const std::vector<RefinedCandidate>& earlier) const {
   for (const RefinedCandidate& c : earlier)
     if (c.status != TrackingStatus::kLost &&
-        largest_image_shift(model_, templates_.camera, c.camera_from_model, candidate.camera_from_model) <=
+        largest_image_shift(model_, detecting_, c.camera_from_model, candidate.camera_from_model) <=
             real(static_cast<int>(tracking_range_)))
       return true;
   return false;
@@ -334,14 +341,17 @@ void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
   }
 }
 
+FrameView Detector::detection_frame() const {
+  const bool reduced = detection_reduction(templates_.camera) > 1;
+  return packed_frame(reduced ? reduced_.data() : grey_.data(), detecting_.width, detecting_.height, PixelLayout::kGrey8);
+}
+
 Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3& start) {
   if (const std::optional<Error> refused = check_frame(frame, templates_.camera.width, templates_.camera.height))
     return *refused;
   match(frame);
   points_searched_ = 0;
-  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
-                                      PixelLayout::kGrey8);
-  return refine(grey, TemplateMatch{}, start);
+  return refine(detection_frame(), TemplateMatch{}, start);
 }
 
 Result<Detection> Detector::detect(const FrameView& frame) {
@@ -350,9 +360,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   Detection detection;
   points_searched_ = 0;
   match(frame);
-  // The trackers read the grey image matching made, in place: no frame is converted again.
-  const FrameView grey = packed_frame(grey_.data(), templates_.camera.width, templates_.camera.height,
-                                      PixelLayout::kGrey8);
+  const FrameView grey = detection_frame();
   for (const TemplateMatch& m : screen(grey)) {
     detection.refined.push_back(refine(grey, m, detection.refined));
     if (confident(detection.refined.back(), params_) || budget_spent()) break;

@@ -108,9 +108,10 @@ Result<bool> read_identity(WordCursor& in, const std::string& path, const EdgeMo
   if (magic.value() != kMagic) return Error{path, in.line(), "not an edgetrack template file (no 'edgetrack-templates' header)"};
   auto version = in.whole({"format version", 0, 1e6});
   if (!version.ok()) return version.error();
-  if (version.value() != kTemplateFormatVersion)
+  if (version.value() != kTemplateFormatVersion && version.value() != 1)
     return Error{path, in.line(), "template format version " + std::to_string(version.value()) +
                                       ", this edgetrack reads version " + std::to_string(kTemplateFormatVersion)};
+  const int version_line = in.line();
   auto key = in.keyword("model");
   if (!key.ok()) return key.error();
   auto fingerprint = in.text("the model fingerprint");
@@ -132,6 +133,13 @@ Result<bool> read_identity(WordCursor& in, const std::string& path, const EdgeMo
   if (camera_description(set.camera) != camera_description(camera))
     return Error{path, in.line(), "made for another camera (" + camera_description(set.camera) +
                                       ", the camera given is " + camera_description(camera) + ")"};
+  // Version 1 made templates at the camera's full size; for a camera detection reduces they are
+  // not the ones this version would match, for any other the very same.
+  if (version.value() == 1 && detection_reduction(set.camera) > 1)
+    return Error{path, version_line, "template format version 1 for frames above " + std::to_string(kMaxDetectionSide) +
+                                         " px on their shorter side, made at full size; this edgetrack detects such "
+                                         "frames reduced (version " + std::to_string(kTemplateFormatVersion) +
+                                         "): make them again with edgetrack templates"};
   return true;
 }
 

@@ -132,19 +132,18 @@ Se3 template_pose(const Template& t, const ModelExtent& extent) {
   return Se3(rotation.rotation(), Vec3{real(0), real(0), t.distance} - rotation.rotation() * extent.centre);
 }
 
-PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor) {
-  if (factor <= 1) return camera;
-  const real f(factor), half(0.5);
-  return {camera.px / f, camera.py / f, (camera.u0 + half) / f - half, (camera.v0 + half) / f - half,
-          camera.width / factor, camera.height / factor, camera.lens};
-}
-
 int detection_reduction(const PinholeCamera& camera) {
   const int side = camera.width < camera.height ? camera.width : camera.height;
   return side <= kMaxDetectionSide ? 1 : (side + kMaxDetectionSide - 1) / kMaxDetectionSide;
 }
 
-PinholeCamera TemplateSet::matching_camera() const { return downscaled_camera(camera, params.downscale); }
+PinholeCamera detection_camera(const PinholeCamera& camera) {
+  return downscaled_camera(camera, detection_reduction(camera));
+}
+
+PinholeCamera TemplateSet::detection_camera() const { return edgetrack::detection_camera(camera); }
+
+PinholeCamera TemplateSet::matching_camera() const { return downscaled_camera(detection_camera(), params.downscale); }
 
 size_t TemplateSet::memory_bytes() const {
   return templates.size() * sizeof(Template) + features.size() * sizeof(TemplateFeature);
@@ -191,18 +190,20 @@ Result<TemplateSet> make_template_set(const EdgeModel& model, const PinholeCamer
   set.camera = camera;
   set.extent = model_extent(model);
   set.model_fingerprint = model_fingerprint(model);
+  // The range is checked and spread in the pixels detection sees (its model-size bound).
+  const PinholeCamera detecting = set.detection_camera();
   const PinholeCamera small = set.matching_camera();
   if (small.width < 16 || small.height < 16) return Error{"", 0, "the downscaled image is under 16 x 16 pixels"};
-  const Result<long long> views = checked_view_count(params.views, camera, set.extent);
+  const Result<long long> views = checked_view_count(params.views, detecting, set.extent);
   if (!views.ok()) return views.error();
   EdgeIdBuffer edge_ids(small);
   std::vector<Candidate> candidates;
-  for (const ViewPose& view : view_poses(params.views, camera, set.extent)) {
+  for (const ViewPose& view : view_poses(params.views, detecting, set.extent)) {
     view_candidates(model, small, view.camera_from_model, params, edge_ids, candidates);
     if (static_cast<int>(candidates.size()) < params.min_features) continue;
     build_template(spread_selection(candidates, params.features), view, small, set.extent, set);
   }
-  set.distance_count = static_cast<int>(view_distances(params.views, camera, set.extent).size());
+  set.distance_count = static_cast<int>(view_distances(params.views, detecting, set.extent).size());
   if (set.templates.empty()) return Error{"", 0, "no view of the range shows enough of the model's edges"};
   return set;
 }

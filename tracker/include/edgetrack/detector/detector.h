@@ -166,11 +166,15 @@ struct Detection {
 
 class Detector {
  public:
-  /// Checks that `templates` were made for this model and this camera.
+  /// Checks that `templates` were made for this model and this camera (the full-size camera of
+  /// the frames detect reads). Frames above kMaxDetectionSide on their shorter side are detected
+  /// on a copy reduced by detection_reduction (template_set.h): the refining trackers run at the
+  /// templates' detection_camera() with `tracking` as given, and the pose found is the
+  /// full-size camera's.
   static Result<Detector> create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
                                  const DetectorParams& params, const TrackerParams& tracking);
 
-  /// Finds the model in one frame of the camera's size, in any layout (frame_view.h); an
+  /// Finds the model in one frame of the camera's (full) size, in any layout (frame_view.h); an
   /// Error when check_frame refuses it.
   Result<Detection> detect(const FrameView& frame);
 
@@ -186,8 +190,11 @@ class Detector {
  private:
   Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
            Tracker fine);
-  /// The matching half: grey, downscale, orientations, spreading, response maps, matches.
+  /// The matching half: grey, reduction, downscale, orientations, spreading, response maps, matches.
   void match(const FrameView& frame);
+  /// The grey frame of detecting_'s size that match made, which the refining trackers read in
+  /// place (no frame converted again).
+  FrameView detection_frame() const;
   /// The trackers run from one match's pose; a run whose first frames settle where one of
   /// `earlier` did (same_as_earlier) and is not acceptable stops there.
   RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const std::vector<RefinedCandidate>& earlier);
@@ -223,7 +230,9 @@ class Detector {
   Tracker fine_;     ///< refining: the range narrowed
   EdgeModel model_;             ///< for same_as_earlier's image shift
   unsigned tracking_range_ = 0;  ///< the tracking settings' moving-edges range, px
+  PinholeCamera detecting_;     ///< the templates' detection_camera(): the refining trackers'
   std::vector<uint8_t> grey_;  ///< the frame in grey, row after row
+  std::vector<uint8_t> reduced_;  ///< grey_ reduced to detecting_'s size, when smaller
   std::vector<uint8_t> small_;
   std::vector<uint8_t> scratch_;
   OrientationImage orientations_;

@@ -14,8 +14,10 @@
 
 namespace edgetrack {
 
-/// The format version this build writes and reads.
-constexpr int kTemplateFormatVersion = 1;
+/// The format version this build writes and reads. Version 2 holds, for a camera above
+/// kMaxDetectionSide, the templates made at its detection_camera(); version 1 files are read
+/// when their camera is not above it (the same templates) and refused otherwise.
+constexpr int kTemplateFormatVersion = 2;
 
 /// Writes `set` to `path`; an Error names the file when it cannot be written.
 Result<bool> write_templates(const std::string& path, const TemplateSet& set);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "edgetrack/detector/viewpoints.h"
+#include "edgetrack/downscaled_camera.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
@@ -56,14 +57,19 @@ struct Template {
 
 struct TemplateSet {
   TemplateParams params;
-  PinholeCamera camera;  ///< the full-resolution camera they are made for
+  /// The camera of the frames they are for, at full size (what a template file records). The
+  /// templates themselves are made at detection_camera(): smaller for frames above
+  /// kMaxDetectionSide.
+  PinholeCamera camera;
   ModelExtent extent;
   std::string model_fingerprint;
   std::vector<Template> templates;
   std::vector<TemplateFeature> features;
   int distance_count = 0;  ///< distances of the range: every distance_index is below it
 
-  /// The camera of the downscaled image matching runs on.
+  /// The camera detection (templates, matching, refinement) runs at: detection_camera(camera).
+  PinholeCamera detection_camera() const;
+  /// The camera of the image matching runs on: detection_camera() downscaled by params.downscale.
   PinholeCamera matching_camera() const;
   /// Bytes held by the templates and their features.
   size_t memory_bytes() const;
@@ -72,24 +78,23 @@ struct TemplateSet {
 /// camera_from_model of a template's view.
 Se3 template_pose(const Template& t, const ModelExtent& extent);
 
-/// The camera of an image `factor` times smaller (pixel centres kept: u' = (u + 0.5) / f - 0.5),
-/// for detection's reduced frames and `--downscale`'s tracked ones; `camera` itself for a factor
-/// of 1 or less.
-PinholeCamera downscaled_camera(const PinholeCamera& camera, int factor);
-
-/// The longest shorter image side detection runs on at full size. A template's features lie
-/// within 255 pixels of its corner (a byte each) in the matching image, so that beyond about
-/// 1280 pixels no view of the default range fits one; and the refinement's settings
-/// (DetectorParams) are pixels chosen on frames of QVGA to VGA size: the generated cube of
-/// tests/host/app (detect_large_image) rendered at 960x720 and 1280x960 is not found at full
-/// size and is found at 640x480.
-constexpr int kMaxDetectionSide = 640;
+/// The longest shorter image side detection runs on at full size: VGA's. The refinement's
+/// settings (DetectorParams, and the tracking settings the detector's trackers take as given)
+/// are pixels chosen on frames of QVGA to VGA size, and a template's features lie within 255
+/// pixels of its corner (a byte each) in the matching image, so that beyond about 1280 pixels no
+/// view of the default range fits one. What each bound finds: tests/bench/detection/large_frames.sh.
+constexpr int kMaxDetectionSide = 480;
 
 /// The factor a frame of `camera`'s size is reduced by for detection (templates, matching and
 /// refinement alike): 1 up to kMaxDetectionSide pixels on its shorter side, else the smallest
-/// integer that brings the side there. A pose found with the reduced camera
-/// (downscaled_camera) is the full-size camera's: the reduced camera sees the same rays.
+/// integer that brings the side there. Detector reduces its frames itself (block averages), so a
+/// caller feeds full-size frames; a pose found with the reduced camera is the full-size
+/// camera's: the reduced camera sees the same rays.
 int detection_reduction(const PinholeCamera& camera);
+
+/// The camera detection runs at for frames of `camera`: downscaled_camera(camera,
+/// detection_reduction(camera)).
+PinholeCamera detection_camera(const PinholeCamera& camera);
 
 /// A short text that changes when the model's geometry changes: a hash of its vertices (in
 /// micrometres), faces, edges and curved primitives.
@@ -98,7 +103,8 @@ std::string model_fingerprint(const EdgeModel& model);
 /// Checks the parameters; an Error names the first one out of its range.
 Result<bool> check_template_params(const TemplateParams& params);
 
-/// Makes the templates of every view of params.views.
+/// Makes the templates of every view of params.views for frames of `camera` (full size; the
+/// templates are made at detection_camera(camera)).
 Result<TemplateSet> make_template_set(const EdgeModel& model, const PinholeCamera& camera,
                                       const TemplateParams& params);
 
