@@ -118,7 +118,7 @@ awk -F'\t' -v f="$frames" '
     if (n ~ /vpMe|convolve|moving_edges|refined_edge_point|me_search_box|normal_sign|sin_or_cos/) return "moving edges"
     if (n ~ /RGB565ToGrey|convert_to_grey|BoxGreyScaler|grey_scale/) return "grey conversion"
     if (n ~ /ContrastMemory/) return "contrast memory"
-    if (n ~ /edge_support|gradient_normal_angle|arctangent_deg/) return "status: the image's support of the outline (edge_support.h)"
+    if (n ~ /edge_support|gradient_normal_angle|arctangent_deg/) return "status: support of the outline in the image (edge_support.h)"
     if (n ~ /pose_uncertainty|pixel_gradient|whitened_square/) return "status: pose uncertainty"
     if (n ~ /Tracker::judge|judge_frame|MotionModel|largest_image_shift/) return "status: frame measures, judgement and prediction"
     if (n ~ /multiply_general|divide_general|sqrt|__udivmoddi4|__aeabi|operator\//) return "fixed-point multiply, divide, sqrt out of line"
