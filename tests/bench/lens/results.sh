@@ -62,5 +62,6 @@ for lens in none "$kud"; do
     "$work/steps.win"
 done
 echo
-echo "The pose step evaluates the lens and its derivative at every match of every evaluation; the"
-echo "visible edges cut lines and faces into pieces along the curved images (docs/ARCHITECTURE.md)."
+echo "The pose step evaluates the lens at every match of every evaluation, and its derivative where"
+echo "MINPACK asks for the Jacobian; the visible edges cut lines and faces into pieces along the"
+echo "curved images (docs/ARCHITECTURE.md)."
