@@ -12,7 +12,7 @@ constexpr int kDark = 20, kWhite = 235, kOff = 128;
 /// The circles' radius in spacings: a third for the symmetric grid (ViSP's grid2d), and for the
 /// asymmetric grid's diagonal neighbours, sqrt(2) spacings apart, a little more.
 real circle_radius(const CalibrationTarget& t) {
-  return t.kind == TargetKind::kAsymmetricCircles ? real(0.4) * t.spacing : t.spacing / real(3);
+  return t.kind == TargetKind::kAsymmetricCircles ? real(0.4) : real(1) / real(3);
 }
 
 /// The pattern's extent in the target frame: from (x0, y0) to (x1, y1), border included.
@@ -50,18 +50,19 @@ bool CalibrationTarget::dark(const real& x, const real& y) const {
     if (a < 0 || a > columns || b < 0 || b > rows) return false;
     return (a + b) % 2 == 0;
   }
-  // The nearest centre: its row, then its column in that row.
-  const real radius = circle_radius(*this);
-  const int j = static_cast<int>(floor(y / spacing + real(0.5)));
+  // The nearest centre: its row, then its column in that row. In spacings, so that the squares
+  // stay near 1: a fixed-point real squaring centimetres in metres keeps a few bits.
+  const real radius = circle_radius(*this), u = x / spacing, w = y / spacing;
+  const int j = static_cast<int>(floor(w + real(0.5)));
   for (int row = j - 1; row <= j + 1; ++row) {
     if (row < 0 || row >= rows) continue;
     const bool shifted = kind == TargetKind::kAsymmetricCircles;
-    const real step = shifted ? real(2) * spacing : spacing;
-    const real offset = shifted && row % 2 == 1 ? spacing : real(0);
-    const int i = static_cast<int>(floor((x - offset) / step + real(0.5)));
+    const real step = shifted ? real(2) : real(1);
+    const real offset = shifted && row % 2 == 1 ? real(1) : real(0);
+    const int i = static_cast<int>(floor((u - offset) / step + real(0.5)));
     if (i < 0 || i >= columns) continue;
-    const real dx = x - (offset + real(i) * step), dy = y - real(row) * spacing;
-    if (dx * dx + dy * dy <= radius * radius) return true;
+    const real du = u - (offset + real(i) * step), dw = w - real(row);
+    if (du * du + dw * dw <= radius * radius) return true;
   }
   return false;
 }
