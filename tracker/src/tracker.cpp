@@ -224,8 +224,7 @@ const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame,
     converted = convert_to_grey(frame, PixelBox{0, 0, frame.height, frame.width}, grey_);
     return grey_;
   }
-  // The points' read boxes themselves: whole 8x8 tiles around them, measured on the cube
-  // sequence, converted twice the pixels at twice the guest instructions.
+  // Only the pixels the points' read boxes cover (docs/results/me.md: against the whole frame).
   grey_boxes_.clear();
   for (const PixelBox& box : read_boxes_) grey_boxes_.add(box);
   converted = grey_boxes_.convert(frame, grey_);
