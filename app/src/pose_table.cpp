@@ -17,7 +17,6 @@
 using edgetrack::Error;
 using edgetrack::Result;
 using edgetrack::Se3;
-using edgetrack::Vec3;
 
 namespace edgetrack_app {
 namespace {
@@ -210,13 +209,7 @@ Result<bool> PoseTableWriter::close() {
 PoseRow pose_row(int frame, const Se3& camera_from_model) {
   PoseRow row;
   row.frame = frame;
-  const Vec3 t = camera_from_model.translation(), tu = camera_from_model.theta_u();
-  row.t[0] = static_cast<double>(t.x);
-  row.t[1] = static_cast<double>(t.y);
-  row.t[2] = static_cast<double>(t.z);
-  row.tu[0] = static_cast<double>(tu.x);
-  row.tu[1] = static_cast<double>(tu.y);
-  row.tu[2] = static_cast<double>(tu.z);
+  edgetrack::pose_columns(camera_from_model, row.t, row.tu);
   return row;
 }
 

@@ -7,16 +7,20 @@
 
 namespace edgetrack {
 
+void pose_columns(const Se3& camera_from_model, double t[3], double tu[3]) {
+  const Vec3 translation = camera_from_model.translation(), theta_u = camera_from_model.theta_u();
+  t[0] = static_cast<double>(translation.x);
+  t[1] = static_cast<double>(translation.y);
+  t[2] = static_cast<double>(translation.z);
+  tu[0] = static_cast<double>(theta_u.x);
+  tu[1] = static_cast<double>(theta_u.y);
+  tu[2] = static_cast<double>(theta_u.z);
+}
+
 PosesCsvRow poses_csv_row(int frame, const FrameResult& result) {
   PosesCsvRow row;
   row.frame = frame;
-  const Vec3 t = result.camera_from_model.translation(), tu = result.camera_from_model.theta_u();
-  row.t[0] = static_cast<double>(t.x);
-  row.t[1] = static_cast<double>(t.y);
-  row.t[2] = static_cast<double>(t.z);
-  row.tu[0] = static_cast<double>(tu.x);
-  row.tu[1] = static_cast<double>(tu.y);
-  row.tu[2] = static_cast<double>(tu.z);
+  pose_columns(result.camera_from_model, row.t, row.tu);
   int64_t ns = 0;
   for (int64_t step : result.step_ns) ns += step;
   row.points = result.points_matched;

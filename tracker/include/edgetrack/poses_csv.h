@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "edgetrack/se3.h"
 #include "edgetrack/tracker.h"
 #include "edgetrack/tracking_status.h"
 
@@ -22,6 +23,9 @@ struct PosesCsvRow {
   TrackingStatus status = TrackingStatus::kTracked;
   double edge_angle_deg = 0;  ///< FrameMeasures::gradient_angle_deg, the per-frame quality figure
 };
+
+/// The pose columns: camera_from_model's translation (metres) and theta-u (radians) as doubles.
+void pose_columns(const Se3& camera_from_model, double t[3], double tu[3]);
 
 /// The row of frame number `frame`, which Tracker::track answered with `result`.
 PosesCsvRow poses_csv_row(int frame, const FrameResult& result);
