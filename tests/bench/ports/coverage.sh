@@ -78,6 +78,45 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
   printf 'missing\t\t%s\n' "$(reason "$lib" "$test")"
 }
 
+api_section() {  # upstream_api.tsv -> the section comparing declarations, per header
+  local tsv=$here/upstream_api.tsv
+  echo
+  echo "## vnl and vnl_algo public API against upstream's headers"
+  echo
+  echo "Each upstream vnl and vnl_algo header's public declarations (functions, methods,"
+  echo "constructors, operators with their parameter, return and const types; data members,"
+  echo "typedefs) against those a program sees when it includes our header of that name, as"
+  echo "\`tests/bench/ports/upstream_api.py VXL_CHECKOUT BUILD_DIR\` measured them into"
+  echo "\`tests/bench/ports/upstream_api.tsv\` (run where a VXL checkout exists, not in CI). Both sides"
+  echo "are parsed by clang's front end (\`clang++ -fsyntax-only -Xclang -ast-dump=json\`, upstream's"
+  echo "configured headers filled with this host's values), not by matching text. *found*: same"
+  echo "scope, name and signature; *compatible*: ours takes the same calls (a template of ours,"
+  echo "\`const X&\` for upstream's \`X\`, \`size_t\` for \`unsigned int\`); *via alias*: upstream's"
+  echo "class is a typedef of ours (\`vnl_double_3\` is \`vnl_vector_fixed<double, 3>\`), its members"
+  echo "not compared; *other signature*: ours has the name with other signatures only; *missing*: ours"
+  echo "lacks the name. Limits: types are compared as spelled (a typedef spelled differently on the"
+  echo "two sides counts as another signature), template parameters by position (P0_1: the second"
+  echo "parameter of the outer template); default arguments, noexcept and virtual are not compared;"
+  echo "declarations in #if branches the parse does not take (upstream's with this host's"
+  echo "configuration, ours with the double build's) are not seen. Not measured yet: whether our"
+  echo "tests cover each check (each testlib_test_* call) of upstream's tests, per function exercised."
+  echo
+  echo "| header | upstream | found | compatible | via alias | other signature | missing |"
+  echo "|---|---|---|---|---|---|---|"
+  awk -F'\t' '$2 == "total" {
+      n = split($3, part, ", "); for (i = 1; i <= n; ++i) { v = part[i]; sub(/.* /, "", v); c[i] = v }
+      printf "| `%s` | %d | %s | %s | %s | %s | %s |\n", $1, c[1] + c[2] + c[3] + c[4] + c[5], c[1], c[2], c[3], c[4], c[5]
+      for (i = 1; i <= 5; ++i) sum[i] += c[i] }
+    END { printf "| all | %d | %d | %d | %d | %d | %d |\n", sum[1] + sum[2] + sum[3] + sum[4] + sum[5], sum[1], sum[2], sum[3], sum[4], sum[5] }' "$tsv"
+  echo
+  echo "### Declarations ours lacks or declares otherwise"
+  echo
+  awk -F'\t' '!/^#/ && $2 != "total" {
+      if ($1 != last) { printf "\n- `%s`:", $1; last = $1; sep = " " }
+      printf "%s%s `%s`", sep, ($2 == "missing" ? "missing" : "other"), $3; sep = "; " }
+    END { print "" }' "$tsv" | sed '1{/^$/d}'
+}
+
 rows=$(grep -v '^#' "$here/upstream_vxl.tsv" | while IFS=$'\t' read -r lib kind path; do
   printf '%s\t%s\t%s\t%s\n' "$lib" "$kind" "$path" "$(status_of "$lib" "$kind" "$path")"
 done)
@@ -146,6 +185,7 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
               printf " %s |\n", all ? "" : why[t] } }' \
       "$here/upstream_test_notes.tsv" "${measured[@]}"
   fi
+  if [ -e "$here/upstream_api.tsv" ]; then api_section; fi
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do
       echo
