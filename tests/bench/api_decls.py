@@ -74,7 +74,9 @@ class Walker:
         public = access in (None, "public")
         keep = here in self.wanted and public and not node.get("isImplicit")
         name = node.get("name", "")
-        if kind == "NamespaceDecl":
+        if kind == "NamespaceDecl" and not name:
+            self.skip(inner)  # an anonymous namespace is internal to its header
+        elif kind == "NamespaceDecl":
             inner_scope = scope if node.get("isInline") or not name else scope + [name]
             self.walk_children(inner, inner_scope, None, template)
         elif kind == "LinkageSpecDecl":
@@ -92,10 +94,13 @@ class Walker:
         elif kind in FUNCTION_KINDS:
             # A member defined outside its class was declared inside it already.
             out_of_line = kind != "FunctionDecl" and not in_record
-            if keep and not out_of_line and not node.get("explicitlyDeleted"):
+            if keep and not out_of_line:
                 params = [p.get("type", {}).get("qualType", "") for p in inner
                           if p.get("kind") == "ParmVarDecl"]
-                self.decls.append(self.record(here, scope, name, kind, node, params, template))
+                decl = self.record(here, scope, name, kind, node, params, template)
+                if node.get("explicitlyDeleted"):
+                    decl = decl[:3] + ("deleted",) + decl[4:]
+                self.decls.append(decl)
             self.skip(inner)
         elif kind in ("VarDecl", "FieldDecl") and scope and keep:
             self.decls.append((self.wanted[here], "::".join(scope), name, "var",
@@ -228,27 +233,50 @@ def loose(sig):
 
 
 def accepts(ours, upstream):
-    """True when our (possibly template) declaration takes what upstream's does: our template
-    parameters stand for any type, the same one wherever the same parameter appears."""
-    pattern, seen = "", {}
-    for piece in re.split(r"(P\d+_\d+)", re.escape(loose(ours))):
-        if re.fullmatch(r"P\d+_\d+", piece):
-            if piece in seen:
-                pattern += "(?P=%s)" % seen[piece]
+    """True when our (possibly template) declaration takes the calls upstream's does: our
+    template parameters stand for any type (the same one wherever the same parameter appears),
+    a const method of ours for upstream's non-const one, `const X&` of ours for upstream's `X&`."""
+    if "(" not in ours or "(" not in upstream:
+        return False
+    head, params, tail = split_params(upstream)
+    if not tail.strip().startswith("const"):
+        ours = re.sub(r"\)\s*const(\s*&*)$", r")\1", ours)
+    as_const = [("const " + p) if p.endswith("&") and not p.endswith("&&") and not p.startswith("const ") else p
+                for p in params]
+    for variant in (upstream, "%s(%s)%s" % (head, ", ".join(as_const), tail)):
+        pattern, seen = "", {}
+        for piece in re.split(r"(P\d+_\d+)", re.escape(loose(ours))):
+            if re.fullmatch(r"P\d+_\d+", piece):
+                if piece in seen:
+                    pattern += "(?P=%s)" % seen[piece]
+                else:
+                    seen[piece] = "g%d" % len(seen)
+                    pattern += "(?P<%s>.+?)" % seen[piece]
             else:
-                seen[piece] = "g%d" % len(seen)
-                pattern += "(?P<%s>.+?)" % seen[piece]
-        else:
-            pattern += piece
-    return re.fullmatch(pattern, loose(upstream)) is not None
+                pattern += piece
+        if re.fullmatch(pattern, loose(variant)) is not None:
+            return True
+    return False
+
+
+def special_member(decl):
+    """Copy and move constructors and assignments, which a class of ours has implicitly when
+    it declares none (clang lists implicit members only where a use declared them)."""
+    scope, name, kind, sig = decl[1], decl[2], decl[3], decl[4]
+    cls = scope.split("::")[-1] if scope else ""
+    if kind != "function" or not cls or "(" not in sig:
+        return False
+    _, params, _ = split_params(sig)
+    if len(params) != 1 or not re.fullmatch(r"(const )?%s(<[^()]*>)?&{1,2}" % re.escape(cls), params[0]):
+        return False
+    return name in (cls, "operator=")
 
 
 def compare(up_decls, our_decls, our_aliases, up_headers, our_header_of, our_flags, our_include_as,
             scalar=lambda sig: sig):
     """Rows (header, status, short declaration) for each upstream declaration ours does not
     have with the same signature, and (header, "total", counts) per header. Statuses: found
-    (same signature), compatible (ours takes the same calls: a template of ours, or `const X&`
-    for upstream's X), via alias (upstream's class is a typedef of ours: its members are those
+    (same signature), compatible (ours takes the same calls: see accepts() and special_member()), via alias (upstream's class is a typedef of ours: its members are those
     of the aliased class, not compared), other signature, missing."""
     by_file = {}
     for d in our_decls:
@@ -263,7 +291,9 @@ def compare(up_decls, our_decls, our_aliases, up_headers, our_header_of, our_fla
         visible = closures.get(mine, set())
         visible_names = {name for path, name in our_include_as.items() if os.path.realpath(path) in visible}
         ours = [(d[0], d[1], d[2], d[3], scalar(d[4])) for name in visible_names for d in by_file.get(name, [])]
-        sigs = {d[1:] for d in ours}
+        sigs = {d[1:] for d in ours if d[3] != "deleted"}
+        deleted = {(d[1], d[2]) for d in ours if d[3] == "deleted"}
+        ours = [d for d in ours if d[3] != "deleted"]
         by_name = {}
         for d in ours:
             by_name.setdefault((d[1], d[2]), []).append(d)
@@ -278,6 +308,8 @@ def compare(up_decls, our_decls, our_aliases, up_headers, our_header_of, our_fla
                 status = "found"
             elif d[1] in our_aliases:
                 status = "via alias"
+            elif special_member(d) and (d[1], d[2]) not in deleted:
+                status = "compatible"
             elif (d[1], d[2]) not in by_name:
                 status = "missing"
             elif d[3] == "function" and any(o[3] == "function" and accepts(o[4], d[4]) for o in by_name[(d[1], d[2])]):
