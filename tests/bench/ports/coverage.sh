@@ -115,10 +115,30 @@ api_section() {  # upstream_api.tsv -> the section comparing declarations, per h
   echo "two sides counts as another signature), template parameters by position (P0_1: the second"
   echo "parameter of the outer template); default arguments, noexcept and virtual are not compared;"
   echo "declarations in #if branches the parse does not take (upstream's with this host's"
-  echo "configuration, ours with the double build's) are not seen. Not measured yet: whether our"
-  echo "tests cover each check (each testlib_test_* call) of upstream's tests, per function exercised."
+  echo "configuration, ours with the double build's) are not seen."
   echo
   declaration_tables "$tsv" "Declarations ours lacks or declares otherwise"
+}
+
+checks_section() {  # upstream_checks.tsv -> per upstream test, the checks ours covers
+  local tsv=$here/upstream_checks.tsv
+  echo
+  echo "## Upstream's checks covered by our tests"
+  echo
+  echo "Per upstream vnl and vnl_algo test: its checks (TEST, TEST_NEAR, testlib_test_assert... calls),"
+  echo "and those whose exercised functions our test of the same name also calls, as"
+  echo "\`tests/bench/ports/upstream_checks.py VXL_CHECKOUT BUILD_DIR\` measured them into"
+  echo "\`tests/bench/ports/upstream_checks.tsv\` (run where a VXL checkout exists, not in CI). A check"
+  echo "exercises the vnl and vnl_algo API names (functions, methods, constructors, as read from"
+  echo "upstream's headers) called in its arguments or in the code since the previous check; it is"
+  echo "covered when our test calls each of those names. A name matches as an identifier, so a name"
+  echo "several classes share (\`size\`, \`get\`) counts once, and covering a name says our test calls"
+  echo "it, not that it checks the same values; operators are not counted."
+  echo
+  echo "| upstream test | checks | covered | names upstream's checks call and ours does not (checks) |"
+  echo "|---|---|---|---|"
+  awk -F'\t' '!/^#/ { printf "| `%s` | %d | %d | %s |\n", $1, $2, $3, $4; n += $2; c += $3 }
+    END { printf "| all | %d | %d |  |\n", n, c }' "$tsv"
 }
 
 visp_section() {  # visp_coverage/signatures.tsv -> the section comparing ports/visp with ViSP 3.5
@@ -210,6 +230,7 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
       "$here/upstream_test_notes.tsv" "${measured[@]}"
   fi
   if [ -e "$here/upstream_api.tsv" ]; then api_section; fi
+  if [ -e "$here/upstream_checks.tsv" ]; then checks_section; fi
   if [ -e "$top/tests/bench/visp_coverage/signatures.tsv" ]; then visp_section; fi
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do
