@@ -10,20 +10,21 @@ prints it (return and parameter types, const, static), public data members and v
 typedefs and aliases. Default arguments, noexcept, virtual and attributes are not compared.
 
 An upstream declaration is `found` when ours declares the same scope, name and signature in
-a file that our header of the same name includes (directly or not), `other signature` when
-ours has that scope and name only with other signatures, and `missing` otherwise.
+a file that our header of the same name includes (directly or not), `compatible` when ours
+takes the same calls (accepts(), special_member()), `via alias` when upstream's class is a
+typedef of ours, `other signature` when ours has that scope and name only with other
+signatures, and `missing` otherwise.
 
 Limits: types are compared as spelled after normalisation, so a typedef spelled differently
 on the two sides (`abs_t` against its underlying type) counts as another signature; template
-parameter names are renamed to T0, T1... by position of their first appearance in the
-signature; members of template specialisations are merged under the template's name;
-declarations inside #if branches the parse does not take are not seen.
+parameters are renamed P<depth>_<position>; members of template specialisations are merged
+under the template's name; declarations inside #if branches the parse does not take are not
+seen.
 """
 import json
 import os
 import re
 import subprocess
-import sys
 import tempfile
 
 FUNCTION_KINDS = {"FunctionDecl", "CXXMethodDecl", "CXXConstructorDecl", "CXXConversionDecl"}
@@ -40,10 +41,6 @@ class Walker:
         self.file = None
         self.decls = []
         self.aliases = set()  # names a namespace-scope typedef or alias declares
-
-    def note_locations(self, node):
-        for key in ("loc", "range"):
-            self._scan(node.get(key))
 
     def _scan(self, value):
         if isinstance(value, dict):
