@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "vcl/vcl_cmath.h"
 
@@ -64,6 +66,27 @@ vpMe::vpMe()
       strip(2) {
   initMask();
 }
+
+std::string vpMe::settingsText() const {
+  // Upstream's report on std::cout; printf's %g is the stream's default format for doubles.
+  char text[768];
+  std::snprintf(text, sizeof text,
+                "\nMoving edges settings \n\n"
+                " Size of the convolution masks....%ux%u pixels\n"
+                " Number of masks..................%u        \n"
+                " Query range +/- J................%u pixels  \n"
+                " Likelihood test ratio............%g\n"
+                " Contrast tolerance +/-...........%g%% and %g%%     \n"
+                " Sample step......................%g pixels\n"
+                " Strip............................%d pixels  \n"
+                " Min_Samplestep...................%g pixels  \n",
+                mask_size, mask_size, n_mask, range, static_cast<double>(threshold), static_cast<double>(mu1) * 100,
+                static_cast<double>(mu2) * 100, static_cast<double>(sample_step), strip,
+                static_cast<double>(min_samplestep));
+  return text;
+}
+
+void vpMe::print() { std::fputs(settingsText().c_str(), stdout); }
 
 void vpMe::initMask() {
   const unsigned int step = n_mask == 0 ? 1 : (180 / n_mask > 0 ? 180 / n_mask : 1);

@@ -72,6 +72,19 @@ void vpMeSite::init(real ip, real jp, real alphap, real convltp, int sign) {
   j_1 = 0;
 }
 
+vpMeSite* vpMeSite::getQueryList(const vpImage<unsigned char>&, const int range) {
+  using std::cos;
+  using std::sin;
+  const real s = sin(alpha), c = cos(alpha);
+  vpMeSite* candidates = new vpMeSite[2 * static_cast<unsigned int>(range) + 1];
+  for (int k = -range; k <= range; ++k) {
+    vpMeSite& candidate = candidates[k + range];
+    candidate.init(ifloat + k * s, jfloat + k * c, alpha, convlt, mask_sign);
+    candidate.setDisplay(selectDisplay);
+  }
+  return candidates;
+}
+
 void vpMeSite::initFromImage(const vpImage<unsigned char>& I, const vpMe* me, real ip, real jp, real alphap) {
   init(ip, jp, alphap);
   const vpMeResponse mask = response(I, me);

@@ -78,6 +78,89 @@ status_of() {  # library, kind, path -> "status<TAB>our file<TAB>note"
   printf 'missing\t\t%s\n' "$(reason "$lib" "$test")"
 }
 
+declaration_tables() {  # comparison TSV, title of the gap list -> counts per header, then the gaps
+  echo "| header | upstream | found | compatible | via alias | other signature | missing |"
+  echo "|---|---|---|---|---|---|---|"
+  awk -F'\t' '$2 == "total" {
+      n = split($3, part, ", "); for (i = 1; i <= n; ++i) { v = part[i]; sub(/.* /, "", v); c[i] = v }
+      printf "| `%s` | %d | %s | %s | %s | %s | %s |\n", $1, c[1] + c[2] + c[3] + c[4] + c[5], c[1], c[2], c[3], c[4], c[5]
+      for (i = 1; i <= 5; ++i) sum[i] += c[i] }
+    END { printf "| all | %d | %d | %d | %d | %d | %d |\n", sum[1] + sum[2] + sum[3] + sum[4] + sum[5], sum[1], sum[2], sum[3], sum[4], sum[5] }' "$1"
+  echo
+  echo "### $2"
+  echo
+  awk -F'\t' '!/^#/ && $2 != "total" {
+      if ($1 != last) { printf "\n- `%s`:", $1; last = $1; sep = " " }
+      printf "%s%s `%s`", sep, ($2 == "missing" ? "missing" : "other"), $3; sep = "; " }
+    END { print "" }' "$1" | sed '1{/^$/d}'
+}
+
+api_section() {  # upstream_api.tsv -> the section comparing declarations, per header
+  local tsv=$here/upstream_api.tsv
+  echo
+  echo "## vnl and vnl_algo public API against upstream's headers"
+  echo
+  echo "Each upstream vnl and vnl_algo header's public declarations (functions, methods,"
+  echo "constructors, operators with their parameter, return and const types; data members,"
+  echo "typedefs) against those a program sees when it includes our header of that name, as"
+  echo "\`tests/bench/ports/upstream_api.py VXL_CHECKOUT BUILD_DIR\` measured them into"
+  echo "\`tests/bench/ports/upstream_api.tsv\` (run where a VXL checkout exists, not in CI). Both sides"
+  echo "are parsed by clang's front end (\`clang++ -fsyntax-only -Xclang -ast-dump=json\`, upstream's"
+  echo "configured headers filled with this host's values), not by matching text. *found*: same"
+  echo "scope, name and signature; *compatible*: ours takes the same calls (a template of ours,"
+  echo "\`const X&\` for upstream's \`X\`, \`size_t\` for \`unsigned int\`); *via alias*: upstream's"
+  echo "class is a typedef of ours (\`vnl_double_3\` is \`vnl_vector_fixed<double, 3>\`), its members"
+  echo "not compared; *other signature*: ours has the name with other signatures only; *missing*: ours"
+  echo "lacks the name. Limits: types are compared as spelled (a typedef spelled differently on the"
+  echo "two sides counts as another signature), template parameters by position (P0_1: the second"
+  echo "parameter of the outer template); default arguments, noexcept and virtual are not compared;"
+  echo "declarations in #if branches the parse does not take (upstream's with this host's"
+  echo "configuration, ours with the double build's) are not seen."
+  echo
+  declaration_tables "$tsv" "Declarations ours lacks or declares otherwise"
+}
+
+checks_section() {  # upstream_checks.tsv -> per upstream test, the checks ours covers
+  local tsv=$here/upstream_checks.tsv
+  echo
+  echo "## Upstream's checks covered by our tests"
+  echo
+  echo "Per upstream vnl and vnl_algo test: its checks (TEST, TEST_NEAR, testlib_test_assert... calls),"
+  echo "and those whose exercised functions our test of the same name also calls, as"
+  echo "\`tests/bench/ports/upstream_checks.py VXL_CHECKOUT BUILD_DIR\` measured them into"
+  echo "\`tests/bench/ports/upstream_checks.tsv\` (run where a VXL checkout exists, not in CI). A check"
+  echo "exercises the vnl and vnl_algo API names (functions, methods, constructors, as read from"
+  echo "upstream's headers) called in its arguments or in the code since the previous check; it is"
+  echo "covered when our test calls each of those names. A name matches as an identifier, so a name"
+  echo "several classes share (\`size\`, \`get\`) counts once, and covering a name says our test calls"
+  echo "it, not that it checks the same values; operators are not counted."
+  echo
+  echo "| upstream test | checks | covered | names upstream's checks call and ours does not (checks) |"
+  echo "|---|---|---|---|"
+  awk -F'\t' '!/^#/ { printf "| `%s` | %d | %d | %s |\n", $1, $2, $3, $4; n += $2; c += $3 }
+    END { printf "| all | %d | %d |  |\n", n, c }' "$tsv"
+}
+
+visp_section() {  # visp_coverage/signatures.tsv -> the section comparing ports/visp with ViSP 3.5
+  local tsv=$top/tests/bench/visp_coverage/signatures.tsv
+  echo
+  echo "## ports/visp against ViSP 3.5's headers"
+  echo
+  echo "The same comparison for the ViSP headers ports/visp mirrors (the ME classes and the core"
+  echo "classes they use), against Debian's libvisp-dev read without VISP_BUILD_DEPRECATED_FUNCTIONS"
+  echo "(deprecated members, some of them public data members there, are not counted), ours in the"
+  echo "double build: \`tests/bench/visp_coverage/signatures.py BUILD_DIR\` writes"
+  echo "\`tests/bench/visp_coverage/signatures.tsv\`. Gaps left on purpose: \`display\` (ports/ draw"
+  echo "nothing: no vpDisplay), the click-driven \`initTracking(I)\` of vpMeLine and"
+  echo "\`initTracking(I, trackArc)\` of vpMeEllipse (they wait for clicks in a vpDisplay window),"
+  echo "\`vpMe::getMask\` (ours returns int16 tables read as \`mask[k][a][b]\`, not vpMatrix, see"
+  echo "docs/ME.md), vpImage's min/max queries (upstream throws on an empty image; the bare-metal tree"
+  echo "builds without exceptions), and the core classes' members no ME program needs (vpMatrix's"
+  echo "decompositions, vpImageConvert's colour formats, vpRect-based vpImagePoint queries)."
+  echo
+  declaration_tables "$tsv" "ViSP declarations ours lacks or declares otherwise"
+}
+
 rows=$(grep -v '^#' "$here/upstream_vxl.tsv" | while IFS=$'\t' read -r lib kind path; do
   printf '%s\t%s\t%s\t%s\n' "$lib" "$kind" "$path" "$(status_of "$lib" "$kind" "$path")"
 done)
@@ -146,6 +229,9 @@ commit=$(sed -n 's/.*at commit \([0-9a-f]*\).*/\1/p' "$here/upstream_vxl.tsv" | 
               printf " %s |\n", all ? "" : why[t] } }' \
       "$here/upstream_test_notes.tsv" "${measured[@]}"
   fi
+  if [ -e "$here/upstream_api.tsv" ]; then api_section; fi
+  if [ -e "$here/upstream_checks.tsv" ]; then checks_section; fi
+  if [ -e "$top/tests/bench/visp_coverage/signatures.tsv" ]; then visp_section; fi
   for lib in vnl vnl_algo vcl testlib; do
     for kind in header test; do
       echo

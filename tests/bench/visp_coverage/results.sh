@@ -60,6 +60,8 @@ echo "Scope: the ME module's headers, the core headers they include, and the cor
 echo "ME and pose code use. \"Missing\" lists the member names upstream's header declares and ours"
 echo "does not (operators and destructors not counted; protected and deprecated members included);"
 echo "tests are ours that include the header, directly or through another of our headers."
+echo "Names only: \`tests/bench/visp_coverage/signatures.py\` compares whole declarations (parameter,"
+echo "return and const types) with clang's front end, and docs/PORTS.md lists the gaps it finds."
 echo
 echo "| header | status | upstream names | missing in ours | tests |"
 echo "|---|---|---|---|---|"

@@ -14,6 +14,7 @@ DECLARE(test_me_masks);
 DECLARE(test_me_site);
 DECLARE(test_robust);
 DECLARE(test_transformations);
+DECLARE(test_upstream_api);
 
 void register_tests() {
   REGISTER(test_image_convert);
@@ -28,6 +29,7 @@ void register_tests() {
   REGISTER(test_me_site);
   REGISTER(test_robust);
   REGISTER(test_transformations);
+  REGISTER(test_upstream_api);
 }
 
 DEFINE_MAIN

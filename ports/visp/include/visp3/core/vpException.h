@@ -7,8 +7,11 @@
 #error "edgetrack's drop-in visp3/core/vpException.h and ViSP's cannot be mixed in one translation unit (see docs/INSTALL.md)"
 #endif
 
+#include <cstdarg>
+#include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 inline namespace edgetrack_ports {
 
@@ -29,10 +32,34 @@ class vpException : public std::exception {
   };
 
   vpException(int code, const std::string& message) : code_(code), message_(message) {}
+  /// As upstream: the message is `format` filled in printf's way.
+  vpException(int code, const char* format, va_list args) : code_(code) { setMessage(format, args); }
+  vpException(int code, const char* format, ...) : code_(code) {
+    va_list args;
+    va_start(args, format);
+    setMessage(format, args);
+    va_end(args);
+  }
+  explicit vpException(int code) : code_(code) {}
   int getCode() const { return code_; }
   const std::string& getStringMessage() const { return message_; }
   const char* getMessage() const { return message_.c_str(); }
   const char* what() const noexcept override { return message_.c_str(); }
+
+ protected:
+  void setMessage(const char* format, va_list args) {
+    va_list count;
+    va_copy(count, args);
+    const int length = std::vsnprintf(nullptr, 0, format, count);
+    va_end(count);
+    if (length <= 0) {
+      message_.clear();
+      return;
+    }
+    std::vector<char> text(static_cast<std::size_t>(length) + 1);
+    std::vsnprintf(text.data(), text.size(), format, args);
+    message_.assign(text.data(), static_cast<std::size_t>(length));
+  }
 
  private:
   int code_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Mirrors ViSP's visp3/core/vpImage.h: a row-major image of `Type` pixels that owns its bitmap.
-/// The subset the moving edges need: sizes, `I[i][j]`, `I(i, j)`, `bitmap`, resize and copy.
+/// The subset the moving edges need: sizes, `I[i][j]`, `I(i, j)`, `I(ip)`, `bitmap`, resize,
+/// copy, fill, sum and mean.
 /// Unlike upstream there is no row-pointer table and no display pointer; `I[i]` computes the row.
 /// As upstream, init(array, h, w) without copyData borrows the caller's pixels (a camera buffer
 /// read in place); a copy of such an image owns its pixels.
@@ -14,6 +15,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "visp3/core/vpImagePoint.h"
 #include "visp3/core/vpRGBa.h"
 
 inline namespace edgetrack_ports {
@@ -68,6 +70,32 @@ class vpImage {
   unsigned int getRows() const { return height; }
   unsigned int getCols() const { return width; }
   unsigned int getSize() const { return height * width; }
+  unsigned int getNumberOfPixel() const { return height * width; }
+
+  /// Sum of the pixels in double, 0 for an empty image (upstream's; set-up and statistics only).
+  double getSum() const {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(height) * width; ++k) sum += static_cast<double>(bitmap[k]);
+    return sum;
+  }
+  /// getSum() / (height * width) converted to Type (truncated for integer pixels), 0 when empty.
+  Type getMeanValue() const {
+    if (height == 0 || width == 0) return Type(0.0);
+    return static_cast<Type>(getSum() / (static_cast<double>(height) * width));
+  }
+  /// Frees the pixels: the image becomes 0 x 0 (its size too, unlike upstream's, which keeps the
+  /// numbers while bitmap is null).
+  void destroy() {
+    pixels_.clear();
+    pixels_.shrink_to_fit();
+    bitmap = nullptr;
+    height = width = 0;
+  }
+  /// Every pixel becomes v.
+  vpImage& operator=(const Type& v) {
+    std::fill(bitmap, bitmap + getSize(), v);
+    return *this;
+  }
 
   Type* operator[](unsigned int i) { return bitmap + static_cast<std::size_t>(i) * width; }
   Type* operator[](int i) { return bitmap + static_cast<std::ptrdiff_t>(i) * width; }
@@ -76,6 +104,9 @@ class vpImage {
 
   Type operator()(unsigned int i, unsigned int j) const { return bitmap[static_cast<std::size_t>(i) * width + j]; }
   void operator()(unsigned int i, unsigned int j, const Type& v) { bitmap[static_cast<std::size_t>(i) * width + j] = v; }
+  /// The pixel under ip, its coordinates truncated as upstream's cast does.
+  Type operator()(const vpImagePoint& ip) const { return (*this)(pixel_of(ip.get_i()), pixel_of(ip.get_j())); }
+  void operator()(const vpImagePoint& ip, const Type& v) { (*this)(pixel_of(ip.get_i()), pixel_of(ip.get_j()), v); }
 
   bool operator==(const vpImage& other) const {
     return height == other.height && width == other.width && std::equal(bitmap, bitmap + getSize(), other.bitmap);
@@ -83,6 +114,8 @@ class vpImage {
   bool operator!=(const vpImage& other) const { return !(*this == other); }
 
  private:
+  static unsigned int pixel_of(real coordinate) { return static_cast<unsigned int>(coordinate); }
+
   std::vector<Type> pixels_;
 
  public:

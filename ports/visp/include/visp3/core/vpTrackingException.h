@@ -15,6 +15,13 @@ class vpTrackingException : public vpException {
   enum errorTrackingCodeEnum { featureLostError = 100, notEnoughPointError, initializationError, fatalError };
 
   vpTrackingException(int code, const std::string& message) : vpException(code, message) {}
+  vpTrackingException(int code, const char* format, ...) : vpException(code) {
+    va_list args;
+    va_start(args, format);
+    setMessage(format, args);
+    va_end(args);
+  }
+  explicit vpTrackingException(int code) : vpException(code) {}
 };
 
 }  // inline namespace edgetrack_ports

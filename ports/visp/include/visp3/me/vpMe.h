@@ -12,6 +12,7 @@
 #endif
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "real/real.h"
@@ -65,6 +66,11 @@ class vpMe {
   real getSampleStep() const { return sample_step; }
   int getStrip() const { return strip; }
   real getThreshold() const { return threshold; }
+
+  /// Prints the settings to stdout in upstream's words and layout.
+  void print();
+  /// New: the text print() writes.
+  std::string settingsText() const;
 
   /// Rebuilds the masks from mask_size and n_mask (upstream calls it from the setters too).
   void initMask();

@@ -14,7 +14,7 @@
 /// Display code is not ported: setDisplay() only records the choice.
 ///
 /// Differences from upstream (docs/ME.md): scalars are `real`; no heap allocation per track()
-/// (upstream's getQueryList() is not provided); sine, cosine and mask index once per track();
+/// (track() does not go through getQueryList()); sine, cosine and mask index once per track();
 /// convolution, likelihood and contrast tests are integer comparisons (exact, see track()); the
 /// mask index is kept for the next convolution() with the same alpha.
 #pragma once
@@ -100,6 +100,12 @@ class vpMeSite {
   /// New: the same search over +-search_range instead of me's range. The trackers use it where
   /// upstream temporarily changes the shared vpMe's range (initial and extremity searches).
   void track(const vpImage<unsigned char>& I, const vpMe* me, bool test_contraste, unsigned int search_range);
+
+  /// Upstream's candidate list: a new[] array of the 2 range + 1 sites at ifloat + k sin(alpha),
+  /// jfloat + k cos(alpha), k from -range to range, each init(..., alpha, convlt, mask_sign)
+  /// (pixel = truncation) with this site's display choice; the caller delete[]s it. I is not
+  /// read (upstream only draws on it).
+  vpMeSite* getQueryList(const vpImage<unsigned char>& I, const int range);
 
   /// Pixels track() will read: rows [top, bottom), columns [left, right), not clipped.
   void getSearchBox(const vpMe* me, int& top, int& left, int& bottom, int& right) const;
