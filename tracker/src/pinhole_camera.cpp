@@ -82,7 +82,6 @@ int PinholeCamera::chord_pieces(const Vec2& a, const Vec2& b, const real& tolera
   // In pixels: the chord of the ends and the middle's offset from its start.
   const Vec2 chord{px * (db.x - da.x), py * (db.y - da.y)};
   const Vec2 middle{px * (dm.x - da.x), py * (dm.y - da.y)};
-  const real length = norm(chord);
   // Squared, which needs no square root: bend^2 = cross^2 / length^2 <= (tolerance n^2)^2.
   const real cross = chord.x * middle.y - chord.y * middle.x;
   const real length_squared = dot(chord, chord);
