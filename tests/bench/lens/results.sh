@@ -79,7 +79,18 @@ for scene in cube toy; do
     { printf "| %s | kud = %s |", name, lens
       for (i = 1; i <= 6; ++i) printf " %s (%+.0f, %+.1f %%) |", $i, $i - p[i], 100 * ($i - p[i]) / p[i]
       printf " %s |\n", $7 }'
+  # The verdict on the target, with what is over it and the steps it grew in.
+  printf '%s\n%s\n' "$pinhole" "$through" | awk -v name="$name" '
+    NR == 1 { for (i = 1; i <= 6; ++i) p[i] = $i; next }
+    { allowed = 1.15 * p[6]; over = $6 - allowed
+      line = sprintf("- %s: %+.1f %% per frame, ", name, 100 * ($6 - p[6]) / p[6])
+      if (over <= 0) line = line "within the target."
+      else line = line sprintf("%.0f instructions per frame over the target; the lens adds %+.0f in the visible edges, %+.0f in the pose step, %+.0f in ME and grey scaling, %+.0f outside the four steps (status, prediction, contrast memory, pose uncertainty).",
+        over, $1 - p[1], $4 - p[4], ($2 - p[2]) + ($3 - p[3]), ($6 - $5) - (p[6] - p[5]))
+      print line }' >>"$work/verdict.txt"
 done
+echo
+cat "$work/verdict.txt"
 echo
 echo "Where the lens's instructions go: the pose step evaluates the lens at every match of every"
 echo "evaluation (1 + kud r^2 and the distance through it; the Jacobian reuses both, where MINPACK asks"
