@@ -139,6 +139,30 @@ static void test_lens_chord_pieces() {
   const Vec2 a{real(-0.4), real(0.3)}, b{real(0.4), real(0.3)};
   TEST("a line bent by the lens needs more than one",
        visp_camera(-0.25, 0).chord_pieces(a, b, real(0.5), 64) > 1, true);
+  // bend_within, chord_pieces's shortcut to one piece, only where the image's middle lies within
+  // the tolerance of the ends' chord: segments of 0.01 to 0.4 at every angle across the image.
+  for (const double kud : {-0.25, 0.12}) {
+    const PinholeCamera camera = visp_camera(kud, 0);
+    int within = 0, wrong = 0;
+    for (int cx = -3; cx <= 3; ++cx)
+      for (int cy = -3; cy <= 3; ++cy)
+        for (int angle = 0; angle < 8; ++angle)
+          for (const double half : {0.005, 0.02, 0.05, 0.1, 0.2}) {
+            const double c = std::cos(angle * 3.14159265358979 / 8), s = std::sin(angle * 3.14159265358979 / 8);
+            const double mx = 0.12 * cx, my = 0.1 * cy;
+            const Vec2 p{real(mx - half * c), real(my - half * s)}, q{real(mx + half * c), real(my + half * s)};
+            if (!camera.bend_within(p, q, real(0.5))) continue;
+            ++within;
+            const Vec2 dp = camera.distort(p), dq = camera.distort(q), dm = camera.distort(real(0.5) * (p + q));
+            const double f = d(camera.px), chord_x = f * (d(dq.x) - d(dp.x)), chord_y = f * (d(dq.y) - d(dp.y));
+            const double mid_x = f * (d(dm.x) - d(dp.x)), mid_y = f * (d(dm.y) - d(dp.y));
+            const double bend = std::fabs(chord_x * mid_y - chord_y * mid_x) / std::hypot(chord_x, chord_y);
+            if (bend > 0.5) ++wrong;
+          }
+    std::printf("%s kud %+.2f: bend_within(0.5 px) settled %d of 1960 segments\n", name.c_str(), kud, within);
+    TEST("bend_within settles short segments to one piece", within > 0, true);
+    TEST("and none whose image bends more than the tolerance", wrong, 0);
+  }
 }
 
 static void test_lens() {

@@ -78,7 +78,11 @@ namespace {
 /// Through a lens, a line is cut into pieces whose curve stays within half a pixel of their
 /// chords: a chord's pixels are drawn within half a pixel of it, so a point of the curve rounds
 /// to a pixel at most one pixel across the line from a drawn one, which shows() looks at. A
-/// face's triangles are cut alike (the faces only hide lines). The tolerances are given where
+/// face's triangles are cut so that their outline stays within a pixel of the curve: a face
+/// only hides lines, and shows() takes a line's colour one pixel either side of a point, so an
+/// outline a pixel off moves no point further than that test already reaches across the line
+/// (half a pixel cut twice as many triangles out of a large face, and every line is tested
+/// against each). The tolerances are given where
 /// they are used, as literals: a `real` made from a variable float would be soft-float
 /// arithmetic on the ARM target.
 constexpr int kMostLinePieces = 32, kMostFacePieces = 8;
@@ -132,7 +136,7 @@ void EdgeIdBuffer::add_segment(const Vec3& a_in_camera, const Vec3& b_in_camera,
 }
 
 void EdgeIdBuffer::add_face_triangle(const Vec3 (&corners)[3]) {
-  const int n = lens_pieces(corners, 3, real(0.5), kMostFacePieces);
+  const int n = lens_pieces(corners, 3, real(1), kMostFacePieces);
   ScreenVertex polygon[kMaxClippedVertices];
   if (n == 1) {
     add_occluders(polygon, clip_and_project_triangle(camera_, corners, polygon), screen_, 0);

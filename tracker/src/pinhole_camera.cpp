@@ -2,7 +2,10 @@
 /// The pinhole camera and its lens models.
 #include "edgetrack/pinhole_camera.h"
 
+#include <cmath>
+
 #include "edgetrack/downscaled_camera.h"
+#include "real/sum_of_products.h"
 
 namespace edgetrack {
 namespace {
@@ -48,6 +51,16 @@ LensJacobian PinholeCamera::lens_jacobian(const Vec2& n) const {
   return j;
 }
 
+Vec2 PinholeCamera::lens_covector(const Vec2& n, const Vec2& c) const {
+  if (lens.model == LensModel::kVisp) {
+    const real factor = real(1) + lens.kud * sum_of_products(n.x, n.x, n.y, n.y);
+    const real bend = real(2) * lens.kud * sum_of_products(c.x, n.x, c.y, n.y);
+    return {sum_of_products(factor, c.x, bend, n.x), sum_of_products(factor, c.y, bend, n.y)};
+  }
+  const LensJacobian j = lens_jacobian(n);
+  return {sum_of_products(c.x, j.xx, c.y, j.yx), sum_of_products(c.x, j.xy, c.y, j.yy)};
+}
+
 Vec2 PinholeCamera::undistort(const Vec2& d) const {
   if (lens.model == LensModel::kVisp) {
     const real factor = real(1) + lens.kdu * (d.x * d.x + d.y * d.y);
@@ -76,13 +89,25 @@ Vec2 PinholeCamera::distort_direction(const Vec2& pinhole, const Vec2& along) co
   return {px * (j.xx * ax + j.xy * ay), py * (j.yx * ax + j.yy * ay)};
 }
 
+bool PinholeCamera::bend_within(const Vec2& a, const Vec2& b, const real& tolerance) const {
+  using std::fabs;
+  // With m the middle and u half the segment, x (1 + k |x|^2) puts the middle's image
+  // -k (m |u|^2 + 2 u (m . u)) off the middle of the ends' images: at most 3 |k| |m| |u|^2, in
+  // pixels times the larger focal length, and the bend is the part of that across the chord.
+  // With s = a + b = 2 m and d = b - a = 2 u, that is 3/8 |k| f |d|^2 |s|, squared here.
+  const Vec2 s = a + b, d = b - a;
+  const real focal = px > py ? px : py;
+  const real reach = real(0.375) * fabs(lens.kud) * focal * dot(d, d);  // the bound over |s|, pixels
+  return reach * reach * dot(s, s) <= tolerance * tolerance;
+}
+
 int PinholeCamera::chord_pieces(const Vec2& a, const Vec2& b, const real& tolerance, int most) const {
   if (!distorted()) return 1;
+  if (lens.model == LensModel::kVisp && bend_within(a, b, tolerance)) return 1;
   const Vec2 da = distort(a), db = distort(b), dm = distort(real(0.5) * (a + b));
   // In pixels: the chord of the ends and the middle's offset from its start.
   const Vec2 chord{px * (db.x - da.x), py * (db.y - da.y)};
   const Vec2 middle{px * (dm.x - da.x), py * (dm.y - da.y)};
-  const real length = norm(chord);
   // Squared, which needs no square root: bend^2 = cross^2 / length^2 <= (tolerance n^2)^2.
   const real cross = chord.x * middle.y - chord.y * middle.x;
   const real length_squared = dot(chord, chord);

@@ -77,25 +77,45 @@ bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, cons
 }
 
 /// distances_to_lines through a lens: delta = a x_d + b y_d + c with (x_d, y_d) the distorted
-/// (X / Z, Y / Z), whose undistorted (x, y) are kept for gradf (lens_gradients). Apart from the
-/// lens, the same operations as the pinhole's (a x + b y + c there).
-bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t, const real* zx, const real* zy,
+/// (x, y) = (X / Z, Y / Z), whose undistorted (x, y) are kept for gradf (lens_gradients).
+/// ViSP's radial model, (x_d, y_d) = f (x, y) with f = 1 + kud r^2: delta = f s + c with
+/// s = (a X + b Y) / Z, divided as the pinhole's distance is (two quotients by Z, as there);
+/// (x, y) = (X, Y) / Z enter only f and the Jacobian, as X and Y times 1 / Z (in S40.23 1 / Z of
+/// millimetres keeps 16 significant bits, which moves f s by under 1e-3 px). f and s are kept:
+/// the Jacobian follows from them without the lens again (radial_lens_gradients). Not inlined:
+/// the pinhole's loop in f keeps its own registers.
+__attribute__((noinline)) bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t, const real* zx, const real* zy,
                             const real* zz, const real* a, const real* b, const real* c, const real* weight, real* x,
-                            real* y, real* inv_z, real* delta, real* fx, real* normalised_x, real* normalised_y) {
+                            real* y, real* inv_z, real* delta, real* fx, real* normalised_x, real* normalised_y,
+                            real* radial_factor, real* radial_sum) {
+  const bool radial = camera.lens.model == LensModel::kVisp;
+  const real kud = camera.lens.kud;
   for (size_t i = 0; i < n; ++i) {
     const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
     if (!(p.z > real(0))) return false;
     x[i] = p.x;
     y[i] = p.y;
-    // One divisor for the three quotients: X / Z and Y / Z to the scalar's resolution, not
-    // 1 / Z's times X (in S40.23, 1 / Z of millimetres keeps only 16 significant bits).
     const Divisor<real> by_z(p.z);
-    inv_z[i] = by_z.divide(real(1));
-    const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
-    normalised_x[i] = normalised.x;
-    normalised_y[i] = normalised.y;
-    const Vec2 d = camera.distort(normalised);
-    const real distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
+    const real w = by_z.divide(real(1));
+    inv_z[i] = w;
+    real distance;
+    if (radial) {
+      const Vec2 normalised{p.x * w, p.y * w};
+      normalised_x[i] = normalised.x;
+      normalised_y[i] = normalised.y;
+      const real factor = real(1) + kud * sum_of_products(normalised.x, normalised.x, normalised.y, normalised.y);
+      const real sum = by_z.divide(sum_of_products(a[i], p.x, b[i], p.y));
+      radial_factor[i] = factor;
+      radial_sum[i] = sum;
+      distance = factor * sum + c[i];
+    } else {
+      // X / Z and Y / Z to the scalar's resolution: the whole distance goes through the lens.
+      const Vec2 normalised{by_z.divide(p.x), by_z.divide(p.y)};
+      normalised_x[i] = normalised.x;
+      normalised_y[i] = normalised.y;
+      const Vec2 d = camera.distort(normalised);
+      distance = sum_of_products(a[i], d.x, b[i], d.y, c[i], real(1));
+    }
     delta[i] = distance;
     fx[i] = weight ? weight[i] * distance : distance;
   }
@@ -112,6 +132,20 @@ void lens_gradients(size_t n, const PinholeCamera& camera, const real* normalise
     const real w = weight ? weight[i] : real(1);
     grad_a[i] = w * sum_of_products(a[i], j.xx, b[i], j.yx);
     grad_b[i] = w * sum_of_products(a[i], j.xy, b[i], j.yy);
+  }
+}
+
+/// lens_gradients for ViSP's radial model from the last evaluation's f = 1 + kud r^2 and
+/// s = a x + b y: (a, b) J_lens = f (a, b) + 2 kud s (x, y). `weighted_a` and `weighted_b` are a
+/// and b times the weight.
+void radial_lens_gradients(size_t n, const real& kud, const real* normalised_x, const real* normalised_y,
+                           const real* factor, const real* sum, const real* weighted_a, const real* weighted_b,
+                           const real* weight, real* grad_a, real* grad_b) {
+  const real twice_k = real(2) * kud;
+  for (size_t i = 0; i < n; ++i) {
+    const real bend = weight ? weight[i] * (twice_k * sum[i]) : twice_k * sum[i];
+    grad_a[i] = sum_of_products(weighted_a[i], factor[i], bend, normalised_x[i]);
+    grad_b[i] = sum_of_products(weighted_b[i], factor[i], bend, normalised_y[i]);
   }
 }
 
@@ -144,6 +178,7 @@ class PointToLineProblem {
       for (int k = 0; k < 2; ++k) {
         w.lens_point[k].resize(count_);
         w.lens_gradient[k].resize(count_);
+        w.lens_radial[k].resize(count_);
       }
     w.evaluated.resize(count_);
     w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
@@ -259,7 +294,8 @@ class PointToLineProblem {
     if (camera_.distorted()) {
       if (!distances_through_lens(count_, camera_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
                                   u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
-                                  fx, w_.lens_point[0].data(), w_.lens_point[1].data()))
+                                  fx, w_.lens_point[0].data(), w_.lens_point[1].data(),
+                                  w_.lens_radial[0].data(), w_.lens_radial[1].data()))
         return false;
     } else if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
                                    u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
@@ -279,7 +315,12 @@ class PointToLineProblem {
     const Mat33 jl = so3_left_jacobian(Vec3{x[3], x[4], x[5]});
     const bool left = !is_identity(jl);  // at x = 0, (z x g)^T J is z x g exactly
     // Through a lens, (a, b) J_lens at the last evaluation in place of (a, b).
-    if (camera_.distorted())
+    if (camera_.lens.model == LensModel::kVisp && camera_.distorted())
+      radial_lens_gradients(count_, camera_.lens.kud, w_.lens_point[0].data(), w_.lens_point[1].data(),
+                            w_.lens_radial[0].data(), w_.lens_radial[1].data(), w_.gradient[0].data(),
+                            w_.gradient[1].data(), weighted_ ? weights_ : nullptr, w_.lens_gradient[0].data(),
+                            w_.lens_gradient[1].data());
+    else if (camera_.distorted())
       lens_gradients(count_, camera_, w_.lens_point[0].data(), w_.lens_point[1].data(), w_.unweighted[0].data(),
                      w_.unweighted[1].data(), weighted_ ? weights_ : nullptr, w_.lens_gradient[0].data(),
                      w_.lens_gradient[1].data());

@@ -61,10 +61,10 @@ void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const
   real nu = n.x * camera.px * inv_z;
   real nv = n.y * camera.py * inv_z;
   if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
-    const LensJacobian j = camera.lens_jacobian(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z});
-    const real along_x = n.x * camera.px, along_y = n.y * camera.py;
-    nu = (along_x * j.xx + along_y * j.yx) * inv_z;
-    nv = (along_x * j.xy + along_y * j.yy) * inv_z;
+    const Vec2 across = camera.lens_covector(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z},
+                                             Vec2{n.x * camera.px, n.y * camera.py});
+    nu = across.x * inv_z;
+    nv = across.y * inv_z;
   }
   const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
   // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).

@@ -79,6 +79,10 @@ struct PinholeCamera {
     return {n.x * factor, n.y * factor};
   }
   LensJacobian lens_jacobian(const Vec2& normalised) const;
+  /// The row vector `covector` times the lens's derivative at `normalised`, (a, b) J_lens: the
+  /// chain rule of a distance across an edge. ViSP's model, x (1 + kud r^2), gives
+  /// (1 + kud r^2) (a, b) + 2 kud (a x + b y) (x, y) without the whole matrix.
+  Vec2 lens_covector(const Vec2& normalised, const Vec2& covector) const;
   /// Both at once (the pose step's residuals and Jacobian, every match of every evaluation):
   /// ViSP's model inline, sharing r^2 and its factor.
   Vec2 distort(const Vec2& n, LensJacobian& j) const {
@@ -117,6 +121,10 @@ struct PinholeCamera {
   /// the chord (ViSP's model: the distance d of the line from the centre gives an offset
   /// d (1 + k r^2), quadratic along it), and a parabola's sagitta falls with its chord squared.
   int chord_pieces(const Vec2& a, const Vec2& b, const real& tolerance, int most) const;
+  /// Whether ViSP's radial model surely bends the image of segment a-b by no more than
+  /// `tolerance` pixels, from a bound that needs no point through the lens: chord_pieces's
+  /// shortcut to one piece, where Edge-ID's many short sides end.
+  bool bend_within(const Vec2& a, const Vec2& b, const real& tolerance) const;
 
   /// The same camera without its lens.
   PinholeCamera pinhole() const { return {px, py, u0, v0, width, height}; }

@@ -101,6 +101,7 @@ struct PoseWorkspace {
   std::vector<real> inverse_depth;    ///< 1 / Z of that point, for the Jacobian
   std::vector<real> lens_point[2];     ///< through a lens: the undistorted X / Z and Y / Z at the last evaluation
   std::vector<real> lens_gradient[2];  ///< and (a, b) J_lens times the weight there, for the Jacobian
+  std::vector<real> lens_radial[2];    ///< ViSP's lens: 1 + kud r^2 and a x + b y there, which the Jacobian reuses
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> scratch, distances, weights, magnitudes, selection;
   std::vector<real> before_round;  ///< the distances the last robust round weighed (its weights, rounds_settled_px)
