@@ -55,9 +55,10 @@ class SoftOverlay : public Overlay {
           std::copy(colour, colour + 3, out.pixel(x, y));
         });
     }
-    const std::vector<uint16_t>& ids = edge_ids_.colours();
-    for (size_t at = 0; at < ids.size(); ++at)
-      if (ids[at] != 0 && !covered[at]) {
+    for (int y = 0; y < camera_.height; ++y)
+      for (int x = 0; x < camera_.width; ++x) {
+        const size_t at = static_cast<size_t>(y) * camera_.width + x;
+        if (edge_ids_.edge_at(x, y) < 0 || covered[at]) continue;
         uint8_t* p = &out.rgb[at * 3];
         p[0] = 26;
         p[1] = 255;

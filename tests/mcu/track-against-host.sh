@@ -2,18 +2,25 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The firmware's `edgetrack track` against the host's: renders 20 QVGA frames of the cube with the
 # host build (synth, PGM), tracks them with both, and requires the same poses CSV (every column
-# but ms, the step time, which the board's 10 ms semihosting clock cannot give).
-# usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR
+# but ms, the step time, which the board's 10 ms semihosting clock cannot give). With
+# --tracker-only, FIRMWARE_IMAGE is the tracker-only firmware (app/mcu), given the same inputs
+# as its positional arguments.
+# usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR [--tracker-only]
 set -euo pipefail
-host=${1:?usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR}
-firmware=${2:?} model=${3:?} work=${4:?}
+host=${1:?usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR [--tracker-only]}
+firmware=${2:?} model=${3:?} work=${4:?} mode=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$host" synth --out seq --frames 20 --pgm >/dev/null
 run=(track --model "$model" --camera seq/camera.xml --init-pose seq/first.pos --images 'seq/frames/frame%04d.pgm'
      --first 0 --last 19 --quiet)
 "$host" "${run[@]}" --poses host.csv >/dev/null
-EDGETRACK_MCU_FIRMWARE=$firmware "$here/../../toolchains/mcu/edgetrack-mcu.sh" "${run[@]}" --poses mcu.csv >/dev/null
+if [ "$mode" = --tracker-only ]; then
+  "$here/../../toolchains/mcu/run-firmware.sh" "$firmware" "$model" seq/camera.xml seq/first.pos \
+    'seq/frames/frame%04d.pgm' 0 19 mcu.csv
+else
+  EDGETRACK_MCU_FIRMWARE=$firmware "$here/../../toolchains/mcu/edgetrack-mcu.sh" "${run[@]}" --poses mcu.csv >/dev/null
+fi
 rows=$(($(wc -l <mcu.csv) - 1))
 if [ "$rows" -ne 20 ]; then echo "track-against-host: the firmware wrote $rows poses, not 20" >&2; exit 1; fi
 if ! diff <(cut -d, -f1-8,10 host.csv) <(cut -d, -f1-8,10 mcu.csv); then

@@ -29,6 +29,14 @@ std::vector<double> shown_share(const EdgeModel& model, const PinholeCamera& cam
   return share;
 }
 
+/// The edge at every pixel, row by row.
+std::vector<int> edge_image(const EdgeIdBuffer& ids) {
+  std::vector<int> edges;
+  for (int y = 0; y < ids.height(); ++y)
+    for (int x = 0; x < ids.width(); ++x) edges.push_back(ids.edge_at(x, y));
+  return edges;
+}
+
 }  // namespace
 
 static void test_edge_id_buffer() {
@@ -85,12 +93,20 @@ static void test_edge_id_buffer() {
   std::vector<int32_t> fresh_depth;
   ids.surface_depth(depth);
   fresh.surface_depth(fresh_depth);
-  TEST("a reused buffer equals a fresh one", ids.colours() == fresh.colours() && depth == fresh_depth, true);
+  TEST("a reused buffer equals a fresh one", edge_image(ids) == edge_image(fresh) && depth == fresh_depth, true);
+
+  // A byte per pixel for a model of a few primitives, RGB565 for any: the same edges everywhere.
+  EdgeIdBuffer narrow(camera, primitive_count(cube)), wide(camera);
+  narrow.render(cube, turned);
+  wide.render(cube, turned);
+  TEST_EQUAL("the cube's Edge-ID image takes a byte per pixel", narrow.image_bytes(), size_t(320 * 240));
+  TEST_EQUAL("or two as RGB565", wide.image_bytes(), size_t(2 * 320 * 240));
+  TEST("both show the same edge at every pixel", edge_image(narrow) == edge_image(wide), true);
 
   // Partly outside the image and partly behind the camera: no crash, nothing drawn off-image.
   const Se3 close(Mat33::identity(), {real(0.02), real(0), real(0.0)});
   ids.render(cube, close);
-  TEST("a cube around the camera renders without leaving the buffers", ids.colours().size(), size_t(320 * 240));
+  TEST_EQUAL("a cube around the camera renders without leaving the buffers", edge_image(ids).size(), size_t(320 * 240));
 }
 
 TESTMAIN(test_edge_id_buffer)

@@ -12,6 +12,7 @@
 #include "edgetrack/tracker.h"
 #include "synthetic_sequence.h"
 #include "testlib/testlib_test.h"
+#include "visp3/core/vpImageConvert.h"
 
 using namespace edgetrack;
 using namespace edgetrack_test;
@@ -55,6 +56,35 @@ static void test_tracker_allocations() {
   TEST("no repeat of the frame after the first allocates", after_first, uint64_t{0});
   TEST("and the live bytes stay the same: nothing accumulates between frames", same_live, true);
   TEST("the frame was tracked", tracker.value().matches().size() > 20, true);
+
+  // Tracker::memory's buffers against the allocator's count: they are the tracker's heap, the
+  // rest of which (masks, faces' states, the state object) is a few kilobytes.
+  const TrackerMemory memory = tracker.value().memory();
+  const int64_t counted = created_bytes + after[0].live_bytes - before[0].live_bytes;
+  for (const auto& row : memory.rows()) std::printf("Tracker buffer: %s %zu bytes\n", row.name, row.bytes);
+  TEST("the buffers add up to no more than the allocator counted", int64_t(memory.total()) <= counted, true);
+  TEST("and to all of it but at most 32 KB", counted - int64_t(memory.total()) <= 32 * 1024, true);
+  const size_t pixels = static_cast<size_t>(camera.width) * camera.height;
+  TEST_EQUAL("an RGB565 frame is converted into a grey image of the frame's size", memory.grey_image, pixels);
+  TEST_EQUAL("the Edge-ID image holds a byte per pixel (the cube has 12 edges)", memory.edge_id_image, pixels);
+  TEST("the depths under the lines take less than a tenth of a depth image's", memory.edge_id_lines < pixels * 4 / 10,
+       true);
+
+  // A grey8 frame is read in place: no grey image, and the same pose as from RGB565 (the grey
+  // levels are rgb565ToGrey's either way).
+  std::vector<unsigned char> grey(pixels);
+  for (size_t i = 0; i < pixels; ++i) grey[i] = vpImageConvert::rgb565ToGrey(frame.pixels[i]);
+  Result<Tracker> grey_tracker = Tracker::create(model.value(), camera, truth[0], TrackerParams{});
+  const FrameResult from_grey =
+      grey_tracker.value().track(packed_frame(grey.data(), camera.width, camera.height, PixelLayout::kGrey8)).value();
+  TEST_EQUAL("a tracker fed grey8 frames keeps no grey image", grey_tracker.value().memory().grey_image, size_t{0});
+  tracker.value().reset(truth[0]);
+  const FrameResult from_rgb565 = tracker.value().track(rgb565_view(frame)).value();
+  const Vec3 t_grey = from_grey.camera_from_model.translation(), t_rgb565 = from_rgb565.camera_from_model.translation();
+  const Vec3 r_grey = from_grey.camera_from_model.theta_u(), r_rgb565 = from_rgb565.camera_from_model.theta_u();
+  TEST("and tracks to the same pose", t_grey.x == t_rgb565.x && t_grey.y == t_rgb565.y && t_grey.z == t_rgb565.z &&
+                                          r_grey.x == r_rgb565.x && r_grey.y == r_rgb565.y && r_grey.z == r_rgb565.z,
+       true);
 }
 
 TESTMAIN(test_tracker_allocations)

@@ -9,41 +9,67 @@
 #include "edgetrack/cylinder_windows.h"
 #include "edgetrack/edge_id.h"
 #include "edgetrack/raster.h"
+#include "edgetrack/tracker_memory.h"
 
 namespace edgetrack {
 
-EdgeIdBuffer::EdgeIdBuffer(const PinholeCamera& camera)
+EdgeIdBuffer::EdgeIdBuffer(const PinholeCamera& camera, int primitives)
     : camera_(camera),
       screen_{0, 0, camera.width - 1, camera.height - 1},
-      colours_(static_cast<size_t>(camera.width) * camera.height, 0),
-      nearest_(static_cast<size_t>(camera.width) * camera.height, 0),
-      nearest_owner_(static_cast<size_t>(camera.width) * camera.height, 0) {}
+      pixels_(static_cast<size_t>(camera.width) * camera.height),
+      narrow_(primitives <= kNarrowPrimitives) {
+  if (narrow_) narrow_ids_.assign(pixels_, NarrowId{0});
+  else colours_.assign(pixels_, 0);
+}
+
+namespace {
+
+/// Sets the pixels of `lines` in `image` to 0. Each line is walked from a local copy: a byte
+/// store may alias anything but a local, so the walk's steps stay in registers.
+template <class Pixel, class Segments>
+void clear_line_pixels(Pixel* image, const Segments& lines, int width, int height) {
+  for (const auto& s : lines) {
+    const LineWalk line = s.line;
+    draw_line(line, width, height, [image, width](int x, int y, int32_t) { image[static_cast<size_t>(y) * width + x] = Pixel{0}; });
+  }
+}
+
+}  // namespace
 
 void EdgeIdBuffer::clear_lines() {
   if (clear_all_) {
+    std::fill(narrow_ids_.begin(), narrow_ids_.end(), NarrowId{0});
     std::fill(colours_.begin(), colours_.end(), uint16_t(0));
-    std::fill(nearest_.begin(), nearest_.end(), 0);
-    std::fill(nearest_owner_.begin(), nearest_owner_.end(), int16_t(0));
     clear_all_ = false;
+  } else if (narrow_) {
+    clear_line_pixels(narrow_ids_.data(), segments_, camera_.width, camera_.height);
   } else {
-    uint16_t* colour = colours_.data();
-    int32_t* depth = nearest_.data();
-    int16_t* owner = nearest_owner_.data();
-    const int width = camera_.width;
-    for (const Segment& s : segments_)
-      draw_line(s.line, width, camera_.height, [colour, depth, owner, width](int x, int y, int32_t) {
-        const size_t i = static_cast<size_t>(y) * width + x;
-        colour[i] = 0;
-        depth[i] = 0;
-        owner[i] = 0;
-      });
+    clear_line_pixels(colours_.data(), segments_, camera_.width, camera_.height);
   }
   segments_.clear();
   occluders_.clear();
 }
 
+void EdgeIdBuffer::use_image(bool narrow) {
+  const bool sized = narrow ? narrow_ids_.size() == pixels_ : colours_.size() == pixels_;
+  if (narrow == narrow_ && sized) return;
+  if (narrow) {
+    std::vector<uint16_t>().swap(colours_);
+    narrow_ids_.assign(pixels_, NarrowId{0});
+  } else {
+    std::vector<NarrowId>().swap(narrow_ids_);
+    colours_.assign(pixels_, 0);
+  }
+  narrow_ = narrow;
+  edge_colours_.clear();  // their values are the other image's
+  segments_.clear();      // the new image has none of their pixels
+  occluders_.clear();
+  clear_all_ = false;
+}
+
 void EdgeIdBuffer::assign(const uint16_t* rgb565) {
-  std::copy(rgb565, rgb565 + colours_.size(), colours_.begin());
+  use_image(false);
+  std::copy(rgb565, rgb565 + pixels_, colours_.begin());
   segments_.clear();
   occluders_.clear();
   clear_all_ = true;
@@ -51,19 +77,28 @@ void EdgeIdBuffer::assign(const uint16_t* rgb565) {
 
 void EdgeIdBuffer::reserve_for(const EdgeModel& model) {
   const size_t primitives = static_cast<size_t>(primitive_count(model));
+  use_image(narrow_ && primitives <= static_cast<size_t>(kNarrowPrimitives));
   if (edge_colours_.size() != primitives) {
     edge_colours_.resize(primitives);
-    for (size_t e = 0; e < primitives; ++e) edge_colours_[e] = pack_rgb565(encode_edge_id(static_cast<int>(e)));
+    for (size_t e = 0; e < primitives; ++e)
+      edge_colours_[e] = narrow_ ? static_cast<uint16_t>(e + 1) : pack_rgb565(encode_edge_id(static_cast<int>(e)));
   }
   // At most one line per primitive; a clipped polygon fans into kMaxClippedVertices - 2
   // triangles, a windowed back facet (never clipped) into one per rim box.
   segments_.reserve(primitives);
   occluders_.reserve((model.triangles.size() + 2 * model.cylinder_surface.size()) * (kMaxClippedVertices - 2));
+  // A line clipped to the screen has at most one pixel per column or row, and one more for
+  // rounding; past one image's worth the lines cross each other anyway.
+  const size_t line_pixels = static_cast<size_t>(std::max(camera_.width, camera_.height) + 1);
+  line_depth_.reserve(std::min(primitives * line_pixels, pixels_));
+  // Owners only under the lines a side may not hide: cylinder silhouettes and circles.
+  const size_t exemptible = primitives - model.edges.size();
+  line_owner_.reserve(std::min(exemptible * line_pixels, pixels_));
 }
 
 void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) {
-  clear_lines();
   reserve_for(model);
+  clear_lines();
   points_in_camera_.resize(model.vertices.size());
   for (size_t v = 0; v < model.vertices.size(); ++v) points_in_camera_[v] = camera_from_model * model.vertices[v];
   collect_segments(model, camera_from_model);
@@ -271,46 +306,91 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
   }
 }
 
+namespace {
+
+/// Where a pixel of a line is along it: k of LineWalk's pixel k, from its major coordinate.
+struct StepAlong {
+  explicit StepAlong(const LineWalk& line) : x_major(line.x_major), first(line.first), dir(line.dir) {}
+  int operator()(int x, int y) const { return ((x_major ? x : y) - first) * dir; }
+  bool x_major;
+  int first, dir;
+};
+
+}  // namespace
+
 void EdgeIdBuffer::find_nearest_surfaces() {
-  const int width = camera_.width;
-  int32_t* depth = nearest_.data();
-  int16_t* owner = nearest_owner_.data();
-  // Every pixel starts with no surface (clear_lines). In the order a whole-surface fill would
-  // take, keeping the first of equal depths: the same nearest surface at every pixel, however
-  // many lines cross it. A triangle whose box misses the line's box has none of its pixels (most
-  // of a tessellated side's facets, for each line).
-  for (const Segment& s : segments_)
+  size_t pixels = 0, owned = 0;
+  for (Segment& s : segments_) {
+    s.first_pixel = pixels;
+    pixels += static_cast<size_t>(s.line.count);
+    // Only a line that a surface's owner may not hide reads who that surface is.
+    s.first_owner = owned;
+    if (s.exempt_owner >= 0) owned += static_cast<size_t>(s.line.count);
+  }
+  // No surface anywhere yet. A pixel two lines share gets the same nearest surface from each
+  // (line_in_triangle gives a triangle's own depth there, whatever the line).
+  line_depth_.assign(pixels, 0);
+  line_owner_.assign(owned, 0);
+  // In the order a whole-surface fill would take, keeping the first of equal depths: the same
+  // nearest surface at every pixel as that fill's. A triangle whose box misses the line's box has
+  // none of its pixels (most of a tessellated side's facets, for each line).
+  for (const Segment& s : segments_) {
+    int32_t* depth = line_depth_.data() + s.first_pixel;
+    const LineWalk& line = s.line;
+    const StepAlong step_along(line);
     for (const Occluder& o : occluders_) {
       const PixelRect& box = o.triangle.box;
       if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
+      if (s.exempt_owner < 0) {
+        line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
+          int32_t& nearest = depth[step_along(x, y)];
+          if (w > nearest) nearest = w;
+        });
+        continue;
+      }
+      int16_t* owner = line_owner_.data() + s.first_owner;
       const int16_t id = o.owner;
-      line_in_triangle(s.line, o.triangle, [depth, owner, width, id](int x, int y, int32_t w) {
-        const size_t i = static_cast<size_t>(y) * width + x;
-        if (w > depth[i]) {
-          depth[i] = w;
-          owner[i] = id;
+      line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
+        const int k = step_along(x, y);
+        if (w > depth[k]) {
+          depth[k] = w;
+          owner[k] = id;
         }
       });
     }
+  }
 }
 
-void EdgeIdBuffer::draw_segments() {
+template <class Pixel>
+void EdgeIdBuffer::draw_segments_into(Pixel* image) const {
   const int width = camera_.width, height = camera_.height;
-  const int32_t* depth = nearest_.data();
-  const int16_t* owner = nearest_owner_.data();
-  uint16_t* colour = colours_.data();
   for (const Segment& s : segments_) {
-    const uint16_t code = s.code;
+    const int32_t* depth = line_depth_.data() + s.first_pixel;
+    const LineWalk line = s.line;  // a local copy, as in clear_line_pixels
+    const StepAlong step_along(line);
+    const Pixel code = static_cast<Pixel>(s.code);
     const int exempt = s.exempt_owner;
-    draw_line(s.line, width, height, [depth, owner, colour, width, code, exempt](int x, int y, int32_t w) {
-      const size_t i = static_cast<size_t>(y) * width + x;
-      if (w + (w >> 7) >= depth[i] || owner[i] == exempt) colour[i] = code;
+    if (exempt < 0) {  // no surface's owner is negative: only the depth decides
+      draw_line(line, width, height, [depth, image, width, step_along, code](int x, int y, int32_t w) {
+        if (w + (w >> 7) >= depth[step_along(x, y)]) image[static_cast<size_t>(y) * width + x] = code;
+      });
+      continue;
+    }
+    const int16_t* owner = line_owner_.data() + s.first_owner;
+    draw_line(line, width, height, [depth, owner, image, width, step_along, code, exempt](int x, int y, int32_t w) {
+      const int k = step_along(x, y);
+      if (w + (w >> 7) >= depth[k] || owner[k] == exempt) image[static_cast<size_t>(y) * width + x] = code;
     });
   }
 }
 
+void EdgeIdBuffer::draw_segments() {
+  if (narrow_) draw_segments_into(narrow_ids_.data());
+  else draw_segments_into(colours_.data());
+}
+
 void EdgeIdBuffer::surface_depth(std::vector<int32_t>& depth) const {
-  depth.assign(colours_.size(), 0);
+  depth.assign(pixels_, 0);
   int32_t* d = depth.data();
   const int width = camera_.width;
   for (const Occluder& o : occluders_)
@@ -320,9 +400,19 @@ void EdgeIdBuffer::surface_depth(std::vector<int32_t>& depth) const {
     });
 }
 
+size_t EdgeIdBuffer::image_bytes() const { return capacity_bytes(narrow_ids_) + capacity_bytes(colours_); }
+
+size_t EdgeIdBuffer::line_bytes() const {
+  return capacity_bytes(line_depth_) + capacity_bytes(line_owner_) + capacity_bytes(points_in_camera_) +
+         capacity_bytes(edge_colours_) + capacity_bytes(curved_) + capacity_bytes(front_) + capacity_bytes(segments_) +
+         capacity_bytes(occluders_) + capacity_bytes(rim_boxes_) + capacity_bytes(facets_);
+}
+
 int EdgeIdBuffer::edge_at(int x, int y) const {
   if (x < 0 || y < 0 || x >= camera_.width || y >= camera_.height) return -1;
-  return decode_edge_id_rgb565(colours_[static_cast<size_t>(y) * camera_.width + x]);
+  const size_t i = static_cast<size_t>(y) * camera_.width + x;
+  if (narrow_) return narrow_ids_.empty() ? -1 : static_cast<int>(narrow_ids_[i]) - 1;
+  return colours_.empty() ? -1 : decode_edge_id_rgb565(colours_[i]);
 }
 
 bool EdgeIdBuffer::shows(int edge, const Vec2& pixel, const Vec2& along) const {

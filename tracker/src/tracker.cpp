@@ -93,7 +93,8 @@ class Tracker::State {
   EdgeIdBuffer edge_ids_;
   EdgeIdSource* edge_id_source_ = nullptr;
   StepObserver* step_observer_ = nullptr;
-  /// The grey frame; on demand, only the current frame's search boxes are up to date.
+  /// The grey frame; on demand, only the current frame's search boxes are up to date. Sized at
+  /// the first frame whose own bytes are not the grey image: a grey8 camera's tracker holds none.
   vpImage<unsigned char> grey_;
   BoxGreyScaler grey_boxes_;
   /// Borrows the frame's own grey bytes (grey_in_place) during track only.
@@ -180,6 +181,47 @@ const std::vector<EdgeMatch>& Tracker::matches() const { return state_->matches_
 const EdgeIdBuffer& Tracker::edge_ids() const { return state_->edge_ids_; }
 const FaceVisibility& Tracker::face_visibility() const { return state_->face_visibility_; }
 
+namespace {
+
+size_t model_bytes(const EdgeModel& model) {
+  size_t bytes = capacity_bytes(model.vertices) + capacity_bytes(model.faces) + capacity_bytes(model.triangles) +
+                 capacity_bytes(model.edges) + capacity_bytes(model.cylinders) + capacity_bytes(model.circles) +
+                 capacity_bytes(model.cylinder_surface);
+  for (const Face& face : model.faces) bytes += capacity_bytes(face.vertices);
+  for (const Circle& circle : model.circles) bytes += capacity_bytes(circle.rim);
+  return bytes;
+}
+
+size_t workspace_bytes(const PoseWorkspace& w) {
+  size_t bytes = 0;
+  for (const std::vector<real>* arrays : {w.model_mm, w.rotated, w.unweighted, w.turned})
+    for (int i = 0; i < 3; ++i) bytes += capacity_bytes(arrays[i]);
+  for (const std::vector<real>* arrays : {w.gradient, w.moved, w.lens_point, w.lens_gradient})
+    for (int i = 0; i < 2; ++i) bytes += capacity_bytes(arrays[i]);
+  for (const std::vector<real>* array : {&w.evaluated, &w.inverse_depth, &w.residuals, &w.jacobian, &w.work,
+                                         &w.scratch, &w.distances, &w.weights, &w.magnitudes, &w.selection,
+                                         &w.before_round})
+    bytes += capacity_bytes(*array);
+  return bytes;
+}
+
+}  // namespace
+
+TrackerMemory Tracker::memory() const {
+  const State& s = *state_;
+  TrackerMemory m;
+  m.model = model_bytes(s.model_);
+  m.edge_id_image = s.edge_ids_.image_bytes();
+  m.edge_id_lines = s.edge_ids_.line_bytes();
+  m.grey_image = static_cast<size_t>(s.grey_.getWidth()) * s.grey_.getHeight();
+  m.control_points = capacity_bytes(s.sampled_) + capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
+                     capacity_bytes(s.references_) + capacity_bytes(s.borrowed_);
+  m.matches = capacity_bytes(s.matches_);
+  m.pose_workspace = workspace_bytes(s.pose_workspace_);
+  m.contrast_memory = s.contrast_memory_.heap_bytes();
+  return m;
+}
+
 Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                       const TrackerParams& params)
     : model_(model),
@@ -191,8 +233,7 @@ Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const
       faces_before_(model),
       camera_from_model_(initial),
       motion_(initial, params.motion),
-      edge_ids_(camera),
-      grey_(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width)) {}
+      edge_ids_(camera, primitive_count(model)) {}
 
 std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
   if (auto problem = check_frame(frame, frame.width, frame.height)) return problem;
@@ -201,8 +242,7 @@ std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
   sized.height = frame.height;
   if (auto problem = check_camera(sized)) return problem;
   camera_ = sized;
-  edge_ids_ = EdgeIdBuffer(camera_);
-  grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
+  edge_ids_ = EdgeIdBuffer(camera_, primitive_count(model_));
   return std::nullopt;
 }
 
@@ -215,11 +255,13 @@ void Tracker::State::set_params(const TrackerParams& params) {
 
 const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
   converted = 0;
+  const unsigned height = static_cast<unsigned>(camera_.height), width = static_cast<unsigned>(camera_.width);
   if (grey_in_place(frame)) {
     // Only read through const references: the moving edges never write the grey image.
-    grey_in_place_.init(const_cast<unsigned char*>(frame.row(0)), grey_.getHeight(), grey_.getWidth());
+    grey_in_place_.init(const_cast<unsigned char*>(frame.row(0)), height, width);
     return grey_in_place_;
   }
+  if (grey_.getHeight() != height || grey_.getWidth() != width) grey_.resize(height, width);
   if (params_.grey == GreyScaling::kWholeFrame) {
     converted = convert_to_grey(frame, PixelBox{0, 0, frame.height, frame.width}, grey_);
     return grey_;

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Prints the markdown section for docs/results/mcu.md: the bare-metal Cortex-M3 firmware
-# (toolchains/cortex-m3.cmake, S40.23) against the issue's budgets: flash and static RAM from its
-# link map, heap and stack high-water marks of a 20-frame QVGA run (the startup code's
-# --board-report), and guest instructions per frame under qemu-system-arm -M mps2-an385 beside the
-# PXA270's (qemu-arm -cpu pxa270), both counted by toolchains/qemu's plugin on the same frames.
+# Prints the markdown section for docs/results/mcu.md: the bare-metal Cortex-M3 firmware images
+# (toolchains/cortex-m3.cmake, S40.23), the whole command line and the tracker alone (app/mcu),
+# against the issue's budgets: flash and static RAM from their link maps, heap and stack
+# high-water marks of a 20-frame QVGA run (the startup code's --board-report), the tracker's heap
+# per buffer (the tracker firmware's report, Tracker::memory, beside the allocator's count), and
+# guest instructions per frame under qemu-system-arm -M mps2-an385 beside the PXA270's
+# (qemu-arm -cpu pxa270), both counted by toolchains/qemu's plugin on the same frames.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
@@ -17,10 +19,11 @@ if [ -n "${EDGETRACK_MCU_BENCH_TREES:-}" ]; then
   IFS=: read -r host_dir mcu_dir arm_dir <<<"$EDGETRACK_MCU_BENCH_TREES"
 else
   host_dir=$(bench_tree host s40_23 edgetrack)
-  mcu_dir=$(bench_tree mcu s40_23 edgetrack)
+  mcu_dir=$(bench_tree mcu s40_23 edgetrack tracker_firmware)
   arm_dir=$(bench_tree arm s40_23 edgetrack)
 fi
 firmware=$mcu_dir/app/edgetrack
+tracker_firmware=$mcu_dir/app/mcu/tracker_firmware
 model=$top/data/models/cube60.cao
 
 cd "$work"
@@ -29,21 +32,34 @@ run=(track --model "$model" --camera seq/camera.xml --init-pose seq/first.pos --
      --first 0 --last 19 --quiet)
 EDGETRACK_BOARD_REPORT=1 EDGETRACK_MCU_FIRMWARE=$firmware "$top/toolchains/mcu/edgetrack-mcu.sh" "${run[@]}" \
   --poses mcu.csv 2>board.txt >/dev/null
+EDGETRACK_BOARD_REPORT=1 "$top/toolchains/mcu/run-firmware.sh" "$tracker_firmware" "$model" seq/camera.xml seq/first.pos \
+  'seq/frames/frame%04d.pgm' 0 19 tracker.csv 2>tracker-board.txt >/dev/null
 "$host_dir/app/edgetrack" "${run[@]}" --poses host.csv >/dev/null 2>&1
 EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out mcu.count --windows mcu.windows \
   "$firmware" "${run[@]}" --poses mcu-counted.csv >/dev/null 2>&1
 "$top/toolchains/qemu/count-insns.sh" --out arm.count --windows arm.windows \
   "$arm_dir/app/edgetrack" "${run[@]}" --poses arm.csv >/dev/null 2>&1
 
-board_value() { sed -n "s/.*$1 \([0-9]*\) bytes.*/\1/p" board.txt; }
-static=$(board_value static) heap=$(board_value "heap high-water") stack=$(board_value "stack high-water")
-section() { arm-none-eabi-size -A "$firmware" | awk -v s="$1" '$1 == s { print $2 }'; }
-flash=$(( $(section .text) + $(section .ARM.extab) + $(section .ARM.exidx) + $(section .data) ))
+# board_value KEY FILE: the bytes the startup code's report gives for KEY.
+board_value() { sed -n "s/.*$1 \([0-9]*\) bytes.*/\1/p" "$2"; }
+static=$(board_value static board.txt) heap=$(board_value "heap high-water" board.txt)
+stack=$(board_value "stack high-water" board.txt)
+# section IMAGE NAME: the section's size in bytes (0 when the image has none).
+section() { arm-none-eabi-size -A "$1" | awk -v s="$2" '$1 == s { n = $2 } END { print n + 0 }'; }
+flash_bytes() { echo $(( $(section "$1" .text) + $(section "$1" .ARM.extab) + $(section "$1" .ARM.exidx) + $(section "$1" .data) )); }
+flash=$(flash_bytes "$firmware")
 kb() { awk -v b="$1" 'BEGIN { printf "%.1f", b / 1024 }'; }
+# by_library MAP: the flash and static RAM of each library the image links, largest first.
+by_library() {
+  echo "| library | flash (KB) | static RAM (KB) |"
+  echo "|---|---:|---:|"
+  awk -f "$here/flash_and_ram.awk" "$1" | sort -k2,2nr | awk '{ printf "| %s | %.1f | %.1f |\n", $1, $2 / 1024, $3 / 1024 }'
+}
 per_frame() { awk '{ sub("insns=", "", $3); n += 1; s += $3; if ($3 > m) m = $3 } END { printf "%.0f | %d", s / n, m }' "$1"; }
 field() { sed -n "s/.* $2=\([0-9]*\).*/\1/p" "$1"; }
-same=no
-diff -q <(cut -d, -f1-8,10 host.csv) <(cut -d, -f1-8,10 mcu.csv) >/dev/null && same=yes
+# same_poses CSV: yes when CSV has the host's poses in every column but ms.
+same_poses() { diff -q <(cut -d, -f1-8,10 host.csv) <(cut -d, -f1-8,10 "$1") >/dev/null && echo yes || echo no; }
+same=$(same_poses mcu.csv)
 
 echo "## Microcontroller: Cortex-M3 firmware (mps2-an385), S40.23"
 echo
@@ -69,10 +85,7 @@ echo "tracker's own heap at QVGA on the PXA270 is in docs/results/memory.md. No 
 echo
 echo "### Flash by library (from the link map; section alignment makes the sum differ slightly from the total)"
 echo
-echo "| library | flash (KB) | static RAM (KB) |"
-echo "|---|---:|---:|"
-awk -f "$here/flash_and_ram.awk" "$mcu_dir/app/edgetrack.map" | sort -k2,2nr |
-  awk '{ printf "| %s | %.1f | %.1f |\n", $1, $2 / 1024, $3 / 1024 }'
+by_library "$mcu_dir/app/edgetrack.map"
 echo
 echo "### Guest instructions per frame (\`Tracker::track\`, count markers inside \`edgetrack track\`)"
 echo
@@ -80,3 +93,54 @@ echo "| target | mean per frame | largest frame | soft-float instructions in the
 echo "|---|---:|---:|---:|"
 echo "| Cortex-M3, Thumb-2 (qemu-system-arm -M mps2-an385) | $(per_frame mcu.windows) | $(field mcu.count window_softfloat) |"
 echo "| PXA270, ARMv5TE (qemu-arm -cpu pxa270) | $(per_frame arm.windows) | $(field arm.count window_softfloat) |"
+
+t_static=$(board_value static tracker-board.txt) t_heap=$(board_value "heap high-water" tracker-board.txt)
+t_stack=$(board_value "stack high-water" tracker-board.txt)
+t_flash=$(flash_bytes "$tracker_firmware")
+frame_bytes=$(section "$tracker_firmware" .camera_frame)
+t_ram=$((t_static + t_heap + t_stack))
+met() { [ "$1" -le $(($2 * 1024)) ] && echo "met" || echo "over by $(kb $(($1 - $2 * 1024))) KB"; }
+echo
+echo "### The tracker alone (\`tracker_firmware\`, app/mcu)"
+echo
+echo "The tracker, the model (.cao), the camera (ViSP XML) and the initial pose read by semihosting,"
+echo "no command line, no detector: \`tracker_firmware MODEL CAMERA.xml INIT.pos FRAMES FIRST LAST POSES.csv\`"
+echo "on the same 20 frames. Each PGM frame is read into one $(kb "$frame_bytes") KB camera buffer (\`.camera_frame\`,"
+echo "beside the heap, not counted below) and tracked in place as grey8, as a camera's DMA buffer would be."
+echo "Its poses CSV equals the host S40.23 build's in every column but ms: $(same_poses tracker.csv)."
+echo
+echo "| what | measured | budget |"
+echo "|---|---:|---:|"
+echo "| flash: code, constants, unwinding tables, .data's initial values (\`arm-none-eabi-size -A\`) | $(kb "$t_flash") KB | 256 KB: $(met "$t_flash" 256) |"
+echo "| static RAM: .data and .bss (the C library's, the startup code's argument buffer) | $(kb "$t_static") KB | |"
+echo "| heap high-water (sbrk's highest break): the tracker, the model and settings as read, the C library's file buffers | $(kb "$t_heap") KB | |"
+echo "| stack high-water (painted stack) | $(kb "$t_stack") KB | |"
+echo "| RAM in all | $(kb "$t_ram") KB | 192 KB: $(met "$t_ram" 192) |"
+echo
+by_library "$mcu_dir/app/mcu/tracker_firmware.map"
+echo
+echo "### The tracker's heap per buffer at QVGA (Cortex-M3, after the 20 frames)"
+echo
+echo "\`Tracker::memory\` (edgetrack/tracker_memory.h: each buffer's reserved capacity) as the tracker firmware"
+echo "reports it, against the C library's count of the bytes the tracker allocated (\`mallinfo\` before"
+echo "\`Tracker::create\` and after the last frame); the difference is what no row names (the moving edges'"
+echo "masks, the faces' states, the grey boxes' row spans, the state object) and the allocator's block headers."
+echo
+echo "| buffer | bytes | KB |"
+echo "|---|---:|---:|"
+sum=0
+while read -r name bytes; do
+  echo "| $name | $bytes | $(kb "$bytes") |"
+  sum=$((sum + bytes))
+done < <(sed -n 's/^tracker memory: \([a-z_]*\) \([0-9]*\) bytes$/\1 \2/p' tracker-board.txt)
+counted=$(sed -n 's/^tracker memory: counted \([0-9]*\) bytes.*/\1/p' tracker-board.txt)
+echo "| the rest (counted minus the rows) | $((counted - sum)) | $(kb $((counted - sum))) |"
+echo "| counted by the allocator | $counted | $(kb "$counted") |"
+created=$(sed -n 's/^tracker memory: created \([0-9]*\) bytes.*/\1/p' tracker-board.txt)
+heap_field() { sed -n "s/^heap: .*$1 \([0-9]*\) bytes.*/\1/p" tracker-board.txt; }
+echo
+echo "Of it, $(kb "$created") KB were allocated by \`Tracker::create\`; the rest by the frames, as their buffers grew"
+echo "(the first frame, and any frame with more control points or matches than every earlier one). The heap's"
+echo "high-water mark of $(kb "$t_heap") KB is that, $(kb "$(heap_field "before the tracker")") KB the C library held before the inputs were read (the open"
+echo "poses file), and $(kb "$(heap_field "free within the arena")") KB of free blocks within the allocator's arena at the end: what the growing"
+echo "buffers and the inputs read (the model, the XML, freed once the tracker holds its copies) left behind."

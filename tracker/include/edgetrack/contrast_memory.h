@@ -20,6 +20,10 @@ class ContrastMemory {
     remembered_.clear();
     groups_.clear();
   }
+  /// Heap bytes it holds (tracker_memory.h).
+  size_t heap_bytes() const {
+    return remembered_.capacity() * sizeof(Remembered) + groups_.capacity() * sizeof(Group);
+  }
   /// Replaces the memory with the contrast of each match that the pose step kept, that lies
   /// within `within` pixels (along its normal) of its projection at camera_from_model, the
   /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept

@@ -22,8 +22,12 @@ namespace edgetrack {
 
 class EdgeIdBuffer {
  public:
-  /// Buffers for images of the camera's size; they are allocated here, once.
-  explicit EdgeIdBuffer(const PinholeCamera& camera);
+  /// Buffers for images of the camera's size, allocated at the first render or assign. Up to
+  /// kNarrowPrimitives primitives (`primitives`, the models it will draw: primitive_count) the
+  /// image holds one byte per pixel, the primitive's number + 1, instead of the RGB565 colour:
+  /// the same edge at every pixel, in half the memory.
+  explicit EdgeIdBuffer(const PinholeCamera& camera, int primitives = kMaxEdges);
+  static constexpr int kNarrowPrimitives = 255;
 
   /// Redraws the colours for the model seen from camera_from_model. On a closed model
   /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when its inverse depth is
@@ -33,7 +37,8 @@ class EdgeIdBuffer {
   void render(const EdgeModel& model, const Se3& camera_from_model);
 
   /// Takes an Edge-ID image drawn elsewhere (GL): width * height RGB565 pixels, row 0 at the
-  /// top, in the paper's 8-level code. The surfaces are forgotten: they stay this renderer's.
+  /// top, in the paper's 8-level code, kept as RGB565. The surfaces are forgotten: they stay this
+  /// renderer's.
   void assign(const uint16_t* rgb565);
 
   /// The edge index drawn at pixel (x, y), or -1 for the background or outside the image.
@@ -45,10 +50,12 @@ class EdgeIdBuffer {
 
   int width() const { return camera_.width; }
   int height() const { return camera_.height; }
-  const std::vector<uint16_t>& colours() const { return colours_; }
   /// The Q20 1/Z of the nearest surface of the last render() at every pixel (0 = none), filled
   /// whole into `depth` (width * height) for whoever needs more than the lines' pixels.
   void surface_depth(std::vector<int32_t>& depth) const;
+  /// Heap bytes (tracker_memory.h): the colour image, and what the lines and surfaces keep.
+  size_t image_bytes() const;
+  size_t line_bytes() const;
 
  private:
   /// A line to draw this frame, the box of its pixels, and the owner whose side never hides it
@@ -58,6 +65,8 @@ class EdgeIdBuffer {
     PixelRect box;
     uint16_t code = 0;
     int exempt_owner = -1;
+    size_t first_pixel = 0;  ///< where its pixels start in line_depth_
+    size_t first_owner = 0;  ///< and in line_owner_ (exempt_owner >= 0 only)
   };
   /// A triangle of a surface as this frame projects it, and its owner (a cylinder number + 1, or
   /// 0 for a face).
@@ -65,9 +74,11 @@ class EdgeIdBuffer {
     PixelTriangle triangle;
     int16_t owner = 0;
   };
-  /// Clears the colours and the nearest surfaces the last render drew, at its lines' pixels (or
-  /// everywhere after assign), so that both are 0 everywhere.
+  /// Clears the colours the last render drew, at its lines' pixels (or everywhere after assign),
+  /// so that they are 0 everywhere.
   void clear_lines();
+  /// Sizes the image for one byte or RGB565 per pixel (an image of the other kind is freed).
+  void use_image(bool narrow);
   void reserve_for(const EdgeModel& model);
   /// Through a lens, how many pieces each side of a segment (count 2) or triangle (count 3) is
   /// cut into so that its curve stays within `bend_pixels` of the pieces, at most `most`; 1 for
@@ -83,18 +94,30 @@ class EdgeIdBuffer {
   void collect_faces(const EdgeModel& model, const Se3& camera_from_model);
   /// The cylinders' sides, back facets only where they can show (cylinder_windows.h).
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
-  /// The nearest surface and its owner at every pixel of this frame's lines.
+  /// The nearest surface and its owner at every pixel of this frame's lines, per line.
   void find_nearest_surfaces();
   void draw_segments();
+  template <class Pixel>
+  void draw_segments_into(Pixel* image) const;
 
   PinholeCamera camera_;
   PixelRect screen_;
-  std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background
-  std::vector<int32_t> nearest_;        ///< Q20 1/Z of the nearest surface under segments_, 0 elsewhere
-  std::vector<int16_t> nearest_owner_;  ///< that surface's Occluder::owner under segments_, 0 elsewhere
-  bool clear_all_ = false;  ///< colours_ and nearest_ hold more than segments_ drew (assign)
+  /// A pixel of the one-byte image: its own type, so that a store to it may not alias
+  /// everything as an unsigned char's may (the drawing loops keep their state in registers).
+  enum class NarrowId : uint8_t {};
+  size_t pixels_ = 0;                   ///< width * height
+  bool narrow_ = false;                 ///< narrow_ids_ is the image, not colours_
+  std::vector<NarrowId> narrow_ids_;    ///< primitive number + 1, 0 = background (up to kNarrowPrimitives)
+  std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background (more primitives, or assign)
+  /// Per pixel of each of segments_ (Segment::first_pixel on, in the line's order): the Q20 1/Z
+  /// of the nearest surface there (0: none) and, for a line with an exempt owner
+  /// (Segment::first_owner on), its Occluder::owner. Only the lines' pixels need them: a few
+  /// bytes per line pixel instead of six per image pixel.
+  std::vector<int32_t> line_depth_;
+  std::vector<int16_t> line_owner_;
+  bool clear_all_ = false;  ///< the image holds more than segments_ drew (assign)
   std::vector<Vec3> points_in_camera_;  ///< per model vertex, reused every frame
-  std::vector<uint16_t> edge_colours_;  ///< the RGB565 code of each primitive
+  std::vector<uint16_t> edge_colours_;  ///< each primitive's pixel value in the image in use
   std::vector<ContourSegment> curved_;  ///< this frame's cylinder silhouettes and circle sides
   std::vector<uint8_t> front_;          ///< per face: drawn this frame (front-facing or not closed)
   std::vector<Segment> segments_;       ///< this frame's lines (the last frame's until render clears them)

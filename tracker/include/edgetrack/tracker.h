@@ -19,6 +19,7 @@
 #include "edgetrack/pose_solver.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/tracker_memory.h"
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/tracking_status.h"
 
@@ -123,6 +124,8 @@ class Tracker {
   const EdgeIdBuffer& edge_ids() const;
   /// The faces' visibility and the edges tracked in the last frame.
   const FaceVisibility& face_visibility() const;
+  /// The heap it holds now, per buffer (tracker_memory.h).
+  TrackerMemory memory() const;
 
  private:
   /// The state between frames and each frame's buffers, with the moving edges' masks and grey

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The tracker alone as a microcontroller's firmware (docs/MCU.md): no command line to parse, no
+/// detector, no iostream. Its arguments, in this order, come by semihosting:
+///   MODEL CAMERA.xml INIT.pos FRAMES FIRST LAST POSES.csv
+/// FRAMES is a file name with one %d (%04d, ...) for the frame number; each frame is a binary
+/// 8-bit PGM read into one camera buffer, where the tracker reads it in place as it would a
+/// camera's DMA buffer. The poses CSV is the one `edgetrack track --poses` writes. At the end
+/// the tracker's heap per buffer goes to stderr (tracker_memory.h), with the allocator's count.
+#include <malloc.h>
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "edgetrack/model_io.h"
+#include "edgetrack/pose_io.h"
+#include "edgetrack/poses_csv.h"
+#include "edgetrack/tracker.h"
+#include "edgetrack/visp_config.h"
+
+namespace {
+
+using edgetrack::Error;
+
+/// The largest frame the camera buffer holds: QVGA, the budget.
+constexpr int kMaxFrameWidth = 320, kMaxFrameHeight = 240;
+
+/// The camera's frame buffer: outside the RAM the firmware counts as its own (the linker script
+/// puts .camera_frame beside the heap), as a camera's DMA buffer would be.
+__attribute__((section(".camera_frame"))) unsigned char camera_frame[kMaxFrameWidth * kMaxFrameHeight];
+
+int fail(const std::string& what) {
+  std::fprintf(stderr, "tracker-firmware: %s\n", what.c_str());
+  return 1;
+}
+
+
+/// Bytes the C library's allocator has handed out and not yet taken back.
+size_t live_heap() { return static_cast<size_t>(mallinfo().uordblks); }
+
+/// A frame-name pattern with exactly one %d, with an optional 0 and width: %d, %04d.
+bool one_number(const char* pattern) {
+  int conversions = 0;
+  for (const char* p = pattern; *p; ++p) {
+    if (*p != '%') continue;
+    ++p;
+    while (std::isdigit(static_cast<unsigned char>(*p))) ++p;
+    if (*p != 'd') return false;
+    ++conversions;
+  }
+  return conversions == 1;
+}
+
+/// Skips whitespace and # comments of a PGM header, then reads a decimal number.
+bool header_number(std::FILE* file, int& value) {
+  int c = std::fgetc(file);
+  while (c == '#' || std::isspace(c)) {
+    if (c == '#')
+      while (c != '\n' && c != EOF) c = std::fgetc(file);
+    c = std::fgetc(file);
+  }
+  if (!std::isdigit(c)) return false;
+  value = 0;
+  for (; std::isdigit(c); c = std::fgetc(file)) {
+    if (value > 100000) return false;
+    value = value * 10 + (c - '0');
+  }
+  return std::isspace(c);  // the one whitespace character after the last number ends the header
+}
+
+/// Reads a binary 8-bit PGM into camera_frame.
+bool read_frame(const char* path, int& width, int& height, std::string& problem) {
+  std::FILE* file = std::fopen(path, "rb");
+  if (!file) {
+    problem = std::string(path) + ": cannot open";
+    return false;
+  }
+  int maxval = 0;
+  const bool header = std::fgetc(file) == 'P' && std::fgetc(file) == '5' && header_number(file, width) &&
+                      header_number(file, height) && header_number(file, maxval);
+  bool read = false;
+  if (!header || maxval != 255)
+    problem = std::string(path) + ": line 1: not a binary 8-bit PGM (P5, maxval 255)";
+  else if (width < 1 || height < 1 || width > kMaxFrameWidth || height > kMaxFrameHeight)
+    problem = std::string(path) + ": line 1: " + std::to_string(width) + "x" + std::to_string(height) +
+              " is larger than the camera buffer's " + std::to_string(kMaxFrameWidth) + "x" +
+              std::to_string(kMaxFrameHeight);
+  else if (std::fread(camera_frame, 1, static_cast<size_t>(width) * height, file) != static_cast<size_t>(width) * height)
+    problem = std::string(path) + ": the pixels end early";
+  else
+    read = true;
+  std::fclose(file);
+  return read;
+}
+
+/// The tracker's heap per buffer, the allocator's count of it after create and at the end, and
+/// what else the heap held: the C library's own (live before the inputs were read: the open
+/// poses file) and the allocator's free blocks within its arena at the end.
+void report_memory(const edgetrack::TrackerMemory& m, size_t before, size_t created, size_t counted) {
+  for (const auto& row : m.rows()) std::fprintf(stderr, "tracker memory: %s %lu bytes\n", row.name, (unsigned long)row.bytes);
+  std::fprintf(stderr, "tracker memory: created %lu bytes (the allocator's, after Tracker::create)\n",
+               (unsigned long)created);
+  std::fprintf(stderr, "tracker memory: counted %lu bytes (the allocator's, after the last frame)\n",
+               (unsigned long)counted);
+  const struct mallinfo heap = mallinfo();
+  std::fprintf(stderr, "heap: before the tracker %lu bytes, free within the arena %lu bytes, arena %lu bytes\n",
+               (unsigned long)before, (unsigned long)heap.fordblks, (unsigned long)heap.arena);
+}
+
+/// The tracker of the model, camera and initial pose files argv[1..3], for frames of
+/// width x height when the camera gives no size. What was read is freed on return: the tracker
+/// keeps its own copies.
+std::optional<edgetrack::Tracker> start_tracker(char** argv, int width, int height, std::string& problem) {
+  auto model = edgetrack::load_model(argv[1]);
+  if (!model.ok()) return problem = model.error().text(), std::nullopt;
+  edgetrack::TrackerConfig config;
+  auto read = edgetrack::apply_visp_config(argv[2], config);
+  if (!read.ok()) return problem = read.error().text(), std::nullopt;
+  auto initial = edgetrack::read_pos(argv[3]);
+  if (!initial.ok()) return problem = initial.error().text(), std::nullopt;
+  edgetrack::PinholeCamera camera = config.camera;
+  if (camera.width == 0) camera.width = width;
+  if (camera.height == 0) camera.height = height;
+  auto made = edgetrack::Tracker::create(model.value(), camera, initial.value(), config.params);
+  if (!made.ok()) return problem = made.error().text(), std::nullopt;
+  return std::move(made).value();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 8)
+    return fail("usage: tracker-firmware MODEL CAMERA.xml INIT.pos FRAMES FIRST LAST POSES.csv (FRAMES with one %d)");
+  const char* frames = argv[4];
+  char* end_first = nullptr;
+  char* end_last = nullptr;
+  const long first = std::strtol(argv[5], &end_first, 10), last = std::strtol(argv[6], &end_last, 10);
+  if (*end_first || *end_last || first < 0 || last < first || last > 999999)
+    return fail(std::string("the frame numbers ") + argv[5] + " and " + argv[6] + " are not FIRST <= LAST, both >= 0");
+  if (!one_number(frames)) return fail(std::string(frames) + ": the frame name needs exactly one %d");
+
+  std::FILE* poses = std::fopen(argv[7], "w");
+  if (!poses) return fail(std::string(argv[7]) + ": cannot write");
+  std::fprintf(poses, "%s\n", edgetrack::kPosesCsvHeader);
+
+  const size_t before_tracker = live_heap();
+  size_t created = 0;
+  std::optional<edgetrack::Tracker> tracker;
+  char name[256];
+  std::string problem;
+  for (long index = first; index <= last; ++index) {
+    std::snprintf(name, sizeof name, frames, static_cast<int>(index));
+    int width = 0, height = 0;
+    if (!read_frame(name, width, height, problem)) return fail(problem);
+    const edgetrack::FrameView frame = edgetrack::packed_frame(camera_frame, width, height, edgetrack::PixelLayout::kGrey8);
+    if (!tracker) {
+      tracker = start_tracker(argv, width, height, problem);
+      if (!tracker) return fail(problem);
+      created = live_heap() - before_tracker;
+    }
+    auto result = tracker->track(frame);
+    if (!result.ok()) return fail(Error{name, 0, result.error().message}.text());
+    std::fprintf(poses, "%s\n", edgetrack::poses_csv_line(edgetrack::poses_csv_row(static_cast<int>(index), result.value())).c_str());
+  }
+  if (std::fclose(poses) != 0) return fail(std::string(argv[7]) + ": writing failed");
+  report_memory(tracker->memory(), before_tracker, created, live_heap() - before_tracker);
+  return 0;
+}
