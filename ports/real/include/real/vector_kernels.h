@@ -24,4 +24,31 @@ Choice chosen();
 /// its AVX2 kernels.
 bool avx2();
 
+namespace detail {
+#if defined(__GNUC__) && !defined(__clang__)
+template <class Body>
+[[gnu::target("avx2")]] auto built_for_avx2(const Body& body) {
+  return body();
+}
+template <class Body>
+[[gnu::optimize("no-tree-vectorize")]] auto built_one_by_one(const Body& body) {
+  return body();
+}
+#endif
+}  // namespace detail
+
+/// Runs body(), a lambda marked __attribute__((always_inline)) whose loops the compiler
+/// vectorises one element per lane, built for the chosen kernels: for AVX2 when avx2(), without
+/// vectorisation (the scalar reference) when kScalar is chosen, else for the build's target.
+template <class Body>
+auto run(const Body& body) {
+#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__x86_64__)
+  if (avx2()) return detail::built_for_avx2(body);
+#endif
+  if (chosen() == Choice::kScalar) return detail::built_one_by_one(body);
+#endif
+  return body();
+}
+
 }  // namespace vector_kernels
