@@ -26,10 +26,12 @@ bool avx2();
 
 namespace detail {
 #if defined(__GNUC__) && !defined(__clang__)
+#if defined(__x86_64__)
 template <class Body>
 [[gnu::target("avx2")]] auto built_for_avx2(const Body& body) {
   return body();
 }
+#endif
 template <class Body>
 [[gnu::optimize("no-tree-vectorize")]] auto built_one_by_one(const Body& body) {
   return body();
