@@ -36,6 +36,7 @@ DECLARE(test_lens_tracking_wood_toy);
 DECLARE(test_lens_tracking_wood_toy_barrel);
 DECLARE(test_android_frames);
 DECLARE(test_visp_cube_poses);
+DECLARE(test_vector_kernels);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -72,6 +73,7 @@ void register_tests() {
   REGISTER(test_lens_tracking_wood_toy_barrel);
   REGISTER(test_android_frames);
   REGISTER(test_visp_cube_poses);
+  REGISTER(test_vector_kernels);
 }
 
 DEFINE_MAIN

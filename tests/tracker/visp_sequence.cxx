@@ -26,7 +26,8 @@ bool read_pgm(const std::string& path, int& width, int& height, std::vector<unsi
 
 }  // namespace
 
-SequenceRun run_visp_cube(const std::string& visp_images, int frames) {
+SequenceRun run_visp_cube(const std::string& visp_images, int frames,
+                          const std::function<void(const Tracker&)>& after_frame) {
   SequenceRun run;
   const std::string mbt = visp_images + "/mbt/";
   const Result<EdgeModel> model = load_model(mbt + "cube.cao");
@@ -62,6 +63,7 @@ SequenceRun run_visp_cube(const std::string& visp_images, int frames) {
       return run;
     }
     run.frames.push_back(tracked.value());
+    if (after_frame) after_frame(tracker.value());
   }
   run.loaded = true;
   return run;

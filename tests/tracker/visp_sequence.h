@@ -4,6 +4,7 @@
 /// `edgetrack track` and examples/minimal do.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "run_sequence.h"
@@ -16,7 +17,9 @@ constexpr int kVispCubeFrames = 60;
 constexpr const char* kVispCubeGolden = "mbt_cube_double_poses.txt";
 
 /// The first `frames` frames of mbt/cube under `visp_images` (the ViSP-images directory)
-/// tracked; `loaded` is false (after a line on stderr) when a file cannot be read.
-SequenceRun run_visp_cube(const std::string& visp_images, int frames);
+/// tracked; `loaded` is false (after a line on stderr) when a file cannot be read. `after_frame`,
+/// when given, sees the tracker after each frame.
+SequenceRun run_visp_cube(const std::string& visp_images, int frames,
+                          const std::function<void(const edgetrack::Tracker&)>& after_frame = {});
 
 }  // namespace edgetrack_test

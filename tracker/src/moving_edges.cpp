@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "edgetrack/normal_mask.h"
+#include "real/vector_kernels.h"
 #include "visp3/me/vpMeResponse.h"
 
 namespace edgetrack {
@@ -73,21 +74,11 @@ Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, co
   const real u0 = along_x ? point.pixel.x : point.pixel.y, v0 = along_x ? point.pixel.y : point.pixel.x;
   const real nu = along_x ? point.normal.x : point.normal.y, nv = along_x ? point.normal.y : point.normal.x;
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
-  // The 3 x 3 pixels around the site's in one batch, from corner to corner without the centre
-  // (the site's own response is conv), then whatever the climbs reach one at a time.
-  int block_i[8], block_j[8], block[9];
-  for (int k = 0; k < 8; ++k) {
-    const int m = k < 4 ? k : k + 1;
-    const int u = u_site + m % 3 - 1, v = v_site + m / 3 - 1;
-    block_i[k] = along_x ? v : u;
-    block_j[k] = along_x ? u : v;
-  }
-  response.at_each_in_box(block_i, block_j, 8, block);
-  block[8] = block[7];
-  block[7] = block[6];
-  block[6] = block[5];
-  block[5] = block[4];
-  block[4] = conv;
+  // The 3 x 3 pixels around the site's in one batch (image rows, then columns; the centre is
+  // the site's own response, conv), in axis order: block[3 (v - v_site + 1) + u - u_site + 1].
+  int image_block[9], block[9];
+  response.at_block_3x3(i, j, conv, image_block);
+  for (int k = 0; k < 9; ++k) block[k] = along_x ? image_block[k] : image_block[3 * (k % 3) + k / 3];
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
   for (int k = 0; k < 3; ++k) {
@@ -173,26 +164,23 @@ struct SiteLimits {
       : range(static_cast<int>(search_range)),
         threshold(likelihood_floor(me.getThreshold())),
         least(real(1) - me.getMu1()),
-        most(real(1) + me.getMu2()) {}
+        most(real(1) + me.getMu2()),
+        vector(vector_kernels::chosen() != vector_kernels::Choice::kScalar) {}
   int range;      ///< candidates pixel + k normal, |k| <= range
   int threshold;  ///< maxima of likelihood above it
   real least, most;  ///< the contrast test's bounds, times |reference|
+  bool vector;       ///< the vector kernels, else the scalar reference (vector_kernels.h)
 };
 
-/// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
-/// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
-/// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
-/// normal in place of (cos alpha, sin alpha), which saves a sine and a cosine per point and
-/// differs by rounding only. conv is the signed response of the site's mask; a path end counts as
-/// a maximum when its one neighbour is lower, as the site's search keeps an end.
+#if defined(__SSE2__)
+/// for_each_path_peak's vector path: the responses a chunk of the path at a time (vpMeResponse
+/// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
+/// branch-free.
 template <class Visit>
-void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+void path_peaks_in_chunks(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
   const int range = limits.range, threshold = limits.threshold;
   PathWalk walk(point, range);
   const int length = 2 * range + 1;
-#if defined(__SSE2__)
-  // Vector masks: the responses a chunk of the path at a time (vpMeResponse loads the mask once
-  // per chunk), and the maxima of each chunk tested four pixels at a time, branch-free.
   // Slot kLead + k holds the chunk's k-th pixel, slots 0 and 1 the previous chunk's last two
   // (likelihood -1 before the path); the tests reach a vector past the chunk.
   constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
@@ -232,7 +220,15 @@ void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, 
       path_j[t] = path_j[n + t];
     }
   }
-#else
+}
+#endif
+
+/// for_each_path_peak's scalar reference.
+template <class Visit>
+void path_peaks_one_by_one(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+  const int range = limits.range, threshold = limits.threshold;
+  PathWalk walk(point, range);
+  const int length = 2 * range + 1;
   // One response at a time: arrays would cost more than they save. before, current: the
   // likelihoods of the pixels before the current one (i, j) and of it; each pixel read (`after`)
   // settles whether the current one is a maximum.
@@ -250,7 +246,23 @@ void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, 
     j = next_j;
   }
   if (current > before && current > threshold) visit(current_conv, i, j);  // the far end: no pixel after
+}
+
+/// Calls visit(conv, i, j) at each local maximum, in path order, of the likelihood |2 conv| above
+/// the threshold on the site's search path: the 2 range + 1 candidates pixel + k normal,
+/// |k| <= range, truncated to whole pixels, as vpMeSite::track visits them but with the unit
+/// normal in place of (cos alpha, sin alpha), which saves a sine and a cosine per point and
+/// differs by rounding only. conv is the signed response of the site's mask; a path end counts as
+/// a maximum when its one neighbour is lower, as the site's search keeps an end.
+template <class Visit>
+void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+#if defined(__SSE2__)
+  if (limits.vector) {
+    path_peaks_in_chunks(response, limits, point, visit);
+    return;
+  }
 #endif
+  path_peaks_one_by_one(response, limits, point, visit);
 }
 
 /// What one pass over a site's path (for_each_path_peak) finds for the site's search and its

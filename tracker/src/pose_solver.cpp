@@ -15,6 +15,7 @@
 #include "netlib/minpack.h"
 #include "real/divisor.h"
 #include "real/sum_of_products.h"
+#include "real/vector_kernels.h"
 #include "vnl/algo/vnl_levenberg_marquardt.h"
 #include "vnl/vnl_rotation_matrix.h"
 
@@ -32,7 +33,7 @@ __attribute__((always_inline)) inline Vec3 rotate(const Mat33& r, const Vec3& y)
 /// out_i = turn(in_i) for each point of a structure of arrays (x, y, z arrays), on restrict
 /// parameters, so that the host compiler vectorises it as distances_to_lines.
 template <class Turn>
-void turn_points(size_t n, const Turn& turn, const real* __restrict x, const real* __restrict y,
+__attribute__((always_inline)) inline void turn_points(size_t n, const Turn& turn, const real* __restrict x, const real* __restrict y,
                  const real* __restrict z, real* __restrict out_x, real* __restrict out_y, real* __restrict out_z) {
   for (size_t i = 0; i < n; ++i) {
     const Vec3 v = turn(Vec3{x[i], y[i], z[i]});
@@ -43,7 +44,7 @@ void turn_points(size_t n, const Turn& turn, const real* __restrict x, const rea
 }
 
 /// out_i = w_i a_i, as restrict parameters (see turn_points).
-void weigh(size_t n, const real* __restrict w, const real* __restrict a, real* __restrict out) {
+__attribute__((always_inline)) inline void weigh(size_t n, const real* __restrict w, const real* __restrict a, real* __restrict out) {
   for (size_t i = 0; i < n; ++i) out[i] = w[i] * a[i];
 }
 
@@ -52,8 +53,9 @@ void weigh(size_t n, const real* __restrict w, const real* __restrict a, real* _
 /// not null); false (the arrays then partly written) when a point is not in front of the camera.
 /// The arrays are restrict parameters (none overlaps another) and, in floating point, the depth
 /// test is a pass of its own, so that the host compiler takes two matches per vector
-/// instruction, each lane the operations of one match.
-bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, const real* __restrict zy,
+/// instruction, each lane the operations of one match. Inlined where vector_kernels::run builds
+/// it for the chosen vectors (as turn_points and weigh).
+__attribute__((always_inline)) inline bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, const real* __restrict zy,
                         const real* __restrict zz, const real* __restrict a, const real* __restrict b,
                         const real* __restrict c, const real* __restrict weight, real* __restrict x,
                         real* __restrict y, real* __restrict inv_z, real* __restrict delta, real* __restrict fx) {
@@ -149,6 +151,42 @@ void radial_lens_gradients(size_t n, const real& kud, const real* normalised_x, 
   }
 }
 
+/// The Jacobian's six columns (MINPACK's layout, column c at out_c) at the last evaluation: per
+/// match, from (a, b) times the weight (`ka`, `kb`; through a lens (a, b) J_lens), the moved
+/// point's X and Y (`px`, `py`), the turned point (`zx`, `zy`, `zz`) and 1 / Z; kLeft false
+/// when J(w) is the identity. Restrict parameters and no branch in the loop, inlined where
+/// vector_kernels::run builds it, each lane one match's columns (as distances_to_lines).
+template <bool kLeft>
+__attribute__((always_inline)) inline void jacobian_columns(
+    size_t n, const real* __restrict ka, const real* __restrict kb, const real* __restrict px,
+    const real* __restrict py, const real* __restrict zx, const real* __restrict zy, const real* __restrict zz,
+    const real* __restrict inverse_depth, const Mat33 jl, real* __restrict out_0, real* __restrict out_1,
+    real* __restrict out_2, real* __restrict out_3, real* __restrict out_4, real* __restrict out_5) {
+  for (size_t i = 0; i < n; ++i) {
+    const real inv_z = inverse_depth[i];
+    // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b (through a
+    // lens the chain rule's (a, b) J_lens, d(x, y) / d p being the same).
+    const real gx = ka[i] * inv_z;
+    const real gy = kb[i] * inv_z;
+    const real gz = -sum_of_products(gx, px[i], gy, py[i]) * inv_z;
+    out_0[i] = gx;
+    out_1[i] = gy;
+    out_2[i] = gz;
+    // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
+    const Vec3 zg{difference_of_products(zy[i], gz, zz[i], gy), difference_of_products(zz[i], gx, zx[i], gz),
+                  difference_of_products(zx[i], gy, zy[i], gx)};
+    if constexpr (kLeft) {
+      out_3[i] = sum_of_products(zg.x, jl.m[0][0], zg.y, jl.m[1][0], zg.z, jl.m[2][0]);
+      out_4[i] = sum_of_products(zg.x, jl.m[0][1], zg.y, jl.m[1][1], zg.z, jl.m[2][1]);
+      out_5[i] = sum_of_products(zg.x, jl.m[0][2], zg.y, jl.m[1][2], zg.z, jl.m[2][2]);
+    } else {
+      out_3[i] = zg.x;
+      out_4[i] = zg.y;
+      out_5[i] = zg.z;
+    }
+  }
+}
+
 /// The residuals and their Jacobian for MINPACK's lmder, over one solve's matches and weights,
 /// in the workspace's memory.
 class PointToLineProblem {
@@ -185,10 +223,15 @@ class PointToLineProblem {
     // The points in millimetres and the distances' coefficients are the solve_pose call's
     // (prepare_matches): only the rotation and the weights differ between its solves.
     const Mat33& r = start.rotation();
-    turn_points(count_, [&r](const Vec3& y) { return rotate(r, y); }, w.model_mm[0].data(), w.model_mm[1].data(),
-                w.model_mm[2].data(), w.rotated[0].data(), w.rotated[1].data(), w.rotated[2].data());
+    vector_kernels::run([&]() __attribute__((always_inline)) {
+      turn_points(count_, [&r](const Vec3& y) { return rotate(r, y); }, w.model_mm[0].data(), w.model_mm[1].data(),
+                  w.model_mm[2].data(), w.rotated[0].data(), w.rotated[1].data(), w.rotated[2].data());
+    });
     for (int k = 0; k < 2; ++k) {
-      if (weighted_) weigh(count_, weights.data(), w.unweighted[k].data(), w.gradient[k].data());
+      if (weighted_)
+        vector_kernels::run([&]() __attribute__((always_inline)) {
+          weigh(count_, weights.data(), w.unweighted[k].data(), w.gradient[k].data());
+        });
       else std::copy(w.unweighted[k].begin(), w.unweighted[k].begin() + static_cast<std::ptrdiff_t>(count_),
                      w.gradient[k].begin());
     }
@@ -287,8 +330,10 @@ class PointToLineProblem {
     turned_ = turn ? w_.turned : w_.rotated;
     if (turn) {
       std::vector<real>* z = w_.turned;
-      turn_points(count_, [&r](const Vec3& y) { return r * y; }, q[0].data(), q[1].data(), q[2].data(), z[0].data(),
-                  z[1].data(), z[2].data());
+      vector_kernels::run([&]() __attribute__((always_inline)) {
+        turn_points(count_, [&r](const Vec3& y) { return r * y; }, q[0].data(), q[1].data(), q[2].data(), z[0].data(),
+                    z[1].data(), z[2].data());
+      });
     }
     const std::vector<real>* z = turned_;
     if (camera_.distorted()) {
@@ -297,9 +342,11 @@ class PointToLineProblem {
                                   fx, w_.lens_point[0].data(), w_.lens_point[1].data(),
                                   w_.lens_radial[0].data(), w_.lens_radial[1].data()))
         return false;
-    } else if (!distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
-                                   u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
-                                   fx)) {
+    } else if (!vector_kernels::run([&]() __attribute__((always_inline)) {
+                 return distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
+                                           u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z,
+                                           delta, fx);
+               })) {
       return false;
     }
     for (unsigned c = 0; c < 6; ++c) evaluated_at_[c] = x[c];
@@ -329,29 +376,16 @@ class PointToLineProblem {
     const std::vector<real>* p = w_.moved;
     const real* const inverse_depth = w_.inverse_depth.data();
     real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
-    for (size_t i = 0; i < count_; ++i) {
-      const real inv_z = inverse_depth[i];
-      // d delta / d p = (a, b, -(a X + b Y) / Z) / Z, with the weight inside a and b (through a
-      // lens the chain rule's (a, b) J_lens, d(x, y) / d p being the same).
-      const real gx = k[0][i] * inv_z;
-      const real gy = k[1][i] * inv_z;
-      const real gz = -sum_of_products(gx, p[0][i], gy, p[1][i]) * inv_z;
-      column[0][i] = gx;
-      column[1][i] = gy;
-      column[2][i] = gz;
-      // d delta / d w = g^T (-hat(z)) J(w) = (z x g)^T J(w).
-      const real zx = z[0][i], zy = z[1][i], zz = z[2][i];
-      const Vec3 zg{difference_of_products(zy, gz, zz, gy), difference_of_products(zz, gx, zx, gz),
-                    difference_of_products(zx, gy, zy, gx)};
-      if (!left) {
-        column[3][i] = zg.x;
-        column[4][i] = zg.y;
-        column[5][i] = zg.z;
-        continue;
-      }
-      for (int c = 0; c < 3; ++c)
-        column[3 + c][i] = sum_of_products(zg.x, jl.m[0][c], zg.y, jl.m[1][c], zg.z, jl.m[2][c]);
-    }
+    vector_kernels::run([&]() __attribute__((always_inline)) {
+      if (left)
+        jacobian_columns<true>(count_, k[0].data(), k[1].data(), p[0].data(), p[1].data(), z[0].data(), z[1].data(),
+                               z[2].data(), inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
+                               column[5]);
+      else
+        jacobian_columns<false>(count_, k[0].data(), k[1].data(), p[0].data(), p[1].data(), z[0].data(), z[1].data(),
+                                z[2].data(), inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
+                                column[5]);
+    });
     return true;
   }
 

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Prints the markdown section for docs/results/handheld.md: guest instructions per frame on
 # today's handheld cores (AArch64 on qemu-aarch64 -cpu cortex-a53, ARMv7-A hard-float on
-# qemu-arm -cpu cortex-a7) in double, beside the PXA270's S40.23: per step of
+# qemu-arm -cpu cortex-a7) in double and float, beside the PXA270's S40.23: per step of
 # Tracker::track on the generated QVGA cube (bench_tracker), and the whole `edgetrack track`
 # frame on the same cube rendered to PGM files (as the app section does for the PXA270), counted
 # by toolchains/qemu/count-insns.sh.
@@ -21,6 +21,8 @@ export EDGETRACK_PLUGIN_DIR=$work/plugin
 builds=(
   "aarch64|double|Cortex-A53 (AArch64), double"
   "armv7hf|double|Cortex-A7 (ARMv7-A hard-float, NEON), double"
+  "aarch64|float|Cortex-A53 (AArch64), float"
+  "armv7hf|float|Cortex-A7 (ARMv7-A hard-float, NEON), float"
 )
 
 cat <<EOF

@@ -13,6 +13,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "real/vector_kernels.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
 
@@ -38,6 +39,9 @@ class vpMeResponse {
     // A padded row reads kPaddedRow pixels from the window's left: they must lie in the row.
     if (padded_ && last_j_ - half_ + static_cast<int>(vpMe::kPaddedRow) > static_cast<int>(I.getWidth()))
       padded_ = nullptr;
+    // The scalar reference (vector_kernels.h) sums without the padded rows.
+    if (vector_kernels::chosen() == vector_kernels::Choice::kScalar) padded_ = nullptr;
+    avx2_ = padded_ && size_ == 5 && vector_kernels::avx2();
   }
 
   /// True when the mask centred at (i, j) would reach the border strip.
@@ -76,6 +80,34 @@ class vpMeResponse {
     }
 #endif
     at_each(i, j, n, out);
+  }
+
+  /// The responses at the 3 x 3 pixels around (i, j), row by row: out[3 (di + 1) + dj + 1] is
+  /// at(i + di, j + dj), for di and dj in -1..1; `centre` is at(i, j), which the caller read
+  /// already. With the vector path, when the block lies inside, the windows share their pixels'
+  /// loads; else the eight others in one batch (at_each).
+  void at_block_3x3(int i, int j, int centre, int* out) const {
+#if defined(__SSE2__)
+    if (padded_ && size_ == 5 && !outside(i - 1, j - 1) && !outside(i + 1, j + 1)) {
+      const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+      const unsigned char* top_left = image_.bitmap + (i - 1 - half_) * stride + (j - 1 - half_);
+      if (avx2_)
+        padded_block_5_avx2(padded_, top_left, stride, sign_, out);
+      else
+        padded_block_5(padded_, top_left, stride, sign_, out);
+      return;
+    }
+#endif
+    int rows[8], columns[8], others[8];
+    for (int k = 0; k < 8; ++k) {
+      const int m = k < 4 ? k : k + 1;  // the block's pixels without the centre
+      rows[k] = i + m / 3 - 1;
+      columns[k] = j + m % 3 - 1;
+    }
+    at_each_in_box(rows, columns, 8, others);
+    for (int k = 0; k < 4; ++k) out[k] = others[k];
+    out[4] = centre;
+    for (int k = 4; k < 8; ++k) out[k + 1] = others[k];
   }
 
   /// sign * sum of weight * pixel over the window centred at (i, j); 0 when outside(i, j).
@@ -173,6 +205,52 @@ class vpMeResponse {
     }
   }
 
+  /// The 3 x 3 block's padded sums, times `sign`, row-major into out[9]: the 7 x 7 pixels under
+  /// the nine windows (top-left at `top_left`, 8 read per row) each loaded once, every window row
+  /// one 16-bit multiply-add with its mask row shifted to the window's column (weight * pixel
+  /// < 2^15, integer sums: exact in any order). Inlined in the baseline and the AVX2 kernels.
+  [[gnu::always_inline]] static inline void padded_block_5(const int16_t* padded, const unsigned char* top_left,
+                                                         std::ptrdiff_t stride, int sign, int* out) {
+    static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
+    // shifted[3 a + s]: mask row a moved s pixels right, for the window s - 1 columns off.
+    __m128i shifted[15];
+    for (int a = 0; a < 5; ++a) {
+      const __m128i row = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded + a * 8));
+      shifted[3 * a] = row;
+      shifted[3 * a + 1] = _mm_slli_si128(row, 2);
+      shifted[3 * a + 2] = _mm_slli_si128(row, 4);
+    }
+    const __m128i zero = _mm_setzero_si128();
+    __m128i total[9];
+    for (int w = 0; w < 9; ++w) total[w] = zero;
+#pragma GCC unroll 7
+    for (int r = 0; r < 7; ++r) {
+      const __m128i pixels = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(top_left + r * stride)), zero);
+#pragma GCC unroll 3
+      for (int di = 0; di < 3; ++di) {
+        const int a = r - di;  // the row of window row di's mask that image row r meets
+        if (a < 0 || a > 4) continue;
+#pragma GCC unroll 3
+        for (int s = 0; s < 3; ++s) total[3 * di + s] = _mm_add_epi32(total[3 * di + s], _mm_madd_epi16(pixels, shifted[3 * a + s]));
+      }
+    }
+    // Four windows' lanes summed at once: a transpose by unpacks, then two adds.
+    for (int w = 0; w < 8; w += 4) {
+      const __m128i ab = _mm_add_epi32(_mm_unpacklo_epi32(total[w], total[w + 1]), _mm_unpackhi_epi32(total[w], total[w + 1]));
+      const __m128i cd = _mm_add_epi32(_mm_unpacklo_epi32(total[w + 2], total[w + 3]), _mm_unpackhi_epi32(total[w + 2], total[w + 3]));
+      __m128i sums = _mm_add_epi32(_mm_unpacklo_epi64(ab, cd), _mm_unpackhi_epi64(ab, cd));
+      if (sign < 0) sums = _mm_sub_epi32(zero, sums);
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(out + w), sums);
+    }
+    __m128i last = _mm_add_epi32(total[8], _mm_shuffle_epi32(total[8], _MM_SHUFFLE(1, 0, 3, 2)));
+    last = _mm_add_epi32(last, _mm_shuffle_epi32(last, _MM_SHUFFLE(2, 3, 0, 1)));
+    out[8] = sign * _mm_cvtsi128_si32(last);
+  }
+  /// padded_block_5 built for AVX2 (vpMeResponse_avx2.cpp, whatever the build's target): the
+  /// same operations in three-operand VEX form.
+  static void padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left, std::ptrdiff_t stride, int sign,
+                                  int* out);
+
   static int padded_sum_5(const __m128i (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
     static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
     const __m128i zero = _mm_setzero_si128();
@@ -198,6 +276,7 @@ class vpMeResponse {
   const int16_t* padded_;
   int size_, half_, sign_;
   bool antisymmetric_;
+  bool avx2_ = false;
   int first_ = 0, last_i_ = 0, last_j_ = 0;
 };
 
