@@ -12,6 +12,7 @@
 #include "edgetrack/millimetres.h"
 #include "edgetrack/normal_equations_lm.h"
 #include "edgetrack/order_statistic.h"
+#include "edgetrack/tracker_memory.h"
 #include "netlib/minpack.h"
 #include "real/divisor.h"
 #include "real/sum_of_products.h"
@@ -639,6 +640,19 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   to_strongest(matches, distances);
   solution.residual_scale = real(kMadToSigma) * median_of(distances, workspace.magnitudes, workspace.selection);
   return solution;
+}
+
+size_t PoseWorkspace::heap_bytes() const {
+  size_t bytes = 0;
+  for (const std::vector<real>* arrays : {model_mm, rotated, unweighted, turned})
+    for (int i = 0; i < 3; ++i) bytes += capacity_bytes(arrays[i]);
+  for (const std::vector<real>* arrays : {gradient, moved, lens_point, lens_gradient, lens_radial})
+    for (int i = 0; i < 2; ++i) bytes += capacity_bytes(arrays[i]);
+  for (const std::vector<real>* array :
+       {&evaluated, &inverse_depth, &residuals, &jacobian, &work, &scratch, &distances, &weights, &magnitudes,
+        &selection, &before_round})
+    bytes += capacity_bytes(*array);
+  return bytes;
 }
 
 }  // namespace edgetrack

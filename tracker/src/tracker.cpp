@@ -192,19 +192,6 @@ size_t model_bytes(const EdgeModel& model) {
   return bytes;
 }
 
-size_t workspace_bytes(const PoseWorkspace& w) {
-  size_t bytes = 0;
-  for (const std::vector<real>* arrays : {w.model_mm, w.rotated, w.unweighted, w.turned})
-    for (int i = 0; i < 3; ++i) bytes += capacity_bytes(arrays[i]);
-  for (const std::vector<real>* arrays : {w.gradient, w.moved, w.lens_point, w.lens_gradient})
-    for (int i = 0; i < 2; ++i) bytes += capacity_bytes(arrays[i]);
-  for (const std::vector<real>* array : {&w.evaluated, &w.inverse_depth, &w.residuals, &w.jacobian, &w.work,
-                                         &w.scratch, &w.distances, &w.weights, &w.magnitudes, &w.selection,
-                                         &w.before_round})
-    bytes += capacity_bytes(*array);
-  return bytes;
-}
-
 }  // namespace
 
 TrackerMemory Tracker::memory() const {
@@ -217,7 +204,7 @@ TrackerMemory Tracker::memory() const {
   m.control_points = capacity_bytes(s.sampled_) + capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
                      capacity_bytes(s.references_) + capacity_bytes(s.borrowed_);
   m.matches = capacity_bytes(s.matches_);
-  m.pose_workspace = workspace_bytes(s.pose_workspace_);
+  m.pose_workspace = s.pose_workspace_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
   return m;
 }

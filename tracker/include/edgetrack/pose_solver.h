@@ -105,6 +105,9 @@ struct PoseWorkspace {
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> scratch, distances, weights, magnitudes, selection;
   std::vector<real> before_round;  ///< the distances the last robust round weighed (its weights, rounds_settled_px)
+
+  /// The heap its buffers hold (their capacities), for Tracker::memory.
+  size_t heap_bytes() const;
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM
