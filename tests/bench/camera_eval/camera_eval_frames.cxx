@@ -2,6 +2,9 @@
 /// What a generated sequence with camera effects (synth's --shutter, --readout) allows the
 /// tracker, frame by frame. Per frame, the camera position error (mm, as `edgetrack eval`) of:
 ///   tracked  the tracker from the true first pose through every frame (as `edgetrack track`);
+///   early    the same poses against the true pose half a frame interval before the frame's time
+///            (the start of a whole-interval exposure, the top row's read time of a whole-interval
+///            readout): what the error would be were the truth stamped there;
 ///   alone    the frame solved alone from its own true pose (what the image allows the tracker);
 ///   rigid    one rigid pose fitted, from the true pose, to where each of alone's control points
 ///            is at its row's read time (the middle of its exposure), no image: what a rolling
@@ -13,8 +16,9 @@
 ///   camera_eval_frames MODEL.cao SEQUENCE_DIR READOUT [INTRINSICS] [--matches FRAME]
 /// (synth's camera.xml, truth.csv, frames/frameNNNN.pgm; READOUT as synth's --readout;
 /// INTRINSICS: synth's intrinsics.xml, the lens given as `track --intrinsics` gives it). With
-/// --matches, the tracked run's matches of that frame instead, one a line: control point, found
-/// pixel, outlier, chosen hypothesis, contrast (to compare two builds of `real`).
+/// --matches, the tracked run's control points of that frame instead, then its matches, one a
+/// line: control point, found pixel, outlier, chosen hypothesis, contrast (to compare two builds
+/// of `real`).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -50,7 +54,7 @@ Vec2 timed_pixel(const ControlPoint& point, const std::vector<Se3>& truth, size_
 }
 
 struct Sums {
-  double tracked = 0, alone = 0, rigid = 0, rigid_own = 0, offset = 0;
+  double tracked = 0, early = 0, alone = 0, rigid = 0, rigid_own = 0, offset = 0;
   int frames = 0, matches = 0, within_pixel = 0;
 };
 
@@ -85,7 +89,7 @@ int main(int argc, char** argv) {
   Result<Tracker> tracked = Tracker::create(sequence.model, config.camera, truth[0], config.params);
   Result<Tracker> alone = Tracker::create(sequence.model, config.camera, truth[0], from_truth);
   if (!tracked.ok() || !alone.ok()) return 1;
-  if (dump < 0) std::printf("frame tracked_mm alone_mm rigid_mm rigid_own_mm\n");
+  if (dump < 0) std::printf("frame tracked_mm early_mm alone_mm rigid_mm rigid_own_mm\n");
   Sums sums;
   for (size_t k = 0; k < truth.size(); ++k) {
     char name[64];
@@ -97,6 +101,8 @@ int main(int argc, char** argv) {
     if (!t.ok()) return 1;
     if (dump >= 0) {
       if (static_cast<int>(k) != dump) continue;
+      for (const ControlPoint& p : tracked.value().control_points())
+        std::printf("point %d %.6f %.6f\n", p.edge, static_cast<double>(p.pixel.x), static_cast<double>(p.pixel.y));
       for (const EdgeMatch& m : tracked.value().matches())
         std::printf("%d %.6f %.6f found %.6f %.6f outlier %d chosen %d contrast %.6f\n", m.point.edge,
                     static_cast<double>(m.point.pixel.x), static_cast<double>(m.point.pixel.y),
@@ -124,21 +130,27 @@ int main(int argc, char** argv) {
       ++sums.matches;
     }
     const PoseSolution rigid = solve_pose(timed, config.camera, truth[k], config.params.pose);
-    const Se3 own_time = edgetrack_app::pose_at_time(truth, static_cast<double>(k) + read_sum / (timed.empty() ? 1 : timed.size()));
-    const double errors[4] = {camera_position_error_mm(t.value().camera_from_model, truth[k]),
+    const double mean_read = read_sum / static_cast<double>(timed.empty() ? 1 : timed.size());
+    const Se3 own_time = edgetrack_app::pose_at_time(truth, static_cast<double>(k) + mean_read);
+    const Se3 half_earlier = edgetrack_app::pose_at_time(truth, static_cast<double>(k) - 0.5);
+    const double errors[5] = {camera_position_error_mm(t.value().camera_from_model, truth[k]),
+                              camera_position_error_mm(t.value().camera_from_model, half_earlier),
                               camera_position_error_mm(a.value().camera_from_model, truth[k]),
                               camera_position_error_mm(rigid.camera_from_model, truth[k]),
                               camera_position_error_mm(rigid.camera_from_model, own_time)};
     sums.tracked += errors[0];
-    sums.alone += errors[1];
-    sums.rigid += errors[2];
-    sums.rigid_own += errors[3];
+    sums.early += errors[1];
+    sums.alone += errors[2];
+    sums.rigid += errors[3];
+    sums.rigid_own += errors[4];
     ++sums.frames;
-    std::printf("%zu %.3f %.3f %.3f %.3f\n", k, errors[0], errors[1], errors[2], errors[3]);
+    std::printf("%zu %.3f %.3f %.3f %.3f %.3f\n", k, errors[0], errors[1], errors[2], errors[3], errors[4]);
   }
   if (sums.frames == 0) return 1;
   const double n = sums.frames, m = sums.matches > 0 ? sums.matches : 1;
-  std::printf("mean tracked_mm=%.4f alone_mm=%.4f rigid_mm=%.4f rigid_own_mm=%.4f offset_px=%.4f within_pixel=%.4f\n",
-              sums.tracked / n, sums.alone / n, sums.rigid / n, sums.rigid_own / n, sums.offset / m, sums.within_pixel / m);
+  std::printf("mean tracked_mm=%.4f early_mm=%.4f alone_mm=%.4f rigid_mm=%.4f rigid_own_mm=%.4f offset_px=%.4f "
+              "within_pixel=%.4f\n",
+              sums.tracked / n, sums.early / n, sums.alone / n, sums.rigid / n, sums.rigid_own / n, sums.offset / m,
+              sums.within_pixel / m);
   return 0;
 }
