@@ -11,6 +11,9 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
+
 #include "commands.h"
 #include "edgetrack/calibration_target.h"
 #include "edgetrack/camera_file.h"
@@ -172,13 +175,13 @@ std::string render_frames(const std::string& dir, const CalibrationTarget& targe
   return dir + "/frame%02d.pgm";
 }
 
-/// Runs `edgetrack calibrate` on the frames; its exit status.
+/// Runs `edgetrack calibrate` on the frames (every `step`th); its exit status.
 int run_calibrate(const std::string& pattern, const std::string& dir, const char* kind, const char* count,
-                  const char* spacing) {
+                  const char* spacing, const char* step = "1") {
   const std::string visp = dir + "/camera.xml", opencv = dir + "/camera.yaml", overlay = dir + "/overlay";
   std::vector<std::string> args = {"calibrate", "--images", pattern,       "--target", kind,     "--count",
                                    count,       "--spacing", spacing,      "--visp",   visp,     "--opencv",
-                                   opencv,      "--overlay", overlay};
+                                   opencv,      "--overlay", overlay,      "--step",   step};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -247,6 +250,55 @@ void calibrate_and_check(const char* what, const CalibrationTarget& target, cons
   if (status == 0) check_files(dir, truth, Coverage(target, truth, views), what, visp_lens_exact);
 }
 
+/// The frames of `frames_dir` (frame00.pgm ... frameNN.pgm), each written twice as a video holds
+/// a still view over neighbouring frames, into an MJPG .avi through OpenCV's VideoWriter; its path.
+std::string write_video(const std::string& frames_dir, size_t frames, const std::string& dir) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/views.avi";
+  cv::VideoWriter writer;
+  char name[32];
+  for (size_t k = 0; k < frames; ++k) {
+    std::snprintf(name, sizeof name, "/frame%02zu.pgm", k);
+    const cv::Mat grey = cv::imread(frames_dir + name, cv::IMREAD_GRAYSCALE);
+    TEST("a rendered frame reads back", grey.empty(), false);
+    if (grey.empty()) return path;
+    if (!writer.isOpened()) {
+      writer.open(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10, grey.size(), false);
+      TEST("OpenCV opens an MJPG .avi for writing", writer.isOpened(), true);
+      if (!writer.isOpened()) return path;
+    }
+    writer.write(grey);
+    writer.write(grey);
+  }
+  writer.release();
+  cv::VideoCapture reader(path);
+  TEST("OpenCV reads the video back, two frames a view",
+       static_cast<size_t>(reader.get(cv::CAP_PROP_FRAME_COUNT)), 2 * frames);
+  return path;
+}
+
+/// `calibrate --images VIDEO --step 2` on the frames calibrate_and_check rendered for `rendered`,
+/// in a video: the same camera back from the same views.
+void calibrate_video_and_check(const char* rendered, const CalibrationTarget& target, const PinholeCamera& truth,
+                               const char* kind, const char* count, const char* spacing, bool visp_lens_exact) {
+  const std::string what = std::string(rendered) + "_video";
+  const std::string dir = std::string(APP_TEST_TMP) + "/calibrate_" + what;
+  const std::vector<Se3> views = calibration_views(target, truth);
+  const std::string video =
+      write_video(std::string(APP_TEST_TMP) + "/calibrate_" + rendered, views.size() + 1, dir);
+  const int status = run_calibrate(video, dir, kind, count, spacing, "2");
+  TEST((what + ": calibrate succeeds on the video").c_str(), status, 0);
+  // Frames 0, 2, ..., 2 x views read (the last the empty view), the odd ones stepped over.
+  char last[64];
+  std::snprintf(last, sizeof last, "/overlay/overlay%04zu.png", 2 * views.size());
+  TEST((what + ": one overlay per frame read, every second frame").c_str(),
+       std::filesystem::exists(dir + last) && !std::filesystem::exists(dir + "/overlay/overlay0001.png") &&
+           !std::filesystem::exists(dir + "/overlay/INCOMPLETE"),
+       true);
+  if (status == 0) check_files(dir, truth, Coverage(target, truth, views), what.c_str(), visp_lens_exact);
+}
+
 }  // namespace
 
 static void test_calibrate() {
@@ -256,6 +308,7 @@ static void test_calibrate() {
   wide.lens.model = LensModel::kVisp;
   wide.lens.kud = real(-0.25);
   calibrate_and_check("chessboard_visp_lens", chessboard, wide, "chessboard", "9x6", "0.02", true);
+  calibrate_video_and_check("chessboard_visp_lens", chessboard, wide, "chessboard", "9x6", "0.02", true);
 
   // OpenCV's model with a fourth-order term and tangential distortion, non-square pixels and an
   // off-centre principal point: ViSP's one-coefficient lens cannot hold it, OpenCV's file must.
