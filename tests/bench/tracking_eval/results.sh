@@ -216,7 +216,7 @@ echo "model's vertices projected with each tracker's pose (pixels of the tracked
 echo "largest frame. Times: median ms of the tracking call (ours \`Tracker::track\`, ViSP \`track()\`)."
 echo
 echo "| model | size | track lost | track uncertain | compare: ours lost | ViSP lost | corner px mean | corner px largest | ours ms | ViSP ms | control points ours / ViSP |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube.cao cube_and_cylinder.cao; do
   for factor in 1 2; do mbt_row "$model" "$factor"; done
 done
