@@ -101,10 +101,7 @@ Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args
       auto range = distance_range("--init-distance", args.text("--init-distance"), params);
       if (!range.ok()) return range.error();
     } else {
-      // A user's files as shipped say nothing of the distance: every one at which the model's
-      // bounding sphere spans between the whole of the image's shorter side and a tenth of it.
-      edgetrack::span_distances(camera, edgetrack::model_extent(model), real(1), real(0.1), params.views.distance_min,
-                                params.views.distance_max);
+      params.views = edgetrack::auto_init_views(camera, edgetrack::model_extent(model));
     }
     templates = edgetrack::make_template_set(model, camera, params);
   }

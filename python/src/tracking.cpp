@@ -170,6 +170,22 @@ void bind_tracking(py::module_& m) {
       "Templates for detecting `model` with `camera` (its image size needed), over camera distances in metres "
       "(0, 0: from the camera and the model's size), as `edgetrack templates` makes them.");
   m.def(
+      "auto_init_templates",
+      [](const EdgeModel& model, const PinholeCamera& camera) {
+        TemplateParams params;
+        params.views = auto_init_views(camera, model_extent(model));
+        value_or_raise(check_template_params(params));
+        std::optional<Result<TemplateSet>> made;
+        {
+          py::gil_scoped_release release;
+          made.emplace(make_template_set(model, camera, params));
+        }
+        return value_or_raise(std::move(*made));
+      },
+      py::arg("model"), py::arg("camera"),
+      "Templates over the distances `edgetrack track --init-auto` searches when none is given: wherever the "
+      "model spans between the whole of the image's shorter side and a tenth of it.");
+  m.def(
       "read_templates",
       [](const std::string& path, const EdgeModel& model, const PinholeCamera& camera) {
         return value_or_raise(read_templates(path, model, camera));

@@ -116,6 +116,17 @@ class Tracking(unittest.TestCase):
         self.assertEqual(a, alone)
         self.assertEqual(b, alone)
 
+    def test_auto_init_templates_find_the_cube_from_the_files_as_shipped(self):
+        config = edgetrack.read_config(CONFIG)
+        camera = config.camera
+        camera.width, camera.height = 640, 480
+        config.camera = camera
+        templates = edgetrack.auto_init_templates(self.model, config.camera)
+        self.assertGreater(len(templates), len(edgetrack.make_templates(self.model, config.camera)))
+        detection = edgetrack.Detector(self.model, config, templates).detect(cube_frame(0))
+        self.assertTrue(detection.found)
+        self.assertGreater(detection.score, 0.5)
+
     def test_detection_and_auto_tracking(self):
         config = edgetrack.read_config(CONFIG)
         camera = config.camera

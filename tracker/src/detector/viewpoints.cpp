@@ -98,6 +98,12 @@ void span_distances(const PinholeCamera& camera, const ModelExtent& extent, cons
   farthest = focal * real(2) * extent.radius / (smallest_share * real(side));
 }
 
+ViewRange auto_init_views(const PinholeCamera& camera, const ModelExtent& extent) {
+  ViewRange views;
+  span_distances(camera, extent, real(1), real(0.1), views.distance_min, views.distance_max);
+  return views;
+}
+
 namespace {
 
 /// The range's nearest and farthest distances, the defaults resolved.

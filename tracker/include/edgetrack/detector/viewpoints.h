@@ -52,6 +52,12 @@ std::vector<Vec3> sphere_directions(int subdivisions);
 void span_distances(const PinholeCamera& camera, const ModelExtent& extent, const real& largest_share,
                     const real& smallest_share, real& nearest, real& farthest);
 
+/// The views automatic initialisation searches when it is told nothing of the distance (a user's
+/// files as shipped): the default directions and in-plane steps, at every camera distance at which
+/// the model's bounding sphere spans between the whole of the image's shorter side and a tenth
+/// of it. Wider than the templates' own default (80 % to 40 %), which assumes a framed object.
+ViewRange auto_init_views(const PinholeCamera& camera, const ModelExtent& extent);
+
 /// Distances from min to max (each ratio times the last, the last one not past max by more than
 /// the ratio's half); when range.distance_min is 0, min and max are where the model's bounding
 /// sphere spans 80 % and 40 % of the image's shorter side.
