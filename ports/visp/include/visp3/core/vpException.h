@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <exception>
 #include <string>
-#include <vector>
 
 inline namespace edgetrack_ports {
 
@@ -56,9 +55,9 @@ class vpException : public std::exception {
       message_.clear();
       return;
     }
-    std::vector<char> text(static_cast<std::size_t>(length) + 1);
-    std::vsnprintf(text.data(), text.size(), format, args);
-    message_.assign(text.data(), static_cast<std::size_t>(length));
+    // C++11 strings keep room for the terminating NUL, so vsnprintf writes in place.
+    message_.resize(static_cast<std::size_t>(length));
+    std::vsnprintf(&message_[0], message_.size() + 1, format, args);
   }
 
  private:
