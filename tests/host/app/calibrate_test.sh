@@ -5,13 +5,9 @@
 # default-circles.cfg describes it) give a plausible camera whose files `track --intrinsics`
 # reads; a frame without the target is named; bad command lines and inputs are one line each.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, expect_usage_error, less
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 grids=/usr/share/visp-images-data/ViSP-images/calibration
 mbt=/usr/share/visp-images-data/ViSP-images/mbt

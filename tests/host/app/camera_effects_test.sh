@@ -5,13 +5,9 @@
 # frame on and not before; motion blur and rolling shutter change the frames and not the truth;
 # everything at once through a lens is tracked, better with the lens given; bad values are refused.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less, track_with_and_without_lens
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 synth() { "$edgetrack" synth --supersample 1 "$@"; }
 

@@ -1,6 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# Helpers of the command-line tests (sourced by cli_test.sh and track_host_test.sh); they use
-# the caller's $name (the case) and $work (its directory).
+# What every command-line test script starts with, sourced with the script's own arguments
+# (EDGETRACK TMPDIR CASE): $edgetrack, $name (the case), $work (its fresh directory), $mbt (ViSP's
+# mbt images), $data (the repository's data/), and the helpers below.
+edgetrack=$1
+work=$2/$3
+name=$3
+mbt=/usr/share/visp-images-data/ViSP-images/mbt
+data=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../../data" && pwd)
+rm -rf "$work" && mkdir -p "$work"
 
 fail() { echo "FAIL ($name): $*"; exit 1; }
 

@@ -4,15 +4,9 @@
 # error_* cases check that a bad input gives one line on stderr naming the file and the problem,
 # and a non-zero exit; the other cases run track and eval end to end and assert on the figures.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-data=$(cd "$(dirname "$0")/../../../data" && pwd)
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less, check_poses
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 # field KEY: the value of KEY=... on the eval: line of $work/eval.txt.
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$work/eval.txt"; }

@@ -4,15 +4,10 @@
 # sequence), one case per call:
 # compare_test.sh EDGETRACK TMPDIR CASE. Both trackers must run, give finite figures and agree.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-models=$(cd "$(dirname "$0")/../../.." && pwd)/data/models
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less, check_poses
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
+models=$data/models
 
 compare_cube() {
   "$edgetrack" compare --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \

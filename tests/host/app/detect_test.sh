@@ -3,15 +3,9 @@
 # One command-line test of `detect`, `templates` and `track --init-auto` per call:
 # detect_test.sh EDGETRACK TMPDIR CASE.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-data=$(cd "$(dirname "$0")/../../../data" && pwd)
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 # centre_offsets A.csv B.csv CENTRE: per frame, the distance (mm) between the model point CENTRE
 # ("x y z", model frame) in the camera frame at the poses of A and B: the same for any symmetric

@@ -4,12 +4,7 @@
 # one line on stderr naming the input and the problem, a non-zero exit, no abort (status 134 or
 # a signal) and, for outputs, no partial file under the name of a complete one.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-rm -rf "$work" && mkdir -p "$work"
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 track() {
   "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" --quiet "$@"

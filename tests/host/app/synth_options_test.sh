@@ -5,13 +5,9 @@
 # what was asked for, --reverse turns back over the same poses; bad values are refused with one line; a fast sequence is tracked;
 # a sequence through a lens (--kud) is tracked with its intrinsics.xml (--intrinsics), and a bad calibration refused.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, expect_usage_error, less, check_poses, track_with_and_without_lens
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 synth() { "$edgetrack" synth --frames 10 --supersample 1 "$@"; }
 

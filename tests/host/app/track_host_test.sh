@@ -5,14 +5,9 @@
 # for real in a window on a virtual X display (Xvfb) with xdotool. The lean command: the host
 # libraries come in only through the host extras plugin, whose absence is one line.
 set -u
-edgetrack=$1
-work=$2/$3
-name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-rm -rf "$work" && mkdir -p "$work"
 
 # fail, expect_error, less, check_poses
-source "$(dirname "$0")/cli_common.sh"
+source "$(dirname "$0")/cli_common.sh" "$@"
 
 track_cube() {
   "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --images "$mbt/cube/image%04d.pgm" --quiet "$@"
