@@ -12,7 +12,8 @@
 ///   back (the first frame after them with the model wholly in view).
 ///
 /// detection_sequence score MODEL POSES.csv TRUTH.csv [--cube] [--absent FIRST:LAST --back R] [--each]
-///   A run of `edgetrack track` against the truth (or another run's poses): frames until the first
+///   A run of `edgetrack track` against the truth (a truth CSV, a directory of ViSP pose files as
+///   Castle-simu's CameraPose/, or another run's poses): frames until the first
 ///   tracked one, frames tracked, uncertain and lost, tracked frames while the object was absent
 ///   and tracked frames more than 5 mm or 5 degrees off (an overlay visibly beside the object),
 ///   frames from `back` to the first tracked frame after the absence, and the error of the tracked
@@ -141,10 +142,10 @@ int trajectory_main(int argc, char** argv) {
   return 0;
 }
 
-/// A poses file, or a truth file (read with its own header).
+/// A poses file, or the truth: a truth CSV or a directory of ViSP pose files (read_truth).
 Result<std::vector<PoseRow>> read_rows(const std::string& path) {
   Result<std::vector<PoseRow>> rows = edgetrack_app::read_pose_table(path, edgetrack_app::kPosesHeader);
-  return rows.ok() ? rows : edgetrack_app::read_pose_table(path, edgetrack_app::kTruthHeader);
+  return rows.ok() ? rows : edgetrack_app::read_truth(path);
 }
 
 struct Score {

@@ -10,6 +10,7 @@ source "$here/../lib.sh"
 
 mbt=/usr/share/visp-images-data/ViSP-images/mbt
 castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
+castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
 models=$top/data/models
 seeds=(1 2 3)
 mkdir -p "$bench_build_root"
@@ -92,6 +93,14 @@ real() {
   row "$name" "$work/real.csv"
 }
 
+# castle_simu: ViSP's rendered Castle-simu from its first pose file, against its pose files.
+castle_simu() {
+  "$edgetrack" track --model "$castle_simu/Models/chateau.cao" --camera "$castle_simu/Config/chateau.xml" \
+    --init-pose "$castle_simu/CameraPose/Camera_001.txt" --images "$castle_simu/Images" --poses "$work/simu.csv" \
+    --quiet >/dev/null
+  row "Castle-simu, chateau.cao" "$work/simu.csv" "$castle_simu/Models/chateau.cao" "$work/simu.csv" "$castle_simu/CameraPose"
+}
+
 echo "## Tracking status: tracked, uncertain, lost; confidently wrong and false alarms"
 echo
 echo "\`tests/bench/status/results.sh\`: host double build, $(bench_machine)."
@@ -104,8 +113,9 @@ echo "its cluttered backdrop, a new one per seed) from \`first.pos\`. Detection:
 echo "docs/results/detection_sequences.md (steady, fast, covered, leave; seeds ${seeds[*]}) tracked with"
 echo "\`--init-auto --templates\` (\`edgetrack templates --distance 0.12:0.2 --cone 60\`). Real, from the"
 echo "given pose, with the files as shipped: ViSP's \`mbt/cube\` (\`cube.xml\`; QVGA with \`--downscale 2\`)"
-echo "and \`mbt-depth/castel\` (\`chateau.cao\`, \`chateau.xml\`, \`chateau.0.pos\`). The status bounds are"
-echo "learned from the scene (docs/ARCHITECTURE.md, \"Tracking status\")."
+echo "and \`mbt-depth/castel\` (\`chateau.cao\`, \`chateau.xml\`, \`chateau.0.pos\`); ViSP's rendered"
+echo "\`mbt-depth/Castle-simu\` from \`CameraPose/Camera_001.txt\`, its truth the other files of \`CameraPose/\`"
+echo "(docs/results/castle.md). The status bounds are learned from the scene (docs/ARCHITECTURE.md, \"Tracking status\")."
 echo
 echo "| sequence | frames | tracked | uncertain | lost | wrong | alarms |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
@@ -118,6 +128,7 @@ real "mbt/cube QVGA, cube.cao" "$mbt/cube.cao" "${cube_args[@]}" --downscale 2
 real "mbt/cube 640x480, cube_and_cylinder.cao" "$mbt/cube_and_cylinder.cao" "${cube_args[@]}"
 real "mbt/cube QVGA, cube_and_cylinder.cao" "$mbt/cube_and_cylinder.cao" "${cube_args[@]}" --downscale 2
 real "castel, chateau.cao" "$castel/chateau.cao" "$castel/chateau.xml" "$castel/chateau.0.pos" "$castel/castel/image_%04d.pgm"
+castle_simu
 "$edgetrack" synth --out "$work/camera" --frames 1 >/dev/null
 for model in cube60 wood_toy; do
   "$edgetrack" templates --model "$models/$model.cao" --camera "$work/camera/camera.xml" --distance 0.12:0.2 --cone 60 \
