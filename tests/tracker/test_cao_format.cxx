@@ -90,6 +90,20 @@ void test_every_primitive() {
     TEST("the cylinder's useLod=1 and minLineLengthThreshold are stored",
          c.attributes.use_lod.value_or(false) && c.attributes.min_line_length.value_or(real(0)) == real(7), true);
     TEST_EQUAL("its side is tessellated", m.cylinder_surface.size(), size_t(2 * kCylinderSides));
+    TEST_EQUAL("its rims' points, each once", m.cylinder_points.size(), size_t(2 * (kCylinderSides + 1)));
+    int named = 0, facets_closing = 0;
+    for (const SurfaceTriangle& t : m.cylinder_surface) {
+      for (int i = 0; i < 3; ++i) {
+        const size_t p = static_cast<size_t>(t.points[i]);
+        const Vec3& corner = t.corners[i];
+        if (p < m.cylinder_points.size() && m.cylinder_points[p].x == corner.x && m.cylinder_points[p].y == corner.y &&
+            m.cylinder_points[p].z == corner.z)
+          ++named;
+      }
+      facets_closing += t.points[1] == kCylinderSides ? 1 : 0;  // the base rim's last point, at 2 pi
+    }
+    TEST_EQUAL("every facet corner is the rim point it names", named, 3 * 2 * kCylinderSides);
+    TEST_EQUAL("the last facet closes on the rim's last point", facets_closing, 1);
   }
   TEST_EQUAL("one circle", m.circles.size(), size_t(1));
   if (m.circles.size() == 1) {

@@ -3,7 +3,8 @@
 /// and with padded rows) and,
 /// built from the same grey values, as RGB24, BGR24, RGBA32, BGRA32, grey8 and NV21/I420 (padded rows and
 /// packed ones, the chroma planes filled with noise) gives bit-identical poses and matches every
-/// frame, on demand and over the whole frame; packed grey planes are read with no conversion;
+/// frame, on demand and over the whole frame; every vector kernel choice converts random colours
+/// to vpImageConvert's grey; packed grey planes are read with no conversion;
 /// and views that cannot be tracked are refused with a message, leaving the tracker as it was.
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include "edgetrack/model_io.h"
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
+#include "real/vector_kernels.h"
 #include "synthetic_sequence.h"
 #include "testlib/testlib_test.h"
 #include "visp3/core/vpImageConvert.h"
@@ -199,10 +201,46 @@ void channels_in_their_order() {
        true);
 }
 
+/// A box of random colours, wider than the widest vectors and not a multiple of them, in rows
+/// with padding, converts in every colour layout and with every vector kernel choice to
+/// vpImageConvert's grey of each pixel, and leaves the pixels outside the box as they were.
+void every_kernel_gives_each_pixels_grey() {
+  const int width = 83, height = 6, padding = 5;
+  const PixelBox box{1, 3, 5, 80};  // top, left, bottom, right
+  const vector_kernels::Choice choices[] = {vector_kernels::Choice::kWidest, vector_kernels::Choice::kBaseline,
+                                            vector_kernels::Choice::kScalar};
+  for (PixelLayout layout : {PixelLayout::kRgb24, PixelLayout::kBgr24, PixelLayout::kRgba32, PixelLayout::kBgra32}) {
+    const int step = bytes_per_pixel(layout), row_bytes = width * step + padding;
+    std::vector<uint8_t> bytes(static_cast<size_t>(row_bytes) * height);
+    for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<uint8_t>((i + 7) * 2654435761u >> 24);
+    const bool blue_first = layout == PixelLayout::kBgr24 || layout == PixelLayout::kBgra32;
+    for (vector_kernels::Choice choice : choices) {
+      vector_kernels::choose(choice);
+      vpImage<unsigned char> grey(static_cast<unsigned>(height), static_cast<unsigned>(width), 7);
+      convert_to_grey(FrameView{bytes.data(), width, height, row_bytes, layout}, box, grey);
+      int wrong = 0;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+          const uint8_t* p = bytes.data() + static_cast<size_t>(y) * row_bytes + step * x;
+          const bool inside = y >= box.top && y < box.bottom && x >= box.left && x < box.right;
+          const unsigned char want = !inside      ? 7
+                                     : blue_first ? vpImageConvert::rgbToGrey(p[2], p[1], p[0])
+                                                  : vpImageConvert::rgbToGrey(p[0], p[1], p[2]);
+          if (grey[y][x] != want) ++wrong;
+        }
+      TEST_EQUAL((std::string(layout_name(layout)) + ", kernel choice " + std::to_string(static_cast<int>(choice)) +
+                  ": pixels whose grey differs from vpImageConvert's").c_str(),
+                 wrong, 0);
+    }
+  }
+  vector_kernels::choose(vector_kernels::Choice::kWidest);
+}
+
 }  // namespace
 
 static void test_frame_layouts() {
   channels_in_their_order();
+  every_kernel_gives_each_pixels_grey();
   same_poses_in_every_layout(12);
   bad_views_are_refused();
 }

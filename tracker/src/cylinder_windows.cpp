@@ -25,19 +25,19 @@ bool cylinder_rim_boxes(const EdgeModel& model, int cylinder, const PinholeCamer
   const real lo_x = -margin, hi_x = real(camera.width - 1) + margin;
   const real lo_y = -margin, hi_y = real(camera.height - 1) + margin;
   real min_x[2] = {hi_x, hi_x}, min_y[2] = {hi_y, hi_y}, max_x[2] = {lo_x, lo_x}, max_y[2] = {lo_y, lo_y};
-  for (const SurfaceTriangle& t : model.cylinder_surface) {
-    if (t.cylinder != cylinder) continue;
-    for (const Vec3& corner : t.corners) {
-      const Vec3 in_camera = camera_from_model * corner;
-      if (!(in_camera.z > near)) return false;
-      const Vec2 p = camera.project(in_camera);
-      if (p.x < lo_x || p.x > hi_x || p.y < lo_y || p.y > hi_y) return false;
-      const int end = real(2) * dot(corner - c.axis_a, axis) > length2 ? 1 : 0;
-      min_x[end] = std::min(min_x[end], p.x);
-      max_x[end] = std::max(max_x[end], p.x);
-      min_y[end] = std::min(min_y[end], p.y);
-      max_y[end] = std::max(max_y[end], p.y);
-    }
+  // Each corner of the cylinder's facets once: its rims' points (EdgeModel::cylinder_points).
+  const size_t rim_points = 2 * (kCylinderSides + 1), first = static_cast<size_t>(cylinder) * rim_points;
+  for (size_t i = first; i < first + rim_points; ++i) {
+    const Vec3& corner = model.cylinder_points[i];
+    const Vec3 in_camera = camera_from_model * corner;
+    if (!(in_camera.z > near)) return false;
+    const Vec2 p = camera.project(in_camera);
+    if (p.x < lo_x || p.x > hi_x || p.y < lo_y || p.y > hi_y) return false;
+    const int end = real(2) * dot(corner - c.axis_a, axis) > length2 ? 1 : 0;
+    min_x[end] = std::min(min_x[end], p.x);
+    max_x[end] = std::max(max_x[end], p.x);
+    min_y[end] = std::min(min_y[end], p.y);
+    max_y[end] = std::max(max_y[end], p.y);
   }
   for (int end = 0; end < 2; ++end) {
     boxes[end].x0 = std::max(0, static_cast<int>(floor(min_x[end])) - 1);

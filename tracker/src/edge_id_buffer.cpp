@@ -268,13 +268,38 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
     r.nearest_facing = real(0);
   }
   const Vec3 camera_centre = camera_centre_in_model(camera_from_model);
+  // Each rim point moved, projected and rounded once for the facets that share it: the numbers
+  // clip_and_project_triangle gives each facet corner. A facet whose corners are in front of the
+  // near plane and on the guard band is not clipped: its corners are theirs as they are.
+  const size_t points = model.cylinder_points.size();
+  cylinder_points_.resize(points);
+  for (size_t i = 0; i < points; ++i) {
+    CylinderPoint& p = cylinder_points_[i];
+    p.in_camera = camera_from_model * model.cylinder_points[i];
+    p.in_front = in_front_of_near_plane(&p.in_camera, 1);
+    p.on_band = false;
+    if (!p.in_front) continue;
+    p.projected = project_vertex(camera_, p.in_camera);
+    p.on_band = on_guard_band(camera_, p.projected);
+    if (p.on_band) p.screen = to_screen(p.projected);
+  }
   facets_.resize(model.cylinder_surface.size());
   for (size_t k = 0; k < model.cylinder_surface.size(); ++k) {
     const SurfaceTriangle& t = model.cylinder_surface[k];
     ProjectedFacet& f = facets_[k];
-    const Vec3 corners[3] = {camera_from_model * t.corners[0], camera_from_model * t.corners[1],
-                             camera_from_model * t.corners[2]};
-    f.count = clip_and_project_triangle(camera_, corners, f.polygon);
+    const CylinderPoint* corner[3] = {&cylinder_points_[static_cast<size_t>(t.points[0])],
+                                      &cylinder_points_[static_cast<size_t>(t.points[1])],
+                                      &cylinder_points_[static_cast<size_t>(t.points[2])]};
+    if (corner[0]->on_band && corner[1]->on_band && corner[2]->on_band) {
+      for (int i = 0; i < 3; ++i) f.polygon[i] = corner[i]->screen;
+      f.count = 3;
+    } else if (corner[0]->in_front && corner[1]->in_front && corner[2]->in_front) {
+      const ProjectedVertex projected[3] = {corner[0]->projected, corner[1]->projected, corner[2]->projected};
+      f.count = clip_projected_triangle(camera_, projected, f.polygon);
+    } else {
+      const Vec3 corners[3] = {corner[0]->in_camera, corner[1]->in_camera, corner[2]->in_camera};
+      f.count = clip_and_project_triangle(camera_, corners, f.polygon);
+    }
     RimBoxes& r = rim_boxes_[static_cast<size_t>(t.cylinder)];
     if (!r.valid) continue;
     const ScreenVertex &a = f.polygon[0], &b = f.polygon[1], &c = f.polygon[2];
@@ -405,7 +430,8 @@ size_t EdgeIdBuffer::image_bytes() const { return capacity_bytes(narrow_ids_) + 
 size_t EdgeIdBuffer::line_bytes() const {
   return capacity_bytes(line_depth_) + capacity_bytes(line_owner_) + capacity_bytes(points_in_camera_) +
          capacity_bytes(edge_colours_) + capacity_bytes(curved_) + capacity_bytes(front_) + capacity_bytes(segments_) +
-         capacity_bytes(occluders_) + capacity_bytes(rim_boxes_) + capacity_bytes(facets_);
+         capacity_bytes(occluders_) + capacity_bytes(rim_boxes_) + capacity_bytes(facets_) +
+         capacity_bytes(cylinder_points_);
 }
 
 int EdgeIdBuffer::edge_at(int x, int y) const {

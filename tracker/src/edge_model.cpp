@@ -134,15 +134,19 @@ Result<bool> add_cylinders(const Polygons& polygons, const std::string& source, 
     if (norm(axis) == real(0)) return Error{source, 0, label + " has its two axis points at the same place"};
     const Vec3 d = normalized(axis);
     const Vec3 u = perpendicular(d), v = cross(d, u);
+    // The rims' points once each, base then top (the last of each at angle 2 pi, as the last
+    // facet's corner always was), and the facets' corners named by their indices.
+    const auto angle = [pi](int k) { return real(2 * k) * pi / real(kCylinderSides); };
+    const int base = static_cast<int>(model.cylinder_points.size()), top = base + kCylinderSides + 1;
+    for (int k = 0; k <= kCylinderSides; ++k)
+      model.cylinder_points.push_back(on_circle(cylinder.axis_a, u, v, record.radius, angle(k)));
+    for (int k = 0; k <= kCylinderSides; ++k) model.cylinder_points.push_back(model.cylinder_points[base + k] + axis);
+    const std::vector<Vec3>& at = model.cylinder_points;
     for (int k = 0; k < kCylinderSides; ++k) {
-      const real a0 = real(2 * k) * pi / real(kCylinderSides), a1 = real(2 * (k + 1)) * pi / real(kCylinderSides);
-      const Vec3 b0 = on_circle(cylinder.axis_a, u, v, record.radius, a0);
-      const Vec3 b1 = on_circle(cylinder.axis_a, u, v, record.radius, a1);
-      const Vec3 t0 = b0 + axis, t1 = b1 + axis;
-      const Vec3 outward = normalized(on_circle(Vec3{}, u, v, real(1), (a0 + a1) / real(2)));
-      const int index = static_cast<int>(c);
-      model.cylinder_surface.push_back({{b0, b1, t1}, outward, index});
-      model.cylinder_surface.push_back({{b0, t1, t0}, outward, index});
+      const Vec3 outward = normalized(on_circle(Vec3{}, u, v, real(1), (angle(k) + angle(k + 1)) / real(2)));
+      const int index = static_cast<int>(c), b0 = base + k, b1 = b0 + 1, t0 = top + k, t1 = t0 + 1;
+      model.cylinder_surface.push_back({{at[b0], at[b1], at[t1]}, outward, index, {b0, b1, t1}});
+      model.cylinder_surface.push_back({{at[b0], at[t1], at[t0]}, outward, index, {b0, t1, t0}});
     }
     model.cylinders.push_back(cylinder);
   }

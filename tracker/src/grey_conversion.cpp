@@ -5,19 +5,32 @@
 #include <algorithm>
 #include <cstring>
 
+#include "real/vector_kernels.h"
 #include "visp3/core/vpImageConvert.h"
 
 namespace edgetrack {
 namespace {
 
 /// Rows of colour pixels of kBytes bytes, red at byte kRed, green at 1, blue at kBlue (a fourth
-/// byte, alpha, is not read).
+/// byte, alpha, is not read). The row loop is a vector kernel (real/vector_kernels.h): integer
+/// sums, so every choice gives vpImageConvert::rgbToGrey's byte; a size_t index, since an
+/// unsigned int one may wrap and keeps GCC from vectorising the interleaved loads.
 template <int kBytes, int kRed, int kBlue>
 void colour_rows(const uint8_t* in, unsigned int in_step, unsigned char* out, unsigned int out_step, int rows,
                  unsigned int count) {
-  for (; rows > 0; --rows, in += in_step, out += out_step)
-    for (unsigned int k = 0; k < count; ++k)
-      out[k] = vpImageConvert::rgbToGrey(in[kBytes * k + kRed], in[kBytes * k + 1], in[kBytes * k + kBlue]);
+  // The lambda's captures are copied to locals first: a byte store may alias the closure.
+  vector_kernels::run([&]() __attribute__((always_inline)) {
+    const uint8_t* const first_in = in;
+    unsigned char* const first_out = out;
+    const size_t pixels = count, in_bytes = in_step, out_bytes = out_step;
+    const int row_count = rows;
+    for (int r = 0; r < row_count; ++r) {
+      const uint8_t* __restrict row = first_in + static_cast<size_t>(r) * in_bytes;
+      unsigned char* __restrict grey = first_out + static_cast<size_t>(r) * out_bytes;
+      for (size_t k = 0; k < pixels; ++k)
+        grey[k] = vpImageConvert::rgbToGrey(row[kBytes * k + kRed], row[kBytes * k + 1], row[kBytes * k + kBlue]);
+    }
+  });
 }
 
 /// Rows of `count` pixels, from the first pixel to be converted of each, `rows` times, the rows

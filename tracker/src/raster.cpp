@@ -11,20 +11,7 @@ namespace {
 
 /// Nothing nearer than 1 cm is drawn.
 const real kNear = real(0.01);
-/// Triangles are clipped to the screen grown by this many pixels on each side, which keeps
-/// every Q4 coordinate under 2^15 for images up to 1920 pixels wide.
-constexpr int kGuardPixels = 64;
-
 using Projected = ProjectedVertex;
-
-ScreenVertex to_screen(const Projected& p) {
-  using std::floor;
-  const real half = real(0.5);
-  const real sub = real(1 << kSubpixelBits);
-  const real wscale = real(1 << kInverseDepthBits);
-  return {static_cast<int32_t>(floor(p.x * sub + half)), static_cast<int32_t>(floor(p.y * sub + half)),
-          static_cast<int32_t>(floor(p.w * wscale + half))};
-}
 
 Vec3 lerp(const Vec3& a, const Vec3& b, const real& t) { return a + t * (b - a); }
 Projected lerp(const Projected& a, const Projected& b, const real& t) {
@@ -52,9 +39,7 @@ int clip_to_guard_band(const PinholeCamera& camera, ProjectedVertex (&a)[kMaxCli
   const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
   const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
   bool on_screen = true;
-  for (int i = 0; i < n3 && on_screen; ++i)
-    on_screen = a[i].x - lo_x >= real(0) && hi_x - a[i].x >= real(0) && a[i].y - lo_y >= real(0) &&
-                hi_y - a[i].y >= real(0);
+  for (int i = 0; i < n3 && on_screen; ++i) on_screen = on_guard_band(camera, a[i]);
   int n = n3;
   if (!on_screen) {
     n = clip_pass(a, n, b, [&](const Projected& v) { return v.x - lo_x; });

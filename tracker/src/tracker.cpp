@@ -186,7 +186,7 @@ namespace {
 size_t model_bytes(const EdgeModel& model) {
   size_t bytes = capacity_bytes(model.vertices) + capacity_bytes(model.faces) + capacity_bytes(model.triangles) +
                  capacity_bytes(model.edges) + capacity_bytes(model.cylinders) + capacity_bytes(model.circles) +
-                 capacity_bytes(model.cylinder_surface);
+                 capacity_bytes(model.cylinder_surface) + capacity_bytes(model.cylinder_points);
   for (const Face& face : model.faces) bytes += capacity_bytes(face.vertices);
   for (const Circle& circle : model.circles) bytes += capacity_bytes(circle.rim);
   return bytes;

@@ -42,11 +42,17 @@ current=$(host_edgetrack "working tree")
 awk -v ecm="$(sed -n '/<ecm>/,/<\/ecm>/p' "$mbt/cube.xml")" '{ print } /<conf>/ { print ecm }' \
   "$work/cube60/camera.xml" >"$work/cube60/visp.xml"
 
+"$current" synth --out "$work/wood_toy" --model "$top/data/models/wood_toy.cao" >/dev/null
+awk -v ecm="$(sed -n '/<ecm>/,/<\/ecm>/p' "$mbt/cube.xml")" '{ print } /<conf>/ { print ecm }' \
+  "$work/wood_toy/camera.xml" >"$work/wood_toy/visp.xml"
+
 runs=("mbt/cube.cao 640x480" "mbt/cube.cao QVGA" "mbt/cube_and_cylinder.cao 640x480" "mbt/cube_and_cylinder.cao QVGA"
-      "generated 60 mm cube QVGA")
+      "generated 60 mm cube QVGA" "generated wood toy QVGA")
 # run_args RUN: the track arguments of one run.
 run_args() {
   case "$1" in
+    "generated wood toy"*) echo "--model $top/data/models/wood_toy.cao --camera $work/wood_toy/visp.xml" \
+      "--init-pose $work/wood_toy/first.pos --images $work/wood_toy/frames/frame%04d.ppm" ;;
     generated*) echo "--model $top/data/models/cube60.cao --camera $work/cube60/visp.xml --init-pose $work/cube60/first.pos" \
       "--images $work/cube60/frames/frame%04d.ppm" ;;
     *) local model=${1#mbt/} && model=${model%% *}
@@ -75,7 +81,9 @@ echo "\`tests/bench/host_profile/results.sh\` (revisions compared: ${revisions[*
 echo
 echo "valgrind callgrind inside Tracker::track, \`edgetrack track\` on the first $frames frames: ViSP's mbt/cube"
 echo "with its cube.xml (step 4 px, range 7; QVGA: \`--downscale 2\`, step and range halved), and the generated"
-echo "QVGA cube (\`edgetrack synth\`, RGB frames) with cube.xml's <ecm>. Per step: the inclusive cost of the"
+echo "QVGA cube and wood toy (\`edgetrack synth\`, RGB frames, converted on demand inside Tracker::track;"
+echo "\`edgetrack compare\` hands both trackers grey frames instead, so its times hold no grey scaling) with"
+echo "cube.xml's <ecm>. Per step: the inclusive cost of the"
 echo "calls Tracker::track makes for it (visible edges: Edge-ID rendering, sampling, visibility, contrast"
 echo "references; grey scaling; ME: the moving-edge search and refinement; pose: the robust LM solve);"
 echo "other: the frame's status and prediction, and Tracker::track's own code."
@@ -85,7 +93,37 @@ echo "|---|---|---:|---:|---:|---:|---:|---:|"
 for run in "${runs[@]}"; do
   for label in "${labels[@]}"; do echo "| $run | $label | ${step_row[$label.$run]} |"; done
 done
-for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480"; do
+echo
+echo "### Edge-ID's render per frame, working tree: its parts"
+echo
+echo "Inclusive instructions per frame of the calls EdgeIdBuffer::render makes (edge_id_buffer.h), and the"
+echo "render's share of Tracker::track: the surfaces under the lines (find_nearest_surfaces), the cylinders'"
+echo "facets projected (collect_cylinder_sides), the faces' triangles, the lines, drawing them and clearing"
+echo "the last frame's."
+echo
+echo "| sequence | nearest surfaces | cylinder sides | faces | lines | draw | clear | whole render | share of the frame |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+for run in "${runs[@]}"; do
+  key="working_tree.${run//[ \/]/_}"
+  callgrind_annotate --tree=calling --inclusive=yes "$work/$key.cg" 2>/dev/null | awk -v f="$frames" -v run="$run" '
+    /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); frame = $1 }
+    /\*  .*edgetrack::EdgeIdBuffer::render\(/ { gsub(",", "", $1); whole = $1; go = 1; next }
+    go && /^ *$/ { go = 0 }
+    go && / >   / {
+      c = $1; gsub(",", "", c)
+      if ($0 ~ /find_nearest_surfaces/) part["n"] += c
+      else if ($0 ~ /collect_cylinder_sides/) part["y"] += c
+      else if ($0 ~ /collect_faces/) part["f"] += c
+      else if ($0 ~ /collect_segments/) part["l"] += c
+      else if ($0 ~ /draw_segments/) part["d"] += c
+      else if ($0 ~ /clear_lines/) part["c"] += c
+    }
+    END {
+      printf "| %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f %% |\n", run, part["n"] / f, part["y"] / f,
+        part["f"] / f, part["l"] / f, part["d"] / f, part["c"] / f, whole / f, 100 * whole / frame
+    }'
+done
+for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480" "generated wood toy QVGA"; do
   key="working_tree.${run//[ \/]/_}"
   total=$(callgrind_annotate "$work/$key.cg" 2>/dev/null | sed -n 's/^ *\([0-9,]*\) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
   echo

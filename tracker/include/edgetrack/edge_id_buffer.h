@@ -138,6 +138,16 @@ class EdgeIdBuffer {
   };
   std::vector<RimBoxes> rim_boxes_;
   std::vector<ProjectedFacet> facets_;  ///< per model.cylinder_surface triangle
+  /// A point of EdgeModel::cylinder_points this frame: in the camera frame, projected when in front
+  /// of the near plane, and rounded when on the guard band (raster.h).
+  struct CylinderPoint {
+    Vec3 in_camera;
+    ProjectedVertex projected;
+    ScreenVertex screen;
+    bool in_front = false;
+    bool on_band = false;
+  };
+  std::vector<CylinderPoint> cylinder_points_;
 };
 
 }  // namespace edgetrack

@@ -72,6 +72,7 @@ struct SurfaceTriangle {
   Vec3 corners[3];  ///< model frame
   Vec3 normal;      ///< outward unit normal of the facet
   int cylinder = 0;
+  int points[3] = {0, 0, 0};  ///< the corners' indices in EdgeModel::cylinder_points
 };
 
 /// A polygonal surface model together with its tracked edges and curved primitives.
@@ -86,6 +87,9 @@ struct EdgeModel {
   std::vector<Cylinder> cylinders;
   std::vector<Circle> circles;
   std::vector<SurfaceTriangle> cylinder_surface;  ///< every cylinder's side, kCylinderSides facets each
+  /// The corners of cylinder_surface once each (a renderer moves and projects each once a frame):
+  /// per cylinder, kCylinderSides + 1 points around its base rim, then as many around its top.
+  std::vector<Vec3> cylinder_points;
   /// True when every face boundary segment is shared by exactly two faces that run it in
   /// opposite directions: a closed, consistently wound surface, whose back faces can never be
   /// seen, so renderers may skip them.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <type_traits>
@@ -51,6 +52,25 @@ ProjectedVertex project_vertex(const PinholeCamera& camera, const Vec3& point);
 /// clip_and_project_triangle for a triangle wholly in front of the near plane, already projected.
 int clip_projected_triangle(const PinholeCamera& camera, const ProjectedVertex (&corners)[3],
                             ScreenVertex (&out)[kMaxClippedVertices]);
+/// Triangles are clipped to the screen grown by this many pixels on each side, which keeps
+/// every Q4 coordinate under 2^15 for images up to 1920 pixels wide.
+constexpr int kGuardPixels = 64;
+/// Whether `p` lies on the screen grown by the guard band: a polygon whose corners all do is not
+/// clipped, and its corners are to_screen's.
+inline bool on_guard_band(const PinholeCamera& camera, const ProjectedVertex& p) {
+  const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
+  const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
+  return p.x - lo_x >= real(0) && hi_x - p.x >= real(0) && p.y - lo_y >= real(0) && hi_y - p.y >= real(0);
+}
+/// `p` rounded to the rasteriser's integers (Q4 pixels, Q20 1/Z).
+inline ScreenVertex to_screen(const ProjectedVertex& p) {
+  using std::floor;
+  const real half = real(0.5);
+  const real sub = real(1 << kSubpixelBits);
+  const real wscale = real(1 << kInverseDepthBits);
+  return {static_cast<int32_t>(floor(p.x * sub + half)), static_cast<int32_t>(floor(p.y * sub + half)),
+          static_cast<int32_t>(floor(p.w * wscale + half))};
+}
 /// clip_and_project_segment for a segment wholly in front of the near plane, already projected.
 bool clip_projected_segment(const PinholeCamera& camera, const ProjectedVertex& pa, const ProjectedVertex& pb,
                             ScreenVertex& sa, ScreenVertex& sb);
