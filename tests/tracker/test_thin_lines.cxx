@@ -8,6 +8,7 @@
 
 #include "edgetrack/thin_lines.h"
 #include "edgetrack/tracker_params.h"
+#include "edgetrack/visp_config.h"
 #include "run_sequence.h"
 #include "testlib/testlib_test.h"
 
@@ -86,6 +87,18 @@ static void test_thin_line_settings() {
   TEST("beyond_px=9 is refused", set_thin_line_param(p, "beyond_px", 9).empty(), false);
   TEST("an unknown name is refused, and named",
        set_thin_line_param(p, "width", 1).find("'width'") != std::string::npos, true);
+  TrackerConfig config;
+  const Result<ConfigNotes> read = apply_visp_config_text(
+      "<conf>\n<edgetrack><thin_lines><enabled>1</enabled><return_share>0.4</return_share></thin_lines></edgetrack>\n</conf>",
+      "lines.xml", config);
+  TEST("the XML block is read", read.ok() && config.params.thin_lines.enabled, true);
+  TEST_NEAR("with its return share", static_cast<double>(config.params.thin_lines.return_share), 0.4, 1e-6);
+  const Result<ConfigNotes> refused = apply_visp_config_text(
+      "<conf>\n<edgetrack><thin_lines><beyond_px>0</beyond_px></thin_lines></edgetrack>\n</conf>", "lines.xml", config);
+  TEST("a value outside its limits is refused at its line, naming the element",
+       !refused.ok() && refused.error().text().find("lines.xml:2") != std::string::npos &&
+           refused.error().text().find("<edgetrack><thin_lines><beyond_px>") != std::string::npos,
+       true);
   TrackerParams params;
   params.thin_lines.return_share = real(1.5);
   TEST("check_tracker_params refuses a return share above 1", check_tracker_params(params).has_value(), true);
