@@ -79,7 +79,7 @@ static void test_thin_line_settings() {
   TEST("off by default", p.enabled, false);
   TEST("enabled=1 is taken", set_thin_line_param(p, "enabled", 1).empty() && p.enabled, true);
   TEST("return_share=0.3 is taken", set_thin_line_param(p, "return_share", 0.3).empty(), true);
-  TEST_NEAR("to its value", static_cast<double>(p.return_share), 0.3, 1e-6);
+  TEST_NEAR("to its value", static_cast<double>(p.return_share), 0.3, 1e-4);  // S47.16 holds 0.3 within 2^-17
   TEST("dark_px=3 is taken", set_thin_line_param(p, "dark_px", 3).empty() && p.dark_px == 3, true);
   TEST("enabled=2 is refused", set_thin_line_param(p, "enabled", 2).empty(), false);
   TEST("return_share=0 is refused", set_thin_line_param(p, "return_share", 0).empty(), false);
@@ -92,7 +92,7 @@ static void test_thin_line_settings() {
       "<conf>\n<edgetrack><thin_lines><enabled>1</enabled><return_share>0.4</return_share></thin_lines></edgetrack>\n</conf>",
       "lines.xml", config);
   TEST("the XML block is read", read.ok() && config.params.thin_lines.enabled, true);
-  TEST_NEAR("with its return share", static_cast<double>(config.params.thin_lines.return_share), 0.4, 1e-6);
+  TEST_NEAR("with its return share", static_cast<double>(config.params.thin_lines.return_share), 0.4, 1e-4);
   const Result<ConfigNotes> refused = apply_visp_config_text(
       "<conf>\n<edgetrack><thin_lines><beyond_px>0</beyond_px></thin_lines></edgetrack>\n</conf>", "lines.xml", config);
   TEST("a value outside its limits is refused at its line, naming the element",
