@@ -116,8 +116,9 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
   return pose.value().camera_from_model;
 }
 
-/// --status NAME=VALUE,...: each setting over `status`, checked.
-Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParams& status) {
+/// OPTION NAME=VALUE,...: each setting through `set`, which returns what is wrong or nothing.
+template <typename Set>
+Result<bool> apply_named_settings(const char* option, const std::string& text, Set set) {
   size_t start = 0;
   while (start < text.size()) {
     size_t end = text.find(',', start);
@@ -127,13 +128,27 @@ Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParam
     char* stop = nullptr;
     const double value = equals == std::string::npos ? 0 : std::strtod(item.c_str() + equals + 1, &stop);
     if (equals == std::string::npos || equals + 1 == item.size() || *stop != '\0')
-      return Error{"", 0, "--status takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
-    std::string problem = edgetrack::set_status_param(status, item.substr(0, equals), value);
-    if (problem.empty()) problem = edgetrack::check_status_params(status);
-    if (!problem.empty()) return Error{"", 0, "--status " + item + ": " + problem};
+      return Error{"", 0, std::string(option) + " takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
+    const std::string problem = set(item.substr(0, equals), value);
+    if (!problem.empty()) return Error{"", 0, std::string(option) + " " + item + ": " + problem};
     start = end + 1;
   }
   return true;
+}
+
+/// --status NAME=VALUE,...: each setting over `status`, checked.
+Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParams& status) {
+  return apply_named_settings("--status", text, [&status](const std::string& name, double value) {
+    std::string problem = edgetrack::set_status_param(status, name, value);
+    return problem.empty() ? edgetrack::check_status_params(status) : problem;
+  });
+}
+
+/// --thin-lines NAME=VALUE,...: each setting over `lines`, checked.
+Result<bool> apply_thin_lines_option(const std::string& text, edgetrack::ThinLineParams& lines) {
+  return apply_named_settings("--thin-lines", text, [&lines](const std::string& name, double value) {
+    return edgetrack::set_thin_line_param(lines, name, value);
+  });
 }
 
 /// What the command line asks for.
@@ -207,6 +222,9 @@ const CommandLine& track_command_line() {
            std::to_string(edgetrack::TrackerParams{}.hypotheses)},
           {"--status", "NAME=VALUE[,NAME=VALUE...]",
            "status rule settings over the configuration's, named as in its <status> block (docs/APP.md)", ""},
+          {"--thin-lines", "NAME=VALUE[,NAME=VALUE...]",
+           "the thin-line test's settings over the configuration's, named as in its <edgetrack><thin_lines> block "
+           "(docs/APP.md); enabled=0 turns it off", ""},
           {"--quiet", "", "no progress line", ""},
       },
       {"--model", "--camera"},
@@ -287,6 +305,8 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   params.hypotheses = request.hypotheses;
   auto status = apply_status_option(a.text("--status"), params.status);
   if (!status.ok()) return report("track", status.error()) + 1;
+  auto thin_lines = apply_thin_lines_option(a.text("--thin-lines"), params.thin_lines);
+  if (!thin_lines.ok()) return report("track", thin_lines.error()) + 1;
   downscale_settings(params, request.factor);  // in pixels of the input frames
   if (auto refused = edgetrack::check_tracker_params(params))
     return report("track", {"--downscale " + std::to_string(request.factor), 0, refused->message});

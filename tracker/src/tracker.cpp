@@ -17,6 +17,7 @@
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/status_statistics.h"
+#include "edgetrack/thin_lines.h"
 #include "edgetrack/tracker_inputs.h"
 #include "real/sum_of_products.h"
 #include "visp3/core/vpImage.h"
@@ -333,6 +334,8 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   // Until a frame is trusted after the start, the contrasts where the given pose puts the edges.
   if (!started_ && !guessing) contrasts_at_points(grey, visible_, me_, references_);
   search_moving_edges(grey, visible_, me_, range, params_.hypotheses, matches_, &references_, &borrowed_);
+  // Before the pose step: a thin dark line beside an edge passes the contrast test (#27).
+  if (params_.thin_lines.enabled) reject_thin_line_matches(grey, matches_, params_.thin_lines);
   end(Step::kMovingEdges);
   clock.lap(Step::kMovingEdges, result);
   begin(Step::kPose);

@@ -137,6 +137,11 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
     return SettingProblem{"", "the motion's recovery and start frames must be at least 0"};
   const std::string status = check_status_params(params.status);
   if (!status.empty()) return SettingProblem{"", status};
+  const ThinLineParams& lines = params.thin_lines;
+  if (lines.dark_px < 1 || lines.dark_px > 8 || lines.beyond_px < 1 || lines.beyond_px > 8)
+    return SettingProblem{"", "the thin-line test's dark_px and beyond_px must be 1 to 8 pixels"};
+  if (!(lines.return_share > real(0) && lines.return_share <= real(1)))
+    return SettingProblem{"", "the thin-line test's return_share must be above 0 and at most 1"};
   return std::nullopt;
 }
 

@@ -227,12 +227,25 @@ class Reading {
     return true;
   }
 
-  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status>.
+  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status> and <thin_lines>.
   Result<bool> edgetrack_block(const XmlElement& block) {
     for (const XmlElement& e : block.children) {
-      if (e.name != "status") continue;
-      auto read = status(e, "<edgetrack><status>");
+      Result<bool> read = true;
+      if (e.name == "status") read = status(e, "<edgetrack><status>");
+      else if (e.name == "thin_lines") read = thin_lines(e, "<edgetrack><thin_lines>");
       if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  /// The thin-line test's settings (ThinLineParams), each element named as its field.
+  Result<bool> thin_lines(const XmlElement& block, const std::string& where_block) {
+    for (const XmlElement& e : block.children) {
+      const std::string where = where_block + "<" + e.name + ">";
+      auto got = number(e, where);
+      if (!got.ok()) return got.error();
+      const std::string problem = set_thin_line_param(config_.params.thin_lines, e.name, got.value());
+      if (!problem.empty()) return bad(e, where, "'" + e.text + "' is refused: " + problem);
     }
     return true;
   }

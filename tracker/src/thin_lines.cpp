@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "edgetrack/thin_lines.h"
+
+#include <algorithm>
+
+namespace edgetrack {
+namespace {
+
+/// The grey level at the pixel holding `at` + k `step`, or -1 outside the image.
+int level(const vpImage<unsigned char>& grey, const Vec2& at, const Vec2& step, int k) {
+  const real x = at.x + real(k) * step.x, y = at.y + real(k) * step.y;
+  if (x < real(0) || y < real(0)) return -1;
+  const unsigned j = static_cast<unsigned>(static_cast<int>(x)), i = static_cast<unsigned>(static_cast<int>(y));
+  if (i >= grey.getHeight() || j >= grey.getWidth()) return -1;
+  return grey[i][j];
+}
+
+}  // namespace
+
+bool on_thin_line(const vpImage<unsigned char>& grey, const Vec2& at, const Vec2& normal, bool brighter_along_normal,
+                  const ThinLineParams& params) {
+  const Vec2 darker = brighter_along_normal ? Vec2{-normal.x, -normal.y} : normal;
+  const int bright = level(grey, at, darker, -2);
+  if (bright < 0) return false;
+  // The darkest pixel within the line's width, then the brightest within as much again beyond it.
+  int dark = 256, dark_k = 0;
+  for (int k = 1; k <= params.dark_px; ++k) {
+    const int v = level(grey, at, darker, k);
+    if (v < 0) return false;
+    if (v < dark) dark = v, dark_k = k;
+  }
+  int beyond = -1;
+  for (int k = dark_k + 1; k <= dark_k + params.beyond_px; ++k) beyond = std::max(beyond, level(grey, at, darker, k));
+  if (beyond < 0 || bright <= dark) return false;
+  return real(beyond - dark) >= params.return_share * real(bright - dark);
+}
+
+std::string set_thin_line_param(ThinLineParams& p, const std::string& name, double value) {
+  const bool whole = value == static_cast<double>(static_cast<long>(value));
+  if (name == "enabled") {
+    if (value != 0 && value != 1) return "enabled must be 0 or 1";
+    p.enabled = value == 1;
+  } else if (name == "dark_px" || name == "beyond_px") {
+    if (!whole || value < 1 || value > 8) return name + " must be a whole number of pixels from 1 to 8";
+    (name == "dark_px" ? p.dark_px : p.beyond_px) = static_cast<int>(value);
+  } else if (name == "return_share") {
+    if (!(value > 0 && value <= 1)) return "return_share must be above 0 and at most 1";
+    p.return_share = real(value);  // set-up time conversion
+  } else {
+    return "'" + name + "' is not a thin-line setting (enabled, dark_px, beyond_px, return_share)";
+  }
+  return "";
+}
+
+int reject_thin_line_matches(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches,
+                             const ThinLineParams& params) {
+  int changed = 0;
+  size_t kept = 0;
+  for (size_t m = 0; m < matches.size(); ++m) {
+    EdgeMatch match = matches[m];
+    const bool brighter_along_normal = match.contrast < real(0);  // the mask response is positive where the image darkens along the normal
+    const bool line = on_thin_line(grey, match.found, match.point.normal, brighter_along_normal, params);
+    if (line) {
+      ++changed;
+      int a = 0;
+      while (a < match.alternative_count &&
+             on_thin_line(grey, match.alternatives[a], match.point.normal, brighter_along_normal, params))
+        ++a;
+      if (a == match.alternative_count) continue;
+      match.found = match.alternatives[a];
+      std::copy(match.alternatives + a + 1, match.alternatives + match.alternative_count, match.alternatives);
+      match.alternative_count -= a + 1;
+    }
+    matches[kept++] = match;
+  }
+  matches.resize(kept);
+  return changed;
+}
+
+}  // namespace edgetrack
