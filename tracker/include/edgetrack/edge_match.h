@@ -13,8 +13,9 @@ struct EdgeMatch {
   ControlPoint point;
   Vec2 found;            ///< the image edge point q_i: the strongest edge along the normal, pixels
   bool outlier = false;  ///< set by the pose step when it gave the match no weight (ViSP's M_ESTIMATOR)
-  /// The mask response at `found` with the mask oriented along the normal (positive: brighter
-  /// on the normal's side): the edge's contrast and polarity, for the next frame's contrast test.
+  /// The mask response at `found` with the mask oriented along the normal (positive: the image
+  /// darkens along the normal, as thin_lines.cpp reads it): the edge's contrast and polarity, for
+  /// the next frame's contrast test.
   real contrast{0};
   /// Other local maxima of the moving-edge likelihood along the normal, weaker ones later.
   Vec2 alternatives[kMaxHypotheses - 1];
