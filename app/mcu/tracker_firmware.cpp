@@ -21,6 +21,7 @@
 #include "edgetrack/tracker.h"
 #include "edgetrack/visp_config.h"
 #include "board.h"
+#include "count_markers.h"
 
 namespace {
 
@@ -204,7 +205,9 @@ int main(int argc, char** argv) {
       edgetrack_heap_lock();
       calls_at_lock = edgetrack_allocation_calls();
     }
+    edgetrack_count_begin();  // the tracker's share of the frame (toolchains/qemu/count-insns.sh)
     auto result = tracker->track(frame);
+    edgetrack_count_end();
     if (!result.ok()) return fail(Error{name, 0, result.error().message}.text());
     if (result.value().reason == edgetrack::StatusReason::kOverLimit)
       std::fprintf(stderr, "tracker-firmware: %s: lost: %s (%d)\n", name, edgetrack::reason_name(result.value().reason),
