@@ -221,3 +221,50 @@ settings_section() {
   echo "lines stay the same."
 }
 settings_section
+
+# --- Templates in flash and --init-auto on the microcontroller ---
+
+templates_section() {
+  local made flash_bytes image=seq/frames/frame0000.pgm
+  made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --out default.templates \
+         --cxx default.cpp)
+  local count features
+  count=$(sed -n 's/^templates: \([0-9]*\) templates.*/\1/p' <<<"$made")
+  features=$(sed -n 's/.*distances, \([0-9]*\) features.*/\1/p' <<<"$made")
+  # The source as the firmware would compile it (the tree's flags and real): its constant data.
+  arm-none-eabi-g++ -std=c++17 -O2 -mcpu=cortex-m3 -mthumb -mfloat-abi=soft -fno-exceptions -fno-rtti -D_GNU_SOURCE \
+    -Wno-psabi -I"$top/tracker/include" -I"$top/ports/real/include" -I"$mcu_dir/ports/real/include" \
+    -c default.cpp -o default.o
+  flash_bytes=$(section default.o .rodata)
+  EDGETRACK_BOARD_REPORT=1 EDGETRACK_MCU_FIRMWARE=$firmware "$top/toolchains/mcu/edgetrack-mcu.sh" detect \
+    --model "$model" --camera seq/camera.xml --image "$image" --templates default.templates >detect.txt 2>detect.board || true
+  EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out detect.count --windows detect.windows \
+    "$firmware" detect --model "$model" --camera seq/camera.xml --image "$image" --templates default.templates \
+    >/dev/null 2>&1 || true
+  local d_heap d_insns
+  d_heap=$(board_value "heap high-water" detect.board)
+  d_insns=$(awk '{ sub("insns=", "", $3); print $3 }' detect.windows | head -n 1)
+  echo
+  echo "### Templates in flash and \`--init-auto\` on the microcontroller"
+  echo
+  echo "\`edgetrack templates --cxx\` writes the detector's templates as a C++ source of constant data, which"
+  echo "\`constant_template_set\` reads in place (docs/MCU.md). For the cube at QVGA with the default view range"
+  echo "(the one \`--init-auto\` makes), compiled for the Cortex-M3 as the firmware would, and the whole command"
+  echo "line's \`edgetrack detect\` with the same templates from their file on the first generated frame"
+  echo "(found: $(grep -q 'found=1' detect.txt && echo yes || echo no)):"
+  echo
+  echo "| what | measured | budget |"
+  echo "|---|---:|---:|"
+  echo "| templates, features | $count, $features | |"
+  echo "| their constant data (\`.rodata\` of the generated source, \`arm-none-eabi-size\`) | $(kb "$flash_bytes") KB | 256 KB for the whole firmware: $(met "$flash_bytes" 256) |"
+  echo "| heap high-water of \`detect\` (the templates read into RAM from the file, the model, the frame, the detector's maps) | $(kb "$d_heap") KB | 192 KB |"
+  echo "| guest instructions of \`Detector::detect\` (count markers) | $d_insns | |"
+  echo
+  echo "\`--init-auto\` is left out of the firmware: the default range's templates alone are $(awk -v b="$flash_bytes" 'BEGIN { printf "%.1f", b / 262144 }') times the flash"
+  echo "budget, and read from a file they are $(kb "$d_heap") KB of heap. A template is 72 bytes and its 32 features 96 more"
+  echo "(\`$(awk -v b="$flash_bytes" -v n="$count" 'BEGIN { printf "%.0f", b / n }')\` bytes per template measured): 256 KB hold about"
+  echo "$(awk 'BEGIN { printf "%d", 262144 / 168 }') templates with no code at all, so the views would have to come from a known axis,"
+  echo "a narrow cone and one distance band (\`--axis\`, \`--cone\`, \`--distance\`), and the firmware's code itself fit"
+  echo "(its flash: above)."
+}
+templates_section
