@@ -162,16 +162,15 @@ const char* step_name(Step step) {
 
 Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params) {
-  if (auto problem = check_camera(camera)) return *std::move(problem);
-  if (auto problem = check_tracked_model(model)) return *std::move(problem);
-  if (auto problem = check_tracker_params(params)) return Error{"", 0, problem->message};
-  if (auto problem = check_start_pose(initial)) return Error{"", 0, "the initial pose " + *problem};
-  return Tracker(std::make_unique<State>(model, camera, initial, params, TrackerLimits{}));
+  return create(model, camera, initial, params, TrackerLimits{});
 }
 
-Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
-                                const TrackerParams& params, const TrackerLimits& limits) {
-  if (!limits.stated()) return create(model, camera, initial, params);
+namespace {
+
+/// Why the model or the camera exceed stated `limits`, or nothing.
+std::optional<Error> check_within_limits(const EdgeModel& model, const PinholeCamera& camera,
+                                         const TrackerLimits& limits) {
+  if (!limits.stated()) return std::nullopt;
   if (auto problem = check_tracker_limits(limits)) return Error{"", 0, *problem};
   if (primitive_count(model) > limits.primitives)
     return Error{"", 0, "the model has " + std::to_string(primitive_count(model)) +
@@ -182,6 +181,14 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
     return Error{"", 0, "the camera's image " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
                             " is not within the tracker's limit of " + std::to_string(limits.image_width) + "x" +
                             std::to_string(limits.image_height)};
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                                const TrackerParams& params, const TrackerLimits& limits) {
+  if (auto problem = check_within_limits(model, camera, limits)) return *std::move(problem);
   if (auto problem = check_camera(camera)) return *std::move(problem);
   if (auto problem = check_tracked_model(model)) return *std::move(problem);
   if (auto problem = check_tracker_params(params)) return Error{"", 0, problem->message};
