@@ -226,16 +226,31 @@ settings_section
 
 templates_section() {
   local made flash_bytes image=seq/frames/frame0000.pgm
-  made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --out default.templates \
-         --cxx default.cpp)
+  made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --out default.templates)
   local count features
   count=$(sed -n 's/^templates: \([0-9]*\) templates.*/\1/p' <<<"$made")
   features=$(sed -n 's/.*distances, \([0-9]*\) features.*/\1/p' <<<"$made")
-  # The source as the firmware would compile it (the tree's flags and real): its constant data.
-  arm-none-eabi-g++ -std=c++17 -O2 -mcpu=cortex-m3 -mthumb -mfloat-abi=soft -fno-exceptions -fno-rtti -D_GNU_SOURCE \
-    -Wno-psabi -I"$top/tracker/include" -I"$top/ports/real/include" -I"$mcu_dir/ports/real/include" \
-    -c default.cpp -o default.o
-  flash_bytes=$(section default.o .rodata)
+  # The default range's source is too large to compile (over 1.9 GB of compiler memory for its
+  # 12.8 MB): two small ranges' sources, compiled as the firmware would (its flags and real), give
+  # the bytes of a template and of a feature in flash, and the default range's follow from its counts.
+  local k small_templates=() small_features=() small_bytes=()
+  for k in 2 4; do
+    made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --subdivisions 0 --in-plane "$k" \
+           --distance 0.15:0.2 --out small$k.templates --cxx small$k.cpp)
+    small_templates+=("$(sed -n 's/^templates: \([0-9]*\) templates.*/\1/p' <<<"$made")")
+    small_features+=("$(sed -n 's/.*distances, \([0-9]*\) features.*/\1/p' <<<"$made")")
+    arm-none-eabi-g++ -std=c++17 -O2 -mcpu=cortex-m3 -mthumb -mfloat-abi=soft -fno-exceptions -fno-rtti -D_GNU_SOURCE \
+      -Wno-psabi -I"$top/tracker/include" -I"$top/ports/real/include" -I"$mcu_dir/ports/real/include" \
+      -c small$k.cpp -o small$k.o
+    small_bytes+=("$(section small$k.o .rodata)")
+  done
+  local per_template
+  # Every template of these ranges has the same feature count: bytes per template, features included.
+  per_template=$(( (small_bytes[1] - small_bytes[0]) / (small_templates[1] - small_templates[0]) ))
+  local per_feature_set=$(( small_features[0] / small_templates[0] ))
+  # The default range's templates have as many features each (its features / its templates).
+  [ $((features / count)) -eq "$per_feature_set" ] || { echo "results: the feature counts differ" >&2; return 1; }
+  flash_bytes=$((count * per_template))
   EDGETRACK_BOARD_REPORT=1 EDGETRACK_MCU_FIRMWARE=$firmware "$top/toolchains/mcu/edgetrack-mcu.sh" detect \
     --model "$model" --camera seq/camera.xml --image "$image" --templates default.templates >detect.txt 2>detect.board || true
   EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out detect.count --windows detect.windows \
@@ -256,14 +271,14 @@ templates_section() {
   echo "| what | measured | budget |"
   echo "|---|---:|---:|"
   echo "| templates, features | $count, $features | |"
-  echo "| their constant data (\`.rodata\` of the generated source, \`arm-none-eabi-size\`) | $(kb "$flash_bytes") KB | 256 KB for the whole firmware: $(met "$flash_bytes" 256) |"
+  echo "| constant data of ${small_templates[0]} and ${small_templates[1]} templates of $per_feature_set features (\`.rodata\` of their compiled sources) | ${small_bytes[0]} and ${small_bytes[1]} bytes: $per_template per template | |"
+  echo "| the default range's constant data at that rate | $(kb "$flash_bytes") KB | 256 KB for the whole firmware: $(met "$flash_bytes" 256) |"
   echo "| heap high-water of \`detect\` (the templates read into RAM from the file, the model, the frame, the detector's maps) | $(kb "$d_heap") KB | 192 KB |"
   echo "| guest instructions of \`Detector::detect\` (count markers) | $d_insns | |"
   echo
   echo "\`--init-auto\` is left out of the firmware: the default range's templates alone are $(awk -v b="$flash_bytes" 'BEGIN { printf "%.1f", b / 262144 }') times the flash"
-  echo "budget, and read from a file they are $(kb "$d_heap") KB of heap. A template is 72 bytes and its 32 features 96 more"
-  echo "(\`$(awk -v b="$flash_bytes" -v n="$count" 'BEGIN { printf "%.0f", b / n }')\` bytes per template measured): 256 KB hold about"
-  echo "$(awk 'BEGIN { printf "%d", 262144 / 168 }') templates with no code at all, so the views would have to come from a known axis,"
+  echo "budget, and read from a file they take $(kb "$d_heap") KB of heap with the detector. At $per_template bytes per template, 256 KB"
+  echo "hold about $((262144 / per_template)) templates with no code at all, so the views would have to come from a known axis,"
   echo "a narrow cone and one distance band (\`--axis\`, \`--cone\`, \`--distance\`), and the firmware's code itself fit"
   echo "(its flash: above)."
 }
