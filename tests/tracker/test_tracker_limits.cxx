@@ -76,6 +76,11 @@ static void test_tracker_limits() {
   TEST("every frame over the control-point limit is lost as such, with nothing searched", over_limit, frames);
   TEST("and allocates nothing", over_limit_allocations, uint64_t{0});
   TEST("the limits are the tracker's", bounded.value().limits().control_points, 128);
+  Tracker copy = bounded.value();
+  const AllocationCount before_copy_tracks = allocation_count();
+  copy.track(rgb565_view(frame)).value();
+  TEST("a copy allocates its buffers when copied, not when it tracks",
+       allocation_count().allocations - before_copy_tracks.allocations, uint64_t{0});
 
   // What create refuses.
   TrackerLimits small_model = qvga_limits(128);

@@ -77,6 +77,9 @@ class Tracker::State {
  public:
   State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params,
         const TrackerLimits& limits);
+  /// With stated limits, every buffer's room for the largest frame they allow (a copy of a
+  /// vector keeps only its size: a copied tracker reserves again).
+  void reserve_for_limits();
 
   Result<FrameResult> track(const FrameView& frame);
   bool reset(const Se3& camera_from_model, StartPose start);
@@ -197,9 +200,12 @@ Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& cam
 }
 
 Tracker::Tracker(std::unique_ptr<State> state) : state_(std::move(state)) {}
-Tracker::Tracker(const Tracker& other) : state_(std::make_unique<State>(*other.state_)) {}
+Tracker::Tracker(const Tracker& other) : state_(std::make_unique<State>(*other.state_)) { state_->reserve_for_limits(); }
 Tracker& Tracker::operator=(const Tracker& other) {
-  if (this != &other) state_ = std::make_unique<State>(*other.state_);
+  if (this != &other) {
+    state_ = std::make_unique<State>(*other.state_);
+    state_->reserve_for_limits();
+  }
   return *this;
 }
 Tracker::Tracker(Tracker&& other) noexcept = default;
@@ -264,9 +270,13 @@ Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const
       camera_from_model_(initial),
       motion_(initial, params.motion),
       edge_ids_(camera, primitive_count(model)) {
-  if (!limits.stated()) return;  // the buffers grow to the largest frame seen
+  reserve_for_limits();
+}
+
+void Tracker::State::reserve_for_limits() {
+  if (!limits_.stated()) return;  // the buffers grow to the largest frame seen
   edge_ids_.reserve_for(model_);
-  const size_t points = static_cast<size_t>(limits.control_points);
+  const size_t points = static_cast<size_t>(limits_.control_points);
   for (std::vector<ControlPoint>* buffer : {&sampled_, &visible_}) buffer->reserve(points);
   read_boxes_.reserve(points);
   references_.reserve(points);
@@ -274,7 +284,7 @@ Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
   contrast_memory_.reserve(points);
-  if (limits.colour_frames) {
+  if (limits_.colour_frames) {
     grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
     grey_boxes_.reserve(points, camera_.height);
   }

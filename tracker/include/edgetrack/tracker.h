@@ -82,7 +82,8 @@ class Tracker {
   /// the camera exceed them.
   static Result<Tracker> create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params, const TrackerLimits& limits);
-  /// A copy tracks on from where the original is, independently of it.
+  /// A copy tracks on from where the original is, independently of it (with the same limits,
+  /// its buffers allocated by the copy).
   Tracker(const Tracker& other);
   Tracker& operator=(const Tracker& other);
   Tracker(Tracker&& other) noexcept;
