@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,8 @@
 #include "edgetrack/poses_csv.h"
 #include "edgetrack/tracker.h"
 #include "edgetrack/visp_config.h"
+#include "board.h"
+#include "count_markers.h"
 
 namespace {
 
@@ -26,6 +29,19 @@ using edgetrack::Error;
 
 /// The largest frame the camera buffer holds: QVGA, the budget.
 constexpr int kMaxFrameWidth = 320, kMaxFrameHeight = 240;
+
+/// What the tracker is created for: every buffer it needs is allocated then, from these, and the
+/// heap is locked (board.h) before the first frame. A model with more primitives or a camera
+/// larger than the frame buffer is refused at create; a frame that would sample more control
+/// points is lost (over_limit) without a search.
+constexpr edgetrack::TrackerLimits kTrackerLimits = [] {
+  edgetrack::TrackerLimits limits;
+  limits.primitives = 32;
+  limits.control_points = EDGETRACK_MCU_MAX_CONTROL_POINTS;
+  limits.image_width = kMaxFrameWidth;
+  limits.image_height = kMaxFrameHeight;
+  return limits;
+}();
 
 /// The camera's frame buffer: outside the RAM the firmware counts as its own (the linker script
 /// puts .camera_frame beside the heap), as a camera's DMA buffer would be.
@@ -36,6 +52,22 @@ int fail(const std::string& what) {
   return 1;
 }
 
+
+/// newlib's printf of a double (dtoa) keeps the big-number blocks it allocates at first need, for
+/// reuse: numbers of the poses CSV's formats over the magnitudes its columns take are printed once
+/// before the heap is locked, so that writing the poses allocates nothing after it.
+void prepare_number_formatting() {
+  char text[64];
+  for (double value = 1e-12; value < 1e12; value *= 10)
+    for (double sign : {1.0, -1.0}) std::snprintf(text, sizeof text, "%.9g %.3f %.2f", sign * value, sign * value, sign * value);
+}
+
+/// What a failed allocation ends with (no exceptions): the arena is full, or the heap is locked.
+[[noreturn]] void out_of_memory() {
+  std::fputs("tracker-firmware: out of memory: the heap arena (EDGETRACK_MCU_ARENA_KB) is full, or the heap was "
+             "locked\n", stderr);
+  std::exit(1);
+}
 
 /// Bytes the C library's allocator has handed out and not yet taken back.
 size_t live_heap() { return static_cast<size_t>(mallinfo().uordblks); }
@@ -70,28 +102,36 @@ bool header_number(std::FILE* file, int& value) {
   return std::isspace(c);  // the one whitespace character after the last number ends the header
 }
 
-/// Reads a binary 8-bit PGM into camera_frame.
-bool read_frame(const char* path, int& width, int& height, std::string& problem) {
+/// Reads a binary 8-bit PGM into camera_frame, of `width` x `height` when they are not 0 (the
+/// first frame's); false, with its line on stderr, when it cannot. Nothing here allocates: the
+/// heap is locked after the first frame.
+bool read_frame(const char* path, int& width, int& height) {
   std::FILE* file = std::fopen(path, "rb");
   if (!file) {
-    problem = std::string(path) + ": cannot open";
+    std::fprintf(stderr, "tracker-firmware: %s: cannot open\n", path);
     return false;
   }
-  int maxval = 0;
-  const bool header = std::fgetc(file) == 'P' && std::fgetc(file) == '5' && header_number(file, width) &&
-                      header_number(file, height) && header_number(file, maxval);
+  std::setvbuf(file, nullptr, _IONBF, 0);  // no stdio buffer to allocate
+  int maxval = 0, frame_width = 0, frame_height = 0;
+  const bool header = std::fgetc(file) == 'P' && std::fgetc(file) == '5' && header_number(file, frame_width) &&
+                      header_number(file, frame_height) && header_number(file, maxval);
+  const size_t pixels = static_cast<size_t>(frame_width) * static_cast<size_t>(frame_height);
   bool read = false;
   if (!header || maxval != 255)
-    problem = std::string(path) + ": line 1: not a binary 8-bit PGM (P5, maxval 255)";
-  else if (width < 1 || height < 1 || width > kMaxFrameWidth || height > kMaxFrameHeight)
-    problem = std::string(path) + ": line 1: " + std::to_string(width) + "x" + std::to_string(height) +
-              " is larger than the camera buffer's " + std::to_string(kMaxFrameWidth) + "x" +
-              std::to_string(kMaxFrameHeight);
-  else if (std::fread(camera_frame, 1, static_cast<size_t>(width) * height, file) != static_cast<size_t>(width) * height)
-    problem = std::string(path) + ": the pixels end early";
+    std::fprintf(stderr, "tracker-firmware: %s: line 1: not a binary 8-bit PGM (P5, maxval 255)\n", path);
+  else if (frame_width < 1 || frame_height < 1 || frame_width > kMaxFrameWidth || frame_height > kMaxFrameHeight)
+    std::fprintf(stderr, "tracker-firmware: %s: line 1: %dx%d is larger than the camera buffer's %dx%d\n", path,
+                 frame_width, frame_height, kMaxFrameWidth, kMaxFrameHeight);
+  else if (width != 0 && (frame_width != width || frame_height != height))
+    std::fprintf(stderr, "tracker-firmware: %s: line 1: %dx%d, not the first frame's %dx%d\n", path, frame_width,
+                 frame_height, width, height);
+  else if (std::fread(camera_frame, 1, pixels, file) != pixels)
+    std::fprintf(stderr, "tracker-firmware: %s: the pixels end early\n", path);
   else
     read = true;
   std::fclose(file);
+  width = frame_width;
+  height = frame_height;
   return read;
 }
 
@@ -123,7 +163,7 @@ std::optional<edgetrack::Tracker> start_tracker(char** argv, int width, int heig
   edgetrack::PinholeCamera camera = config.camera;
   if (camera.width == 0) camera.width = width;
   if (camera.height == 0) camera.height = height;
-  auto made = edgetrack::Tracker::create(model.value(), camera, initial.value(), config.params);
+  auto made = edgetrack::Tracker::create(model.value(), camera, initial.value(), config.params, kTrackerLimits);
   if (!made.ok()) return problem = made.error().text(), std::nullopt;
   return std::move(made).value();
 }
@@ -131,6 +171,7 @@ std::optional<edgetrack::Tracker> start_tracker(char** argv, int width, int heig
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::set_new_handler(out_of_memory);
   if (argc != 8)
     return fail("usage: tracker-firmware MODEL CAMERA.xml INIT.pos FRAMES FIRST LAST POSES.csv (FRAMES with one %d)");
   const char* frames = argv[4];
@@ -146,25 +187,39 @@ int main(int argc, char** argv) {
   std::fprintf(poses, "%s\n", edgetrack::kPosesCsvHeader);
 
   const size_t before_tracker = live_heap();
-  size_t created = 0;
+  size_t created = 0, calls_at_lock = 0;
   std::optional<edgetrack::Tracker> tracker;
   char name[256];
+  int width = 0, height = 0;
+  char line[edgetrack::kPosesCsvLineBytes];
   std::string problem;
   for (long index = first; index <= last; ++index) {
     std::snprintf(name, sizeof name, frames, static_cast<int>(index));
-    int width = 0, height = 0;
-    if (!read_frame(name, width, height, problem)) return fail(problem);
+    if (!read_frame(name, width, height)) return 1;
     const edgetrack::FrameView frame = edgetrack::packed_frame(camera_frame, width, height, edgetrack::PixelLayout::kGrey8);
     if (!tracker) {
       tracker = start_tracker(argv, width, height, problem);
       if (!tracker) return fail(problem);
       created = live_heap() - before_tracker;
+      prepare_number_formatting();
+      edgetrack_heap_lock();
+      calls_at_lock = edgetrack_allocation_calls();
     }
+    edgetrack_count_begin();  // the tracker's share of the frame (toolchains/qemu/count-insns.sh)
     auto result = tracker->track(frame);
+    edgetrack_count_end();
     if (!result.ok()) return fail(Error{name, 0, result.error().message}.text());
-    std::fprintf(poses, "%s\n", edgetrack::poses_csv_line(edgetrack::poses_csv_row(static_cast<int>(index), result.value())).c_str());
+    if (result.value().reason == edgetrack::StatusReason::kOverLimit)
+      std::fprintf(stderr, "tracker-firmware: %s: lost: %s (%d)\n", name, edgetrack::reason_name(result.value().reason),
+                   kTrackerLimits.control_points);
+    edgetrack::poses_csv_line(edgetrack::poses_csv_row(static_cast<int>(index), result.value()), line);
+    std::fprintf(poses, "%s\n", line);
   }
   if (std::fclose(poses) != 0) return fail(std::string(argv[7]) + ": writing failed");
   report_memory(tracker->memory(), before_tracker, created, live_heap() - before_tracker);
+  const size_t after_lock = edgetrack_allocation_calls() - calls_at_lock;
+  std::fprintf(stderr, "allocations: %lu until the tracker was created, %lu after it (%lu refused)\n",
+               (unsigned long)calls_at_lock, (unsigned long)after_lock, (unsigned long)edgetrack_refused_allocations());
+  if (after_lock > 0) return fail("the heap was used after the tracker was created");
   return 0;
 }

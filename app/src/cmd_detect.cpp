@@ -8,6 +8,7 @@
 #include "args.h"
 #include "commands.h"
 #include "configuration.h"
+#include "count_markers.h"
 #include "detection_options.h"
 #include "edgetrack/detector/detector.h"
 #include "edgetrack/model_io.h"
@@ -88,7 +89,9 @@ int detect_main(int argc, char** argv) {
                                               edgetrack::DetectorParams{}, config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
   const auto start = std::chrono::steady_clock::now();
+  edgetrack_count_begin();  // the detector's own share (QEMU counter, tests/bench/mcu)
   const auto detected = detector.value().detect(image.value().view());
+  edgetrack_count_end();
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!detected.ok()) return report("detect", {a.text("--image"), 0, detected.error().message});
   const edgetrack::Detection& detection = detected.value();

@@ -19,12 +19,13 @@ namespace edgetrack_app {
 int templates_main(int argc, char** argv) {
   CommandLine line = {
       "templates",
-      "--model FILE --camera FILE [--size WIDTHxHEIGHT] --out FILE [range options]",
+      "--model FILE --camera FILE [--size WIDTHxHEIGHT] --out FILE [--cxx FILE] [range options]",
       {
           {"--model", "FILE", "model, .cao or .obj", ""},
           {"--camera", "FILE", "ViSP camera XML (with the image size, or give --size)", ""},
           {"--size", "WIDTHxHEIGHT", "image size when the XML has none", ""},
           {"--out", "FILE", "the template file to write", ""},
+          {"--cxx", "FILE", "also a C++ source of them as constant data, for a firmware to link (docs/MCU.md)", ""},
       },
       {"--model", "--camera", "--out"},
       {},
@@ -34,7 +35,9 @@ int templates_main(int argc, char** argv) {
   for (const OptionSpec& spec : intrinsics_specs()) line.options.push_back(spec);
   Args a;
   if (auto stop = parse_command_line(line, argc, argv, a)) return *stop;
-  if (auto empty = check_output_names({{"--out", a.text("--out")}})) return report("templates", *empty) + 1;
+  std::vector<std::pair<std::string, std::string>> outputs = {{"--out", a.text("--out")}};
+  if (a.has("--cxx")) outputs.push_back({"--cxx", a.text("--cxx")});
+  if (auto empty = check_output_names(outputs)) return report("templates", *empty) + 1;
   int width = 0, height = 0;
   auto size = a.size("--size", width, height);
   if (!size.ok()) return report("templates", size.error()) + 1;
@@ -56,6 +59,12 @@ int templates_main(int argc, char** argv) {
     return edgetrack::write_templates(partial, set.value());
   });
   if (!written.ok()) return report("templates", written.error());
+  if (a.has("--cxx")) {
+    auto source = write_atomically(a.text("--cxx"), [&](const std::string& partial) {
+      return edgetrack::write_template_source(partial, set.value());
+    });
+    if (!source.ok()) return report("templates", source.error());
+  }
   std::printf("templates: %zu templates over %d distances, %zu features, %.2f MB in memory, made in %.0f ms; wrote %s\n",
               set.value().templates.size(), set.value().distance_count, set.value().features.size(),
               static_cast<double>(set.value().memory_bytes()) / (1 << 20), ms, a.text("--out").c_str());

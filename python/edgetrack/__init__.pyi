@@ -91,6 +91,7 @@ class Reason(Enum):
     POSE_UNCONSTRAINED = 12
     POSE_UNDETERMINED = 13
     UNSUPPORTED = 14
+    OVER_LIMIT = 15
 
 def status_name(status: Status) -> str: ...
 def reason_name(reason: Reason) -> str: ...

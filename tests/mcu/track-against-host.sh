@@ -4,7 +4,8 @@
 # host build (synth, PGM), tracks them with both, and requires the same poses CSV (every column
 # but ms, the step time, which the board's 10 ms semihosting clock cannot give). With
 # --tracker-only, FIRMWARE_IMAGE is the tracker-only firmware (app/mcu), given the same inputs
-# as its positional arguments.
+# as its positional arguments, and it must report no allocation after the tracker was created
+# (its heap is locked then: docs/MCU.md).
 # usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR [--tracker-only]
 set -euo pipefail
 host=${1:?usage: track-against-host.sh HOST_EDGETRACK FIRMWARE_IMAGE MODEL WORKDIR [--tracker-only]}
@@ -17,7 +18,12 @@ run=(track --model "$model" --camera seq/camera.xml --init-pose seq/first.pos --
 "$host" "${run[@]}" --poses host.csv >/dev/null
 if [ "$mode" = --tracker-only ]; then
   "$here/../../toolchains/mcu/run-firmware.sh" "$firmware" "$model" seq/camera.xml seq/first.pos \
-    'seq/frames/frame%04d.pgm' 0 19 mcu.csv
+    'seq/frames/frame%04d.pgm' 0 19 mcu.csv 2>report.txt || { cat report.txt >&2; exit 1; }
+  if ! grep -q '^allocations: [0-9]* until the tracker was created, 0 after it (0 refused)$' report.txt; then
+    cat report.txt >&2
+    echo "track-against-host: the tracker firmware allocated after the tracker was created" >&2
+    exit 1
+  fi
 else
   EDGETRACK_MCU_FIRMWARE=$firmware "$here/../../toolchains/mcu/edgetrack-mcu.sh" "${run[@]}" --poses mcu.csv >/dev/null
 fi

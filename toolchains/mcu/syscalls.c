@@ -174,7 +174,7 @@ static char* heap_break = edgetrack_heap_start;
 static char* heap_peak = edgetrack_heap_start;
 
 void* _sbrk(ptrdiff_t increment) {
-  if (increment > edgetrack_heap_end - heap_break || increment < edgetrack_heap_start - heap_break) {
+  if (increment > edgetrack_arena_end() - heap_break || increment < edgetrack_heap_start - heap_break) {
     errno = ENOMEM;
     return (void*)-1;
   }

@@ -20,6 +20,22 @@ ControlPoint make_point(int primitive, const Vec3& point_in_model, const Vec2& p
   return point;
 }
 
+/// Where the sampled points go: kept up to a maximum (0: none), the ones past it counted.
+class PointSink {
+ public:
+  PointSink(std::vector<ControlPoint>& points, size_t max_points) : points_(points), max_points_(max_points) {}
+  void push_back(const ControlPoint& point) {
+    if (max_points_ == 0 || points_.size() < max_points_) points_.push_back(point);
+    else ++left_out_;
+  }
+  size_t left_out() const { return left_out_; }
+
+ private:
+  std::vector<ControlPoint>& points_;
+  size_t max_points_;
+  size_t left_out_ = 0;
+};
+
 /// The image window control points must fall in.
 struct Window {
   real lo_x, hi_x, lo_y, hi_y;
@@ -38,7 +54,7 @@ constexpr int kCurvePieces = 64;
 /// and the lens moves each of its points.
 void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, int primitive,
                   const PinholeCamera& camera, const SamplingParams& params, const Window& window,
-                  std::vector<ControlPoint>& points) {
+                  PointSink& points) {
   using std::floor;
   const Vec2 na{ca.x / ca.z, ca.y / ca.z}, nb{cb.x / cb.z, cb.y / cb.z};
   const Vec2 chord = nb - na;
@@ -82,7 +98,7 @@ void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, 
 
 /// Equation (1) on the part in view of the 3D segment a-b (model frame) of primitive `primitive`.
 void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
-                    const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
+                    const SamplingParams& params, const Window& window, PointSink& points) {
   using std::floor;
   Vec3 ca = camera_from_model * a, cb = camera_from_model * b;
   real t0, t1;
@@ -123,7 +139,7 @@ void sample_segment(Vec3 a, Vec3 b, int primitive, const PinholeCamera& camera, 
 /// Control points every `step` pixels of the circle's projected rim polygon, each moved out to
 /// the true circle, with the direction of the projected ellipse's tangent there.
 void sample_circle(const Circle& circle, int primitive, const PinholeCamera& camera, const Se3& camera_from_model,
-                   const SamplingParams& params, const Window& window, std::vector<ControlPoint>& points) {
+                   const SamplingParams& params, const Window& window, PointSink& points) {
   using std::floor;
   Vec2 rim[kCircleSides + 1];
   real length(0);
@@ -167,10 +183,12 @@ void sample_circle(const Circle& circle, int primitive, const PinholeCamera& cam
   }
 }
 
-/// Every primitive's points, or with `faces` those of the primitives it tracks.
-void sample_primitives(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
-                       const SamplingParams& params, const FaceVisibility* faces, std::vector<ControlPoint>& points) {
-  points.clear();
+/// Every primitive's points, or with `faces` those of the primitives it tracks, up to
+/// params.max_points; returns the points left out.
+size_t sample_primitives(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                         const SamplingParams& params, const FaceVisibility* faces, std::vector<ControlPoint>& kept) {
+  kept.clear();
+  PointSink points(kept, params.max_points);
   const auto wanted = [faces](int primitive) { return faces == nullptr || faces->edge_tracked(primitive); };
   const Window window{real(params.border), real(camera.width - 1 - params.border), real(params.border),
                       real(camera.height - 1 - params.border)};
@@ -192,6 +210,7 @@ void sample_primitives(const EdgeModel& model, const PinholeCamera& camera, cons
     const int primitive = circle_primitive(model, static_cast<int>(k));
     if (wanted(primitive)) sample_circle(model.circles[k], primitive, camera, camera_from_model, params, window, points);
   }
+  return points.left_out();
 }
 
 }  // namespace
@@ -203,14 +222,15 @@ std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const Pi
   return points;
 }
 
-void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
-                           const SamplingParams& params, std::vector<ControlPoint>& points) {
-  sample_primitives(model, camera, camera_from_model, params, nullptr, points);
+size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                             const SamplingParams& params, std::vector<ControlPoint>& points) {
+  return sample_primitives(model, camera, camera_from_model, params, nullptr, points);
 }
 
-void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
-                           const SamplingParams& params, const FaceVisibility& faces, std::vector<ControlPoint>& points) {
-  sample_primitives(model, camera, camera_from_model, params, &faces, points);
+size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                             const SamplingParams& params, const FaceVisibility& faces,
+                             std::vector<ControlPoint>& points) {
+  return sample_primitives(model, camera, camera_from_model, params, &faces, points);
 }
 
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids) {

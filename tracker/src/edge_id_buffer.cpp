@@ -94,6 +94,10 @@ void EdgeIdBuffer::reserve_for(const EdgeModel& model) {
   // Owners only under the lines a side may not hide: cylinder silhouettes and circles.
   const size_t exemptible = primitives - model.edges.size();
   line_owner_.reserve(std::min(exemptible * line_pixels, pixels_));
+  points_in_camera_.reserve(model.vertices.size());
+  front_.reserve(model.faces.size());
+  rim_boxes_.reserve(model.cylinders.size());
+  facets_.reserve(model.cylinder_surface.size());
 }
 
 void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) {

@@ -51,9 +51,12 @@ Result<long long> parse_whole_field(const std::string& text, const FieldRange& r
 Result<std::vector<Word>> read_words(const std::string& path) {
   auto text = read_input_text(path);
   if (!text.ok()) return text.error();
+  return words_of_text(text.value());
+}
+
+std::vector<Word> words_of_text(const std::string& s) {
   std::vector<Word> words;
   int line = 1;
-  const std::string& s = text.value();
   for (size_t i = 0; i < s.size();) {
     const char c = s[i];
     if (c == '\n') {

@@ -642,6 +642,20 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   return solution;
 }
 
+void PoseWorkspace::reserve(size_t matches, bool lens) {
+  for (std::vector<real>* arrays : {model_mm, rotated, unweighted, turned})
+    for (int i = 0; i < 3; ++i) arrays[i].reserve(matches);
+  for (std::vector<real>* arrays : {gradient, moved})
+    for (int i = 0; i < 2; ++i) arrays[i].reserve(matches);
+  if (lens)
+    for (std::vector<real>* arrays : {lens_point, lens_gradient, lens_radial})
+      for (int i = 0; i < 2; ++i) arrays[i].reserve(matches);
+  for (std::vector<real>* array : {&evaluated, &inverse_depth, &residuals, &work, &scratch, &distances, &weights,
+                                   &magnitudes, &selection, &before_round})
+    array->reserve(matches);
+  jacobian.reserve(matches * 6);  // m x 6 (solve_once)
+}
+
 size_t PoseWorkspace::heap_bytes() const {
   size_t bytes = 0;
   for (const std::vector<real>* arrays : {model_mm, rotated, unweighted, turned})

@@ -31,11 +31,15 @@ PosesCsvRow poses_csv_row(int frame, const FrameResult& result) {
 }
 
 std::string poses_csv_line(const PosesCsvRow& row) {
-  char line[256];
+  char line[kPosesCsvLineBytes];
+  poses_csv_line(row, line);
+  return line;
+}
+
+void poses_csv_line(const PosesCsvRow& row, char (&line)[kPosesCsvLineBytes]) {
   std::snprintf(line, sizeof line, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.3f,%s,%.2f", row.frame, row.t[0], row.t[1],
                 row.t[2], row.tu[0], row.tu[1], row.tu[2], row.points, row.ms, status_name(row.status),
                 row.edge_angle_deg);
-  return line;
 }
 
 }  // namespace edgetrack

@@ -76,7 +76,11 @@ void carry_costs(const FrameResult& from, FrameResult& to) {
 /// Everything a Tracker holds; the frame loop runs on it unchanged, one pointer away.
 class Tracker::State {
  public:
-  State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params);
+  State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial, const TrackerParams& params,
+        const TrackerLimits& limits);
+  /// With stated limits, every buffer's room for the largest frame they allow (a copy of a
+  /// vector keeps only its size: a copied tracker reserves again).
+  void reserve_for_limits();
 
   Result<FrameResult> track(const FrameView& frame);
   bool reset(const Se3& camera_from_model, StartPose start);
@@ -85,6 +89,7 @@ class Tracker::State {
   EdgeModel model_;
   PinholeCamera camera_;
   TrackerParams params_;
+  TrackerLimits limits_;
   vpMe me_;  ///< the masks of params_.me, built once per settings
   SupportBound support_bound_;  ///< params_.status.support_angle_deg's test, once per settings
   FaceVisibility face_visibility_;
@@ -127,6 +132,18 @@ class Tracker::State {
   /// The four steps from `start` with the moving edges searching `range`, guessing when `start`
   /// is a guess (no contrasts, no weights at the start), then the status of what they found.
   void attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result);
+  /// A frame that would sample more control points than limits_ allow: lost, nothing searched.
+  void over_limit(FrameResult& result) {
+    sampled_.clear();
+    visible_.clear();
+    read_boxes_.clear();
+    matches_.clear();
+    result.points_sampled = 0;
+    result.points_matched = 0;
+    result.measures = FrameMeasures{};
+    result.status = TrackingStatus::kLost;
+    result.reason = StatusReason::kOverLimit;
+  }
   /// The status measures of the attempt from `start` searching `range` and the rule's judgement.
   void judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range, std::uint64_t saturations,
              FrameResult& result) const;
@@ -149,17 +166,47 @@ const char* step_name(Step step) {
 
 Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params) {
+  return create(model, camera, initial, params, TrackerLimits{});
+}
+
+namespace {
+
+/// Why the model or the camera exceed stated `limits`, or nothing.
+std::optional<Error> check_within_limits(const EdgeModel& model, const PinholeCamera& camera,
+                                         const TrackerLimits& limits) {
+  if (!limits.stated()) return std::nullopt;
+  if (auto problem = check_tracker_limits(limits)) return Error{"", 0, *problem};
+  if (primitive_count(model) > limits.primitives)
+    return Error{"", 0, "the model has " + std::to_string(primitive_count(model)) +
+                            " primitives (edges, cylinder silhouettes, circles), more than the tracker's limit of " +
+                            std::to_string(limits.primitives)};
+  if (camera.width < 1 || camera.height < 1 || camera.width > limits.image_width ||
+      camera.height > limits.image_height)
+    return Error{"", 0, "the camera's image " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                            " is not within the tracker's limit of " + std::to_string(limits.image_width) + "x" +
+                            std::to_string(limits.image_height)};
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<Tracker> Tracker::create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                                const TrackerParams& params, const TrackerLimits& limits) {
+  if (auto problem = check_within_limits(model, camera, limits)) return *std::move(problem);
   if (auto problem = check_camera(camera)) return *std::move(problem);
   if (auto problem = check_tracked_model(model)) return *std::move(problem);
   if (auto problem = check_tracker_params(params)) return Error{"", 0, problem->message};
   if (auto problem = check_start_pose(initial)) return Error{"", 0, "the initial pose " + *problem};
-  return Tracker(std::make_unique<State>(model, camera, initial, params));
+  return Tracker(std::make_unique<State>(model, camera, initial, params, limits));
 }
 
 Tracker::Tracker(std::unique_ptr<State> state) : state_(std::move(state)) {}
-Tracker::Tracker(const Tracker& other) : state_(std::make_unique<State>(*other.state_)) {}
+Tracker::Tracker(const Tracker& other) : state_(std::make_unique<State>(*other.state_)) { state_->reserve_for_limits(); }
 Tracker& Tracker::operator=(const Tracker& other) {
-  if (this != &other) state_ = std::make_unique<State>(*other.state_);
+  if (this != &other) {
+    state_ = std::make_unique<State>(*other.state_);
+    state_->reserve_for_limits();
+  }
   return *this;
 }
 Tracker::Tracker(Tracker&& other) noexcept = default;
@@ -174,6 +221,7 @@ std::optional<Error> Tracker::set_params(const TrackerParams& params) {
   return std::nullopt;
 }
 const TrackerParams& Tracker::params() const { return state_->params_; }
+const TrackerLimits& Tracker::limits() const { return state_->limits_; }
 void Tracker::set_edge_id_source(EdgeIdSource* source) { state_->edge_id_source_ = source; }
 void Tracker::set_step_observer(StepObserver* observer) { state_->step_observer_ = observer; }
 const Se3& Tracker::camera_from_model() const { return state_->camera_from_model_; }
@@ -211,17 +259,37 @@ TrackerMemory Tracker::memory() const {
 }
 
 Tracker::State::State(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
-                      const TrackerParams& params)
+                      const TrackerParams& params, const TrackerLimits& limits)
     : model_(model),
       camera_(camera),
       params_(params),
+      limits_(limits),
       me_(moving_edge_masks(params.me)),
       support_bound_(support_bound(params.status.support_angle_deg)),
       face_visibility_(model),
       faces_before_(model),
       camera_from_model_(initial),
       motion_(initial, params.motion),
-      edge_ids_(camera, primitive_count(model)) {}
+      edge_ids_(camera, primitive_count(model)) {
+  reserve_for_limits();
+}
+
+void Tracker::State::reserve_for_limits() {
+  if (!limits_.stated()) return;  // the buffers grow to the largest frame seen
+  edge_ids_.reserve_for(model_);
+  const size_t points = static_cast<size_t>(limits_.control_points);
+  for (std::vector<ControlPoint>* buffer : {&sampled_, &visible_}) buffer->reserve(points);
+  read_boxes_.reserve(points);
+  references_.reserve(points);
+  borrowed_.reserve(points);
+  matches_.reserve(points);
+  pose_workspace_.reserve(points, camera_.distorted());
+  contrast_memory_.reserve(points);
+  if (limits_.colour_frames) {
+    grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
+    grey_boxes_.reserve(points, camera_.height);
+  }
+}
 
 std::optional<Error> Tracker::State::take_frame_size(const FrameView& frame) {
   if (auto problem = check_frame(frame, frame.width, frame.height)) return problem;
@@ -278,6 +346,9 @@ Result<FrameResult> Tracker::State::track(const FrameView& frame) {
     if (auto problem = take_frame_size(frame)) return *std::move(problem);
   }
   if (auto problem = check_frame(frame, camera_.width, camera_.height)) return *std::move(problem);
+  if (limits_.stated() && !limits_.colour_frames && !grey_in_place(frame))
+    return Error{"", 0, "the frame is not grey8 (or a packed Y plane), and the tracker's limits hold no grey image "
+                        "(TrackerLimits::colour_frames)"};
   FrameResult result;
   // After a loss, or from a guessed start, the pose is a guess: the contrasts it would assign are
   // not the edges' there, nor do the distances to it tell the good matches from the bad.
@@ -312,7 +383,14 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   if (edge_id_source_) edge_id_source_->draw(model_, start, edge_ids_);
   else edge_ids_.render(model_, start);
   face_visibility_.update(model_, camera_, start, params_.faces);
-  sample_control_points(model_, camera_, start, sampling_params(params_), face_visibility_, sampled_);
+  SamplingParams sampling = sampling_params(params_);
+  sampling.max_points = static_cast<size_t>(limits_.control_points);
+  if (sample_control_points(model_, camera_, start, sampling, face_visibility_, sampled_) > 0) {
+    over_limit(result);
+    end(Step::kVisibleEdges);
+    clock.lap(Step::kVisibleEdges, result);
+    return;
+  }
   keep_visible(sampled_, edge_ids_, visible_);
   if (guessing) {
     references_.assign(visible_.size(), real(0));

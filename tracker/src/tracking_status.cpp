@@ -32,6 +32,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kPoseUnconstrained: return "the matches leave the pose unconstrained";
     case StatusReason::kPoseUndetermined: return "the matches leave the pose uncertain beyond the search range";
     case StatusReason::kUnsupported: return "the image gradient supports the pose's edges only at chance";
+    case StatusReason::kOverLimit: return "more control points than the tracker's limit";
   }
   return "?";
 }

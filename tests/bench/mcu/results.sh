@@ -81,7 +81,7 @@ echo "| RAM in all | $(kb $((static + heap + stack))) KB | 192 KB |"
 echo
 echo "The heap figure is the whole run's: it includes the frame files the command line reads and converts, which a"
 echo "board would not hold (the camera's buffer is read in place), and the command line's own strings and tables. The"
-echo "tracker's own heap at QVGA on the PXA270 is in docs/results/memory.md. No static arena replaces the heap yet."
+echo "tracker's own heap at QVGA on the PXA270 is in docs/results/memory.md; the tracker firmware's, allocated at create, below."
 echo
 echo "### Flash by library (from the link map; section alignment makes the sum differ slightly from the total)"
 echo
@@ -139,8 +139,147 @@ echo "| counted by the allocator | $counted | $(kb "$counted") |"
 created=$(sed -n 's/^tracker memory: created \([0-9]*\) bytes.*/\1/p' tracker-board.txt)
 heap_field() { sed -n "s/^heap: .*$1 \([0-9]*\) bytes.*/\1/p" tracker-board.txt; }
 echo
-echo "Of it, $(kb "$created") KB were allocated by \`Tracker::create\`; the rest by the frames, as their buffers grew"
-echo "(the first frame, and any frame with more control points or matches than every earlier one). The heap's"
-echo "high-water mark of $(kb "$t_heap") KB is that, $(kb "$(heap_field "before the tracker")") KB the C library held before the inputs were read (the open"
-echo "poses file), and $(kb "$(heap_field "free within the arena")") KB of free blocks within the allocator's arena at the end: what the growing"
-echo "buffers and the inputs read (the model, the XML, freed once the tracker holds its copies) left behind."
+echo "Of it, $(kb "$created") KB were allocated by \`Tracker::create\` (with its \`TrackerLimits\`, every buffer), the frames none"
+echo "(the heap is locked after create). The heap's high-water mark of $(kb "$t_heap") KB is that, $(kb "$(heap_field "before the tracker")") KB the C library"
+echo "held before the inputs were read (the open poses file), and $(kb "$(heap_field "free within the arena")") KB of free blocks within the allocator's"
+echo "arena at the end: what reading the inputs (the model, the XML, freed once the tracker holds its copies) left behind."
+
+# --- The tracker firmware's stated maxima and its settings (TrackerLimits, the heap arena) ---
+
+# limits_tree POINTS ARENA_KB: the bare-metal S40.23 tree whose tracker firmware is built for POINTS
+# control points per frame in an arena of ARENA_KB (app/mcu/CMakeLists.txt), built.
+limits_tree() {
+  local dir="$bench_build_root/bench-mcu-s40_23-points$1"
+  cmake -S "$top" -B "$dir" -G Ninja -DEDGETRACK_REAL=s40_23 -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_TOOLCHAIN_FILE="$top/toolchains/cortex-m3.cmake" -DEDGETRACK_MCU_MAX_CONTROL_POINTS="$1" \
+    -DEDGETRACK_MCU_ARENA_KB="$2" >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log" >&2; return 1; }
+  cmake --build "$dir" --target tracker_firmware >"$dir.build.log" 2>&1 || { tail -n 40 "$dir.build.log" >&2; return 1; }
+  echo "$dir"
+}
+# settings_run NAME FIRMWARE CAMERA_XML: the tracker firmware's run on the 20 frames with CAMERA_XML's
+# settings (NAME.board: its report, NAME.windows: instructions per Tracker::track), the host's
+# poses with them (NAME.host.csv).
+settings_run() {
+  EDGETRACK_BOARD_REPORT=1 "$top/toolchains/mcu/run-firmware.sh" "$2" "$model" "$3" seq/first.pos \
+    'seq/frames/frame%04d.pgm' 0 19 "$1.csv" 2>"$1.board" >/dev/null
+  EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out "$1.count" --windows "$1.windows" \
+    "$2" "$model" "$3" seq/first.pos 'seq/frames/frame%04d.pgm' 0 19 "$1.counted.csv" >/dev/null 2>&1
+  "$host_dir/app/edgetrack" track --model "$model" --camera "$3" --init-pose seq/first.pos \
+    --images 'seq/frames/frame%04d.pgm' --first 0 --last 19 --quiet --poses "$1.host.csv" >/dev/null 2>&1
+}
+# setting NAME FILE: an <ecm> setting of a ViSP XML file, or the tracker's default.
+setting() { sed -n "s/.*<$1>\([^<]*\)<\/$1>.*/\1/p" "$2" | head -n 1; }
+buffer_bytes() { sed -n "s/^tracker memory: $1 \([0-9]*\) bytes$/\1/p" "$2"; }
+
+settings_section() {
+  local cube_xml=/usr/share/visp-images-data/ViSP-images/mbt/cube.xml
+  # ViSP's moving-edge settings for its mbt cube (mask size, sample step, range, threshold) with the
+  # generated sequence's camera.
+  { echo '<?xml version="1.0"?>'; echo '<conf>'; sed -n '/<ecm>/,/<\/ecm>/p' "$cube_xml"
+    sed -n '/<camera>/,/<\/camera>/p' seq/camera.xml; echo '</conf>'; } >cube-settings.xml
+  local paper_points paper_arena cube_points cube_dir
+  paper_points=$(sed -n 's/^EDGETRACK_MCU_MAX_CONTROL_POINTS:STRING=//p' "$mcu_dir/CMakeCache.txt")
+  paper_arena=$(sed -n 's/^EDGETRACK_MCU_ARENA_KB:STRING=//p' "$mcu_dir/CMakeCache.txt")
+  # Control points grow as the sample step shrinks: the paper's maximum scaled by 10 / cube.xml's step.
+  cube_points=$(awk -v p="$paper_points" -v s="$(setting step "$cube_xml")" 'BEGIN { printf "%d", p * 10 / s + 0.999 }')
+  cube_dir=$(limits_tree "$cube_points" 1024)  # an arena large enough to measure what it needs
+  settings_run paper "$tracker_firmware" seq/camera.xml
+  settings_run cube "$cube_dir/app/mcu/tracker_firmware" cube-settings.xml
+  echo
+  echo "### No heap after the tracker is created, and ViSP's cube.xml settings"
+  echo
+  echo "The tracker firmware creates its tracker with stated maxima (\`TrackerLimits\`: 32 primitives, QVGA, grey8"
+  echo "frames, a number of control points per frame), which allocates every buffer at create; it then locks the"
+  echo "heap (toolchains/mcu/heap_guard.c), an arena whose size is given to the link. The same 20 frames with the"
+  echo "paper's settings (synth's camera.xml: the tracker's defaults) and with ViSP's \`mbt/cube.xml\` moving-edge"
+  echo "settings (its \`<ecm>\` with the generated camera). cube.xml's maximum is the paper's scaled by the sample"
+  echo "steps' ratio; its firmware is built with a 1024 KB arena to measure what it needs. RAM in all is the"
+  echo "static RAM, the heap's high-water mark in the arena and the stack's; instructions are per \`Tracker::track\`"
+  echo "(count markers in the firmware, qemu-system-arm)."
+  echo
+  echo "| | paper's settings | cube.xml's settings |"
+  echo "|---|---:|---:|"
+  echo "| sample step, range, mask size, threshold | 10, 4, 5, 1500 | $(setting step "$cube_xml"), $(setting tracking "$cube_xml"), $(setting size "$cube_xml"), $(setting edge_threshold "$cube_xml") |"
+  echo "| control points per frame (TrackerLimits) | $paper_points | $cube_points |"
+  echo "| allocations after the tracker was created | $(sed -n 's/^allocations: .*, \([0-9]*\) after it.*/\1/p' paper.board) | $(sed -n 's/^allocations: .*, \([0-9]*\) after it.*/\1/p' cube.board) |"
+  echo "| poses as the host S40.23 build's with the same settings | $(diff -q <(cut -d, -f1-8,10 paper.host.csv) <(cut -d, -f1-8,10 paper.csv) >/dev/null && echo yes || echo no) | $(diff -q <(cut -d, -f1-8,10 cube.host.csv) <(cut -d, -f1-8,10 cube.csv) >/dev/null && echo yes || echo no) |"
+  echo "| frames tracked | $(grep -c ',tracked,' paper.csv) | $(grep -c ',tracked,' cube.csv) |"
+  local name
+  for name in edge_id_image edge_id_lines control_points matches pose_workspace contrast_memory; do
+    echo "| $name (KB) | $(kb "$(buffer_bytes $name paper.board)") | $(kb "$(buffer_bytes $name cube.board)") |"
+  done
+  local p_ram c_ram
+  p_ram=$(( $(board_value static paper.board) + $(board_value "heap high-water" paper.board) + $(board_value "stack high-water" paper.board) ))
+  c_ram=$(( $(board_value static cube.board) + $(board_value "heap high-water" cube.board) + $(board_value "stack high-water" cube.board) ))
+  echo "| heap high-water in the arena (KB) | $(kb "$(board_value "heap high-water" paper.board)") (arena $paper_arena) | $(kb "$(board_value "heap high-water" cube.board)") |"
+  echo "| static RAM, stack high-water (KB) | $(kb "$(board_value static paper.board)"), $(kb "$(board_value "stack high-water" paper.board)") | $(kb "$(board_value static cube.board)"), $(kb "$(board_value "stack high-water" cube.board)") |"
+  echo "| RAM in all (KB), budget 192 | $(kb "$p_ram"): $(met "$p_ram" 192) | $(kb "$c_ram"): $(met "$c_ram" 192) |"
+  echo "| instructions per frame: mean, largest | $(per_frame paper.windows | sed 's/ |/,/') | $(per_frame cube.windows | sed 's/ |/,/') |"
+  echo
+  echo "With cube.xml's settings the per-control-point buffers (control points and their read boxes, matches,"
+  echo "pose workspace, remembered contrasts) grow with the points a 4-pixel step samples; the Edge-ID image and"
+  echo "lines stay the same."
+}
+settings_section
+
+# --- Templates in flash and --init-auto on the microcontroller ---
+
+templates_section() {
+  local made flash_bytes image=seq/frames/frame0000.pgm
+  made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --out default.templates)
+  local count features
+  count=$(sed -n 's/^templates: \([0-9]*\) templates.*/\1/p' <<<"$made")
+  features=$(sed -n 's/.*distances, \([0-9]*\) features.*/\1/p' <<<"$made")
+  # The default range's source is too large to compile (over 1.9 GB of compiler memory for its
+  # 12.8 MB): two small ranges' sources, compiled as the firmware would (its flags and real), give
+  # the bytes of a template and of a feature in flash, and the default range's follow from its counts.
+  local k small_templates=() small_features=() small_bytes=()
+  for k in 2 4; do
+    made=$("$host_dir/app/edgetrack" templates --model "$model" --camera seq/camera.xml --subdivisions 0 --in-plane "$k" \
+           --distance 0.15:0.2 --out small$k.templates --cxx small$k.cpp)
+    small_templates+=("$(sed -n 's/^templates: \([0-9]*\) templates.*/\1/p' <<<"$made")")
+    small_features+=("$(sed -n 's/.*distances, \([0-9]*\) features.*/\1/p' <<<"$made")")
+    arm-none-eabi-g++ -std=c++17 -O2 -mcpu=cortex-m3 -mthumb -mfloat-abi=soft -fno-exceptions -fno-rtti -D_GNU_SOURCE \
+      -Wno-psabi -I"$top/tracker/include" -I"$top/ports/real/include" -I"$mcu_dir/ports/real/include" \
+      -c small$k.cpp -o small$k.o
+    small_bytes+=("$(section small$k.o .rodata)")
+  done
+  local per_template
+  # Every template of these ranges has the same feature count: bytes per template, features included.
+  per_template=$(( (small_bytes[1] - small_bytes[0]) / (small_templates[1] - small_templates[0]) ))
+  local per_feature_set=$(( small_features[0] / small_templates[0] ))
+  # The default range's templates have as many features each (its features / its templates).
+  [ $((features / count)) -eq "$per_feature_set" ] || { echo "results: the feature counts differ" >&2; return 1; }
+  flash_bytes=$((count * per_template))
+  EDGETRACK_BOARD_REPORT=1 EDGETRACK_MCU_FIRMWARE=$firmware "$top/toolchains/mcu/edgetrack-mcu.sh" detect \
+    --model "$model" --camera seq/camera.xml --image "$image" --templates default.templates >detect.txt 2>detect.board || true
+  EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out detect.count --windows detect.windows \
+    "$firmware" detect --model "$model" --camera seq/camera.xml --image "$image" --templates default.templates \
+    >/dev/null 2>&1 || true
+  local d_heap d_insns
+  d_heap=$(board_value "heap high-water" detect.board)
+  d_insns=$(awk '{ sub("insns=", "", $3); print $3 }' detect.windows | head -n 1)
+  echo
+  echo "### Templates in flash and \`--init-auto\` on the microcontroller"
+  echo
+  echo "\`edgetrack templates --cxx\` writes the detector's templates as a C++ source of constant data, which"
+  echo "\`constant_template_set\` reads in place (docs/MCU.md). For the cube at QVGA with the default view range"
+  echo "(the one \`--init-auto\` makes), compiled for the Cortex-M3 as the firmware would, and the whole command"
+  echo "line's \`edgetrack detect\` with the same templates from their file on the first generated frame"
+  echo "(found: $(grep -q 'found=1' detect.txt && echo yes || echo no)):"
+  echo
+  echo "| what | measured | budget |"
+  echo "|---|---:|---:|"
+  echo "| templates, features | $count, $features | |"
+  echo "| constant data of ${small_templates[0]} and ${small_templates[1]} templates of $per_feature_set features (\`.rodata\` of their compiled sources) | ${small_bytes[0]} and ${small_bytes[1]} bytes: $per_template per template | |"
+  echo "| the default range's constant data at that rate | $(kb "$flash_bytes") KB | 256 KB for the whole firmware: $(met "$flash_bytes" 256) |"
+  echo "| heap high-water of \`detect\` (the templates read into RAM from the file, the model, the frame, the detector's maps) | $(kb "$d_heap") KB | 192 KB |"
+  echo "| guest instructions of \`Detector::detect\` (count markers) | $d_insns | |"
+  echo
+  echo "\`--init-auto\` is left out of the firmware: the default range's templates alone are $(awk -v b="$flash_bytes" 'BEGIN { printf "%.1f", b / 262144 }') times the flash"
+  echo "budget, and read from a file they take $(kb "$d_heap") KB of heap with the detector. At $per_template bytes per template, 256 KB"
+  echo "hold about $((262144 / per_template)) templates with no code at all, so the views would have to come from a known axis,"
+  echo "a narrow cone and one distance band (\`--axis\`, \`--cone\`, \`--distance\`), and the firmware's code itself fit"
+  echo "(its flash: above)."
+}
+templates_section

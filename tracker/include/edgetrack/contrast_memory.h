@@ -20,6 +20,11 @@ class ContrastMemory {
     remembered_.clear();
     groups_.clear();
   }
+  /// Room for the contrasts of `matches` matches: remember then allocates nothing for up to that many.
+  void reserve(size_t matches) {
+    remembered_.reserve(matches);
+    groups_.reserve(matches);
+  }
   /// Heap bytes it holds (tracker_memory.h).
   size_t heap_bytes() const {
     return remembered_.capacity() * sizeof(Remembered) + groups_.capacity() * sizeof(Group);

@@ -28,6 +28,8 @@ struct SamplingParams {
   real step = real(10);    ///< pixels between control points (the paper's 10)
   int border = 10;         ///< points nearer the image border than this (pixels) are dropped
   ViewClipping clipping;   ///< the part of each edge that is sampled
+  /// The most points one call keeps (0: no maximum); the points past it are counted, not kept.
+  size_t max_points = 0;
 };
 
 /// Samples the part of every edge that params.clipping keeps (at least the part 1 cm in front
@@ -43,13 +45,14 @@ struct SamplingParams {
 std::vector<ControlPoint> sample_control_points(const EdgeModel& model, const PinholeCamera& camera,
                                                 const Se3& camera_from_model, const SamplingParams& params);
 /// The same into `points` (emptied first; its memory is reused, so a caller that keeps it
-/// allocates only while the point count grows).
-void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
-                           const SamplingParams& params, std::vector<ControlPoint>& points);
+/// allocates only while the point count grows). Returns the points params.max_points left out.
+size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                             const SamplingParams& params, std::vector<ControlPoint>& points);
 /// The same for only the primitives `faces` tracks (FaceVisibility::edge_tracked); the others
 /// are not sampled at all.
-void sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
-                           const SamplingParams& params, const FaceVisibility& faces, std::vector<ControlPoint>& points);
+size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera, const Se3& camera_from_model,
+                             const SamplingParams& params, const FaceVisibility& faces,
+                             std::vector<ControlPoint>& points);
 
 /// Keeps the points whose own edge the Edge-ID buffer shows at their pixel.
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids);

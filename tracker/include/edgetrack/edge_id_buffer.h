@@ -35,6 +35,9 @@ class EdgeIdBuffer {
   /// and edges behind other faces do not; a cylinder's silhouette (and the part of a circle
   /// closing it that the side cannot hide) also passes over that cylinder's side.
   void render(const EdgeModel& model, const Se3& camera_from_model);
+  /// Allocates every buffer render needs for `model` (render does it too): a tracker that calls
+  /// it at create renders without allocating.
+  void reserve_for(const EdgeModel& model);
 
   /// Takes an Edge-ID image drawn elsewhere (GL): width * height RGB565 pixels, row 0 at the
   /// top, in the paper's 8-level code, kept as RGB565. The surfaces are forgotten: they stay this
@@ -79,7 +82,6 @@ class EdgeIdBuffer {
   void clear_lines();
   /// Sizes the image for one byte or RGB565 per pixel (an image of the other kind is freed).
   void use_image(bool narrow);
-  void reserve_for(const EdgeModel& model);
   /// Through a lens, how many pieces each side of a segment (count 2) or triangle (count 3) is
   /// cut into so that its curve stays within `bend_pixels` of the pieces, at most `most`; 1 for
   /// a pinhole.

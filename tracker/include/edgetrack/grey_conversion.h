@@ -25,6 +25,12 @@ unsigned int convert_to_grey(const FrameView& frame, const PixelBox& box, vpImag
 class BoxGreyScaler {
  public:
   void clear() { boxes_.clear(); }
+  /// Room for `boxes` boxes on frames of `rows` rows: convert then allocates nothing within them.
+  void reserve(size_t boxes, int rows) {
+    boxes_.reserve(boxes);
+    left_.reserve(static_cast<size_t>(rows));
+    right_.reserve(static_cast<size_t>(rows));
+  }
   void add(const PixelBox& box) { boxes_.push_back(box); }
   /// Converts the boxes added since clear(), clipped to `frame` (which must have passed
   /// check_frame), into `grey`; returns the pixels converted.

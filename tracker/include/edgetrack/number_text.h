@@ -32,5 +32,7 @@ struct Word {
 
 /// The words of `path` (read_input_text's bounds), `#` starting a comment to the end of a line.
 Result<std::vector<Word>> read_words(const std::string& path);
+/// The same for a text already in memory.
+std::vector<Word> words_of_text(const std::string& text);
 
 }  // namespace edgetrack

@@ -108,6 +108,9 @@ struct PoseWorkspace {
 
   /// The heap its buffers hold (their capacities), for Tracker::memory.
   size_t heap_bytes() const;
+  /// Room for `matches` matches in every buffer (the lens's only when `lens`): solve_pose then
+  /// allocates nothing for up to that many.
+  void reserve(size_t matches, bool lens);
 };
 
 /// Residual i is delta_i = n_i . (p_i(x) - q_i) (equation (3) before the absolute value; LM

@@ -33,5 +33,8 @@ PosesCsvRow poses_csv_row(int frame, const FrameResult& result);
 /// The row as a line of the file, without its newline: poses to 9 significant digits, ms to
 /// the microsecond, the status as status_name spells it, the edge angle to 0.01 degree.
 std::string poses_csv_line(const PosesCsvRow& row);
+/// The same line into `line` (a firmware's, which allocates nothing); kPosesCsvLineBytes holds any row.
+constexpr size_t kPosesCsvLineBytes = 256;
+void poses_csv_line(const PosesCsvRow& row, char (&line)[kPosesCsvLineBytes]);
 
 }  // namespace edgetrack

@@ -19,6 +19,7 @@
 #include "edgetrack/pose_solver.h"
 #include "edgetrack/result.h"
 #include "edgetrack/se3.h"
+#include "edgetrack/tracker_limits.h"
 #include "edgetrack/tracker_memory.h"
 #include "edgetrack/tracker_params.h"
 #include "edgetrack/tracking_status.h"
@@ -75,7 +76,14 @@ class Tracker {
   /// from `initial` (camera_from_model), or an Error naming the input refused.
   static Result<Tracker> create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
                                 const TrackerParams& params);
-  /// A copy tracks on from where the original is, independently of it.
+  /// The same with stated maxima (tracker_limits.h): every buffer is allocated here, for the
+  /// largest frame `limits` allow, and track allocates nothing (set_params rebuilds the moving
+  /// edges' masks, which allocates). An Error when the limits are incomplete, or the model or
+  /// the camera exceed them.
+  static Result<Tracker> create(const EdgeModel& model, const PinholeCamera& camera, const Se3& initial,
+                                const TrackerParams& params, const TrackerLimits& limits);
+  /// A copy tracks on from where the original is, independently of it (with the same limits,
+  /// its buffers allocated by the copy).
   Tracker(const Tracker& other);
   Tracker& operator=(const Tracker& other);
   Tracker(Tracker&& other) noexcept;
@@ -124,6 +132,7 @@ class Tracker {
   const EdgeIdBuffer& edge_ids() const;
   /// The faces' visibility and the edges tracked in the last frame.
   const FaceVisibility& face_visibility() const;
+  const TrackerLimits& limits() const;
   /// The heap it holds now, per buffer (tracker_memory.h).
   TrackerMemory memory() const;
 

@@ -28,9 +28,10 @@ enum class StatusReason {
   kUnconfirmed,       ///< uncertain: the detector found the model on this frame; a tracked frame confirms it
   kPoseUnconstrained,  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
   kPoseUndetermined,   ///< lost: the matches leave it uncertain by more than the search reaches
-  kUnsupported         ///< lost: the image gradient supports the pose's edges no more than at chance
+  kUnsupported,        ///< lost: the image gradient supports the pose's edges no more than at chance
+  kOverLimit           ///< lost: the frame would sample more control points than the tracker's TrackerLimits
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kUnsupported) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kOverLimit) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);

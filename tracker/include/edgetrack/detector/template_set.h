@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "edgetrack/detector/template_array.h"
 #include "edgetrack/detector/viewpoints.h"
 #include "edgetrack/downscaled_camera.h"
 #include "edgetrack/edge_model.h"
@@ -63,15 +64,16 @@ struct TemplateSet {
   PinholeCamera camera;
   ModelExtent extent;
   std::string model_fingerprint;
-  std::vector<Template> templates;
-  std::vector<TemplateFeature> features;
+  /// On the heap, or read in place from constant data (template_array.h).
+  TemplateArray<Template> templates;
+  TemplateArray<TemplateFeature> features;
   int distance_count = 0;  ///< distances of the range: every distance_index is below it
 
   /// The camera detection (templates, matching, refinement) runs at: detection_camera(camera).
   PinholeCamera detection_camera() const;
   /// The camera of the image matching runs on: detection_camera() downscaled by params.downscale.
   PinholeCamera matching_camera() const;
-  /// Bytes held by the templates and their features.
+  /// Bytes held by the templates and their features (on the heap, or in constant data).
   size_t memory_bytes() const;
 };
 
