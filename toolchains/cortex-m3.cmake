@@ -20,6 +20,11 @@ set(CMAKE_C_FLAGS_INIT "${EDGETRACK_MCU_FLAGS}")
 # -Wno-psabi: as in cross-linux.cmake (GCC's note on 8-byte-aligned vector elements).
 # -D_GNU_SOURCE: what g++ defines on Linux; newlib hides M_PI, strnlen, ... without it under -std=c++17.
 set(CMAKE_CXX_FLAGS_INIT "${EDGETRACK_MCU_FLAGS} -D_GNU_SOURCE -fno-exceptions -fno-rtti -Wno-psabi")
+# Flash is the budget (issue #29: 256 KB): Release is built for size, and the sources a frame spends
+# its instructions in for speed (toolchains/mcu/hot_sources.cmake). Cached here, before CMake's own
+# initialisation would append its -O3 to a *_RELEASE_INIT.
+set(CMAKE_C_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
+set(CMAKE_CXX_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
 # Our own startup (toolchains/mcu/startup.c), not newlib's crt0.
 set(CMAKE_EXE_LINKER_FLAGS_INIT
     "-nostartfiles -Wl,--gc-sections -T${CMAKE_CURRENT_LIST_DIR}/mcu/mps2-an385.ld")

@@ -24,6 +24,12 @@ Error refusal(const std::string& file, int line, const FieldRange& range, const 
 
 }  // namespace
 
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 Result<double> parse_field(const std::string& text, const FieldRange& range, const std::string& file, int line) {
   const char* begin = text.c_str();
   char* end = nullptr;

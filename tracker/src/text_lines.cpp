@@ -4,9 +4,9 @@
 
 #include "edgetrack/input_file.h"
 
-#include <cstdlib>
+#include <cctype>
 #include <cmath>
-#include <sstream>
+#include <cstdlib>
 
 namespace edgetrack {
 
@@ -18,19 +18,29 @@ Result<bool> read_text_lines(const std::string& path, std::vector<TextLine>& lin
 }
 
 void split_text_lines(const std::string& whole, std::vector<TextLine>& lines) {
-  std::istringstream in(whole);
-  std::string text;
   int number = 0;
-  while (std::getline(in, text)) {
+  // Lines as std::getline cuts them (no empty line after a final newline), words as >> reads
+  // them (the C locale's white space), with no stream: a firmware reading a model links no locale.
+  for (size_t start = 0; start < whole.size();) {
+    size_t end = whole.find('\n', start);
+    if (end == std::string::npos) end = whole.size();
+    std::string text = whole.substr(start, end - start);
+    start = end + 1;
     ++number;
     const size_t hash = text.find('#');
     if (hash != std::string::npos) text.erase(hash);
     if (!text.empty() && text.back() == '\r') text.pop_back();
-    std::istringstream words(text);
     TextLine line;
     line.number = number;
-    std::string word;
-    while (words >> word) line.tokens.push_back(word);
+    for (size_t i = 0; i < text.size();) {
+      if (std::isspace(static_cast<unsigned char>(text[i]))) {
+        ++i;
+        continue;
+      }
+      const size_t word = i;
+      while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+      line.tokens.push_back(text.substr(word, i - word));
+    }
     line.text = text;
     if (!line.tokens.empty()) lines.push_back(std::move(line));
   }

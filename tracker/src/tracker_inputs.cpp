@@ -3,8 +3,8 @@
 #include "edgetrack/tracker_inputs.h"
 
 #include <cmath>
-#include <sstream>
 
+#include "edgetrack/number_text.h"
 #include "edgetrack/pose_io.h"
 
 namespace edgetrack {
@@ -19,12 +19,6 @@ bool finite_within(const Vec3& p, double bound) {
   return finite_within(p.x, bound) && finite_within(p.y, bound) && finite_within(p.z, bound);
 }
 
-std::string text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 }  // namespace
 
 std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
@@ -36,7 +30,8 @@ std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
   for (const auto& f : focal) {
     const double v = static_cast<double>(f.value);
     if (!(std::isfinite(v) && v > 0 && v <= kMaxFocalPx))
-      return refuse(std::string(f.name) + " must be in (0, " + text(kMaxFocalPx) + "] pixels, not " + text(v));
+      return refuse(std::string(f.name) + " must be in (0, " + number_text(kMaxFocalPx) + "] pixels, not " +
+                    number_text(v));
   }
   const struct {
     const char* name;
@@ -44,8 +39,8 @@ std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
   } centre[2] = {{"u0", camera.u0}, {"v0", camera.v0}};
   for (const auto& c : centre) {
     if (!finite_within(c.value, kMaxPrincipalPointPx))
-      return refuse(std::string(c.name) + " must be within +-" + text(kMaxPrincipalPointPx) + " pixels, not " +
-                    text(static_cast<double>(c.value)));
+      return refuse(std::string(c.name) + " must be within +-" + number_text(kMaxPrincipalPointPx) + " pixels, not " +
+                    number_text(static_cast<double>(c.value)));
   }
   const LensDistortion& lens = camera.lens;
   if (lens.model != LensModel::kNone && lens.model != LensModel::kVisp && lens.model != LensModel::kOpenCv)
@@ -57,8 +52,8 @@ std::optional<Error> check_intrinsics(const PinholeCamera& camera) {
                        {"p1", lens.p1},   {"p2", lens.p2},   {"k3", lens.k3}};
   for (const auto& c : coefficients) {
     if (!finite_within(c.value, kMaxLensCoefficient))
-      return refuse(std::string("lens coefficient ") + c.name + " must be within +-" + text(kMaxLensCoefficient) +
-                    ", not " + text(static_cast<double>(c.value)));
+      return refuse(std::string("lens coefficient ") + c.name + " must be within +-" +
+                    number_text(kMaxLensCoefficient) + ", not " + number_text(static_cast<double>(c.value)));
   }
   return std::nullopt;
 }
@@ -93,7 +88,8 @@ std::optional<Error> check_tracked_model(const EdgeModel& model) {
   for (const SurfaceTriangle& t : model.cylinder_surface)
     for (const Vec3& p : t.corners) inside = inside && finite_within(p, kMaxModelCoordinate);
   if (!inside)
-    return Error{"", 0, "the model has a point that is not a finite number within +-" + text(kMaxModelCoordinate) + " m"};
+    return Error{
+        "", 0, "the model has a point that is not a finite number within +-" + number_text(kMaxModelCoordinate) + " m"};
   return std::nullopt;
 }
 
@@ -103,7 +99,7 @@ std::optional<std::string> check_start_pose(const Se3& camera_from_model) {
     for (const real& entry : row)
       if (!finite_within(entry, 1)) return std::string("has a rotation entry that is not a finite number in [-1, 1]");
   if (!finite_within(camera_from_model.translation(), kMaxPosTranslation))
-    return "has a translation that is not a finite number within +-" + text(kMaxPosTranslation) + " m";
+    return "has a translation that is not a finite number within +-" + number_text(kMaxPosTranslation) + " m";
   // R R^T = I within what a rotation read from 6 decimals (or built in fixed point) keeps.
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {

@@ -3,18 +3,12 @@
 #include "edgetrack/tracker_params.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "edgetrack/angles.h"
+#include "edgetrack/number_text.h"
 
 namespace edgetrack {
 namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 /// "<ecm><range><tracking>" from "ecm/range/tracking".
 std::string element_path(const std::string& field) {
@@ -24,12 +18,12 @@ std::string element_path(const std::string& field) {
 }
 
 SettingProblem problem(const std::string& field, const std::string& limit, double value) {
-  return {field, element_path(field) + " must be " + limit + ", not " + number(value)};
+  return {field, element_path(field) + " must be " + limit + ", not " + number_text(value)};
 }
 
 /// A setting no XML element holds, named in words.
 SettingProblem unfiled(const std::string& name, const std::string& limit, double value) {
-  return {"", name + " must be " + limit + ", not " + number(value)};
+  return {"", name + " must be " + limit + ", not " + number_text(value)};
 }
 
 bool finite(const real& value) { return std::isfinite(static_cast<double>(value)); }
@@ -72,7 +66,7 @@ std::optional<SettingProblem> first_not_finite(const TrackerParams& p) {
   for (const auto& r : reals) {
     if (finite(r.value)) continue;
     const std::string name = *r.field ? element_path(r.field) : std::string(r.name);
-    return SettingProblem{r.field, name + " must be a finite number, not " + number(static_cast<double>(r.value))};
+    return SettingProblem{r.field, name + " must be a finite number, not " + number_text(static_cast<double>(r.value))};
   }
   return std::nullopt;
 }
@@ -91,7 +85,8 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
   if (me.mu1 < real(0) || me.mu1 > real(1)) return problem("ecm/contrast/mu1", "in [0, 1]", static_cast<double>(me.mu1));
   if (me.mu2 < real(0) || me.mu2 > real(1)) return problem("ecm/contrast/mu2", "in [0, 1]", static_cast<double>(me.mu2));
   if (me.sample_step < real(kMinSampleStep))
-    return problem("ecm/sample/step", "at least " + number(kMinSampleStep) + " pixel", static_cast<double>(me.sample_step));
+    return problem("ecm/sample/step", "at least " + number_text(kMinSampleStep) + " pixel",
+                   static_cast<double>(me.sample_step));
   const FaceVisibilityParams& faces = params.faces;
   if (faces.angle_appear < real(0) || faces.angle_appear > real(kPi))
     return problem("face/angle_appear", "0..180 degrees", static_cast<double>(faces.angle_appear) * kDegreesPerRadian);
@@ -102,7 +97,8 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
   if (faces.far_clipping && !(faces.far_distance > real(0)))
     return problem("face/far_clipping", "positive (metres)", static_cast<double>(faces.far_distance));
   if (faces.near_clipping && faces.far_clipping && !(faces.far_distance > faces.near_distance))
-    return problem("face/far_clipping", "beyond near_clipping (" + number(static_cast<double>(faces.near_distance)) + " m)",
+    return problem("face/far_clipping",
+                   "beyond near_clipping (" + number_text(static_cast<double>(faces.near_distance)) + " m)",
                    static_cast<double>(faces.far_distance));
   if (faces.min_line_length < real(0))
     return problem("lod/min_line_length_threshold", "at least 0 pixels", static_cast<double>(faces.min_line_length));

@@ -4,6 +4,7 @@
 
 inline namespace edgetrack_ports {
 
+#if !defined(EDGETRACK_RGB565_BY_RULE)
 namespace {
 
 /// The grey of every RGB565 value by the rule: one table load per pixel (64 KB of constants),
@@ -21,6 +22,7 @@ constexpr Rgb565Greys make_rgb565_greys() {
 constexpr Rgb565Greys kRgb565Greys = make_rgb565_greys();
 
 }  // namespace
+#endif
 
 void vpImageConvert::convert(const vpImage<vpRGBa>& src, vpImage<unsigned char>& dest) {
   dest.resize(src.getHeight(), src.getWidth());
@@ -46,6 +48,9 @@ void vpImageConvert::RGBaToGrey(unsigned char* rgba, unsigned char* grey, unsign
 }
 
 void vpImageConvert::RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, unsigned int size) {
+#if defined(EDGETRACK_RGB565_BY_RULE)
+  for (; size > 0; --size) *grey++ = rgb565ToGrey(*rgb565++);
+#else
   const unsigned char* table = kRgb565Greys.grey;
   // Four pixels a round: the loop's own compare and branch are a third of a pixel's cost.
   for (; size >= 4; size -= 4, rgb565 += 4, grey += 4) {
@@ -55,6 +60,7 @@ void vpImageConvert::RGB565ToGrey(const uint16_t* rgb565, unsigned char* grey, u
     grey[3] = table[rgb565[3]];
   }
   for (; size > 0; --size) *grey++ = table[*rgb565++];
+#endif
 }
 
 void vpImageConvert::RGB565ToGrey(const uint8_t* src, unsigned int src_stride, unsigned char* grey,

@@ -1,13 +1,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Reads a GNU ld map file of a firmware image (toolchains/mcu/mps2-an385.ld) and prints, per
 # library (or object) linked in, the bytes it puts in flash (code, constants, unwinding tables,
-# the initial values of .data) and in static RAM (.data, .bss): "<library> <flash> <ram>".
+# the initial values of .data) and in static RAM (.data, .bss): "<library> <flash> <ram>". With
+# -v by=object, per object instead ("libtracker.a(pose_solver.cpp.obj)" as "pose_solver.cpp.obj").
 function hex(s,   v, i) {
   v = 0; s = tolower(substr(s, 3))
   for (i = 1; i <= length(s); ++i) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1
   return v
 }
 function library(path,   n, parts) {
+  if (by == "object" && path ~ /\(.*\)$/) { sub(/^.*\(/, "", path); sub(/\)$/, "", path) }
   sub(/\(.*$/, "", path)
   n = split(path, parts, "/")
   return parts[n]

@@ -118,6 +118,33 @@ echo "| stack high-water (painted stack) | $(kb "$t_stack") KB | |"
 echo "| RAM in all | $(kb "$t_ram") KB | 192 KB: $(met "$t_ram" 192) |"
 echo
 by_library "$mcu_dir/app/mcu/tracker_firmware.map"
+# The tree's own objects in the tracker firmware, each built for speed (the hot sources' options,
+# toolchains/mcu/hot_sources.cmake, read from the tree's build.ninja) or for size (-Os).
+hot_flags=$(sed -n 's/^EDGETRACK_MCU_HOT_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
+built_for() {
+  awk -v o="/$1:" -v hot="$hot_flags" '$1 == "build" && index($2, o) { f = 1; next }
+    f && /FLAGS =/ { print (index($0, hot) ? "speed" : "size"); exit }' "$mcu_dir/build.ninja"
+}
+awk -v by=object -f "$here/flash_and_ram.awk" "$mcu_dir/app/mcu/tracker_firmware.map" | sort -k2,2nr |
+  awk '$1 ~ /\.(cpp|cxx|c)\.obj$/ { print $1, $2 }' >objects.txt
+speed_bytes=0 size_bytes=0 speed_objects=0
+while read -r object bytes; do
+  if [ "$(built_for "$object")" = speed ]; then
+    speed_bytes=$((speed_bytes + bytes)) speed_objects=$((speed_objects + 1))
+  else
+    size_bytes=$((size_bytes + bytes))
+  fi
+done <objects.txt
+echo
+echo "The tree's own code in it: $(kb "$speed_bytes") KB in the $speed_objects sources built for speed (\`$hot_flags\`,"
+echo "where the frames spend their instructions: toolchains/mcu/hot_sources.cmake) and $(kb "$size_bytes") KB in the others,"
+echo "built for size (-Os). Its largest objects:"
+echo
+echo "| object | built for | flash (KB) |"
+echo "|---|---|---:|"
+head -n 15 objects.txt | while read -r object bytes; do
+  echo "| $object | $(built_for "$object") | $(kb "$bytes") |"
+done
 echo
 echo "### The tracker's heap per buffer at QVGA (Cortex-M3, after the 20 frames)"
 echo

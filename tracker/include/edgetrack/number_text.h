@@ -24,6 +24,10 @@ Result<double> parse_field(const std::string& text, const FieldRange& range, con
 Result<long long> parse_whole_field(const std::string& text, const FieldRange& range, const std::string& file,
                                     int line);
 
+/// `value` as a std::ostream prints a double by default (printf's "%g"), with no stream or locale:
+/// the numbers of the settings' and inputs' refusals.
+std::string number_text(double value);
+
 /// One white-space separated word of a text file, with its 1-based line.
 struct Word {
   std::string text;

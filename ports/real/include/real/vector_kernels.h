@@ -24,8 +24,14 @@ Choice chosen();
 /// its AVX2 kernels.
 bool avx2();
 
+// GCC builds a kernel twice, vectorised and one by one, where the target has a vector unit; a
+// 32-bit ARM without NEON (the PXA270, a Cortex-M3) has none, so its one copy is the reference.
+#if defined(__GNUC__) && !defined(__clang__) && !(defined(__arm__) && !defined(__ARM_NEON))
+#define EDGETRACK_VECTOR_KERNELS_TWICE 1
+#endif
+
 namespace detail {
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(EDGETRACK_VECTOR_KERNELS_TWICE)
 #if defined(__x86_64__)
 template <class Body>
 [[gnu::target("avx2")]] auto built_for_avx2(const Body& body) {
@@ -44,7 +50,7 @@ template <class Body>
 /// vectorisation (the scalar reference) when kScalar is chosen, else for the build's target.
 template <class Body>
 auto run(const Body& body) {
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(EDGETRACK_VECTOR_KERNELS_TWICE)
 #if defined(__x86_64__)
   if (avx2()) return detail::built_for_avx2(body);
 #endif

@@ -10,14 +10,17 @@
 #error "edgetrack's drop-in vnl/vnl_nonlinear_minimizer.h and VXL's cannot be mixed in one translation unit (see docs/INSTALL.md)"
 #endif
 
-#include <iomanip>
-#include <iostream>
+#include <iosfwd>
 #include <limits>
 #include <string>
 
 #include "vnl/vnl_matrix.h"
 
 inline namespace edgetrack_ports {
+
+/// The verbose line of one iteration on std::cerr ("Iter    n, Eval    m: Best F = f"), out of
+/// line so that the header reaches no <iostream> (a firmware that never prints links none).
+void vnl_nonlinear_minimizer_print_iteration(int iterations, int evaluations, double best_f);
 
 template <class T>
 class vnl_nonlinear_minimizer_of {
@@ -121,10 +124,8 @@ class vnl_nonlinear_minimizer_of {
   /// Records one iteration; returns true to ask the minimiser to stop (never, by default).
   virtual bool report_iter() {
     ++num_iterations_;
-    if (verbose_) {
-      std::cerr << "Iter " << std::setw(4) << num_iterations_ << ", Eval " << std::setw(4) << num_evaluations_
-                << ": Best F = " << std::setw(10) << end_error_ << '\n';
-    }
+    if (verbose_)
+      vnl_nonlinear_minimizer_print_iteration(num_iterations_, num_evaluations_, static_cast<double>(end_error_));
     return false;
   }
 
