@@ -37,6 +37,7 @@ DECLARE(test_lens_tracking_wood_toy_barrel);
 DECLARE(test_android_frames);
 DECLARE(test_visp_cube_poses);
 DECLARE(test_vector_kernels);
+DECLARE(test_rolling_shutter_tracking_cube);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -74,6 +75,7 @@ void register_tests() {
   REGISTER(test_android_frames);
   REGISTER(test_visp_cube_poses);
   REGISTER(test_vector_kernels);
+  REGISTER(test_rolling_shutter_tracking_cube);
 }
 
 DEFINE_MAIN
