@@ -70,6 +70,7 @@ void move_to_row_times(std::vector<ControlPoint>& points, const PinholeCamera& c
 
 void RowTimes::move(std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose,
                     const Twist& velocity, const real& readout) {
+  if (readout == real(0) || is_zero(velocity)) return;  // a global shutter copies nothing
   sampled_ = points;
   move_to_row_times(points, camera, pose, velocity, readout);
 }

@@ -49,7 +49,8 @@ void move_to_row_times(std::vector<ControlPoint>& points, const PinholeCamera& c
 /// a half) for a second solve.
 class RowTimes {
  public:
-  /// move_to_row_times, keeping the points as sampled for again().
+  /// move_to_row_times, keeping the points as sampled for again() (with readout 0 or a zero
+  /// velocity, nothing: again() is then not called).
   void move(std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose, const Twist& velocity,
             const real& readout);
   /// The model points of `points` (those move() moved) and of `matches` (found for them, in
