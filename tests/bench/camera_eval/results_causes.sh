@@ -22,26 +22,16 @@ mean_over() {
   bench_value distance_mm "$work/part.txt"
 }
 
-# What `track` is given beside the defaults for the next rows: the rows' readout (--readout) and
-# synth's intrinsics.xml (the lens).
-track_readout=""
-lens_given=false
-
 # row LABEL OPTIONS...: renders the cube with synth OPTIONS, tracks it with the defaults.
 row() {
   local label=$1 seq=$work/seq
   shift
   rm -rf "$seq"
   "$edgetrack" synth --out "$seq" --model "$model" --pgm "$@" >/dev/null
-  local given=()
-  [ -n "$track_readout" ] && given+=(--readout "$track_readout")
-  $lens_given && given+=(--intrinsics "$seq/intrinsics.xml")
   "$edgetrack" track --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
-    --images "$seq/frames/frame%04d.pgm" --poses "$work/poses.csv" --quiet "${given[@]}" >/dev/null
+    --images "$seq/frames/frame%04d.pgm" --poses "$work/poses.csv" --quiet >/dev/null
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
-  local options="\`$*\`"
-  [ ${#given[@]} -gt 0 ] && options+="; track \`${given[*]/$seq\//}\`"
-  printf '| %s | %s | %d | %.3f | %.3f | %.3f |\n' "$label" "$options" "$(bench_value lost "$work/eval.txt")" \
+  printf '| %s | `%s` | %d | %.3f | %.3f | %.3f |\n' "$label" "$*" "$(bench_value lost "$work/eval.txt")" \
     "$(bench_value distance_mm "$work/eval.txt")" "$(mean_over "$work/poses.csv" "$seq/truth.csv" 0 29)" \
     "$(mean_over "$work/poses.csv" "$seq/truth.csv" 30 59)"
 }
@@ -53,10 +43,9 @@ echo "exposure step comes at frame 30). Rolling shutter: the tracker fits one ri
 echo "different times, so its error grows with the shear (the rows' read times times the motion)."
 echo "Saturation: 40 % brighter, the cube's lit faces clip at 255; a sharp edge stays where it is, but the"
 echo "ramp of a blurred edge is cut on its bright side, which moves the edge the tracker finds towards"
-echo "the dark side. \"readout given\": \`track --readout\` with synth's readout, each row seen at its own time"
-echo "(docs/ARCHITECTURE.md, \"Rolling shutter\"): the shear's cost goes, saturation's stays."
+echo "the dark side."
 echo
-echo "| sequence | options | lost | mean mm | frames 0-29 mm | frames 30-59 mm |"
+echo "| sequence | synth options | lost | mean mm | frames 0-29 mm | frames 30-59 mm |"
 echo "|---|---|---:|---:|---:|---:|"
 row "fast" --speed "$fast_speed"
 row "fast, rows read over half a frame" --speed "$fast_speed" --readout 0.5
@@ -64,10 +53,3 @@ row "fast, rows read over a frame" --speed "$fast_speed" --readout 1
 row "exposure +40 % (sharp edges)" --exposure "$step_up"
 row "fast, motion blur" --speed "$fast_speed" --shutter 1
 row "fast, motion blur, exposure +40 %" --speed "$fast_speed" --shutter 1 --exposure "$step_up"
-track_readout=0.5
-row "fast, rows read over half a frame, readout given" --speed "$fast_speed" --readout 0.5
-track_readout=1
-row "fast, rows read over a frame, readout given" --speed "$fast_speed" --readout 1
-lens_given=true
-row "all at once, readout given" --kud -0.25 --speed "$fast_speed" --shutter 1 --readout 1 --exposure "$step_up" \
-  --jpeg 50 --supersample 2
