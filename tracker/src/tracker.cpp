@@ -361,10 +361,10 @@ void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams&
   if (params_.readout == real(0) || !solution.solved || is_zero(motion_.velocity()) || motion_.lost_last_frame()) return;
   const Twist own = (solution.camera_from_model * motion_.trusted().inverse()).log();
   row_times_.again(visible_, matches_, camera_, start, own, params_.readout);
-  const PoseSolution first = solution;
-  solution = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
-  solution.evaluations += first.evaluations;
-  solution.iterations += first.iterations;
+  PoseSolution second = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
+  second.evaluations += solution.evaluations;
+  second.iterations += solution.iterations;
+  if (second.solved) solution = second;  // else the first solve's pose stands
 }
 
 void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range,
