@@ -157,6 +157,7 @@ struct TrackRequest {
   SourceOptions source;
   int factor = 1;  ///< --downscale
   int hypotheses = 1;
+  std::optional<double> readout;  ///< --readout, over the configuration's
   bool from_points = false;  ///< --init with --init-points
   bool clicked = false;      ///< --init-click
   bool automatic = false;    ///< --init-auto
@@ -220,6 +221,9 @@ const CommandLine& track_command_line() {
           {"--hypotheses", "N", "edge hypotheses per control point, 1 to 4: the strongest edge along the normal and the next "
                                 "local maxima; the pose step uses the nearest (docs/ME.md)",
            std::to_string(edgetrack::TrackerParams{}.hypotheses)},
+          {"--readout", "T", "rolling shutter: the rows are read over T frame intervals, top first (negative: bottom "
+                             "first), -1..1; the readout time times the frame rate (default: the configuration's "
+                             "<edgetrack><camera><readout>, else 0, a global shutter)", ""},
           {"--status", "NAME=VALUE[,NAME=VALUE...]",
            "status rule settings over the configuration's, named as in its <status> block (docs/APP.md)", ""},
           {"--thin-lines", "NAME=VALUE[,NAME=VALUE...]",
@@ -260,6 +264,15 @@ std::optional<int> parse_request(int argc, char** argv, TrackRequest& request) {
   with_hypotheses.hypotheses = hypotheses.value();
   if (auto refused = edgetrack::check_tracker_params(with_hypotheses))
     return report("track", {"--hypotheses", 0, refused->message}) + 1;
+  if (a.has("--readout")) {
+    auto readout = a.number("--readout");
+    if (!readout.ok()) return report("track", readout.error()) + 1;
+    edgetrack::TrackerParams with_readout;
+    with_readout.readout = real(readout.value());  // set-up time conversion
+    if (auto refused = edgetrack::check_tracker_params(with_readout))
+      return report("track", {"--readout", 0, refused->message}) + 1;
+    request.readout = readout.value();
+  }
   source.first = first.value();
   source.last = last.value();
   source.camera_device = device.value();
@@ -303,6 +316,7 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   in.notes = config.value().notes;
   edgetrack::TrackerParams params = config.value().config.params;
   params.hypotheses = request.hypotheses;
+  if (request.readout) params.readout = real(*request.readout);  // set-up time conversion
   auto status = apply_status_option(a.text("--status"), params.status);
   if (!status.ok()) return report("track", status.error()) + 1;
   auto thin_lines = apply_thin_lines_option(a.text("--thin-lines"), params.thin_lines);

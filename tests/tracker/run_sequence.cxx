@@ -7,6 +7,7 @@
 #include "edgetrack/model_io.h"
 #include "edgetrack/scene_extras.h"
 #include "edgetrack/scene_renderer.h"
+#include "rolling_shutter_render.h"
 
 using namespace edgetrack;
 
@@ -77,8 +78,12 @@ SequenceRun run_sequence(Scene scene, int frames, bool visibility_check, const T
       silhouette_columns(model.value(), camera, run.truth[k], mask, columns);
       additions.band = occluder_band(columns, sweeping_centre(columns, k, frames), real(spec.cover));
     }
-    renderer.render(content == FrameContent::kNoObject ? nothing : model.value(), run.truth[k],
-                    static_cast<uint32_t>(1000 + k), additions, frame);
+    if (spec.readout != 0)
+      render_rolling_shutter(renderer, model.value(), run.truth, k, spec.readout, spec.readout_renders,
+                             static_cast<uint32_t>(1000 + k), frame);
+    else
+      renderer.render(content == FrameContent::kNoObject ? nothing : model.value(), run.truth[k],
+                      static_cast<uint32_t>(1000 + k), additions, frame);
     if (content == FrameContent::kNoise || content == FrameContent::kFlat) fill(content, static_cast<uint32_t>(k), frame);
     const Se3 sampling_pose = tracker.value().camera_from_model();
     const FrameResult result = tracker.value().track(rgb565_view(frame)).value();

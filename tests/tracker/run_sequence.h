@@ -34,6 +34,11 @@ struct SequenceSpec {
   /// it (or tracks with the pinhole alone, as a user who leaves the distortion out).
   edgetrack::LensDistortion lens;
   bool lens_given = true;
+  /// As `edgetrack synth --readout`: the rows read over this many frame intervals, top first
+  /// (0: a global shutter), from `readout_renders` renders a frame (rolling_shutter_render.h);
+  /// the scene alone: not with `content`, `cover` or `clutter`.
+  double readout = 0;
+  int readout_renders = 13;
 };
 
 struct SequenceRun {

@@ -15,6 +15,7 @@ DECLARE(test_status_rule);
 DECLARE(test_motion_model);
 DECLARE(test_cao_format);
 DECLARE(test_contours);
+DECLARE(test_rolling_shutter);
 DECLARE(test_input_checks);
 DECLARE(test_face_visibility);
 DECLARE(test_cylinder_windows);
@@ -46,6 +47,7 @@ void register_tests() {
   REGISTER(test_motion_model);
   REGISTER(test_cao_format);
   REGISTER(test_contours);
+  REGISTER(test_rolling_shutter);
   REGISTER(test_input_checks);
   REGISTER(test_face_visibility);
   REGISTER(test_cylinder_windows);

@@ -147,6 +147,18 @@ void status_block() {
   TEST_EQUAL("  and ViSP's range beside them", config.params.me.range, 6u);
 }
 
+/// The camera's rolling-shutter readout, in edgetrack's block beside ViSP's <camera>.
+void readout_block() {
+  TrackerConfig config;
+  TEST("a global shutter by default", config.params.readout == real(0), true);
+  auto read = apply_visp_config(write("readout.xml", "<conf><camera><px>300</px></camera>"
+                                                     "<edgetrack><camera><readout>0.75</readout></camera></edgetrack></conf>"),
+                                config);
+  TEST("a file with <edgetrack><camera><readout> is read", read.ok(), true);
+  TEST_NEAR("  the readout", config.params.readout, 0.75, 1e-6);
+  TEST_NEAR("  and ViSP's camera beside it", config.camera.px, 300, 1e-6);
+}
+
 void refused(const std::string& name, const std::string& xml, int line, const std::string& element) {
   TrackerConfig config;
   const TrackerConfig before = config;
@@ -198,6 +210,12 @@ void bad_values() {
   refused("fov.xml", "<conf>\n<face><fov_clipping>yes</fov_clipping></face>\n</conf>\n", 2, "<face><fov_clipping>");
   refused("lod.xml", "<conf>\n<lod>\n<min_polygon_area_threshold>-4</min_polygon_area_threshold>\n</lod>\n</conf>\n", 3,
           "<lod><min_polygon_area_threshold>");
+  refused("readout.xml", "<conf>\n<edgetrack>\n<camera>\n<readout>1.5</readout>\n</camera>\n</edgetrack>\n</conf>\n", 4,
+          "<edgetrack><camera><readout>");
+  refused("readout_text.xml", "<conf><edgetrack><camera>\n<readout>fast</readout></camera></edgetrack></conf>", 2,
+          "<edgetrack><camera><readout>");
+  refused("readout_name.xml", "<conf><edgetrack><camera>\n\n<read_out>0.5</read_out></camera></edgetrack></conf>", 3,
+          "<edgetrack><camera><read_out>");
   refused("status.xml", "<conf>\n<edgetrack>\n<status>\n<learning_rate>0</learning_rate>\n</status>\n</edgetrack>\n</conf>\n",
           4, "<edgetrack><status><learning_rate>");
   refused("status_share.xml", "<conf>\n<status><min_inlier_share>1.5</min_inlier_share></status>\n</conf>\n", 2,
@@ -240,6 +258,7 @@ static void test_visp_config() {
   blocks();
   precedence();
   status_block();
+  readout_block();
   bad_values();
 }
 

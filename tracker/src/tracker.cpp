@@ -16,6 +16,7 @@
 #include "edgetrack/motion_model.h"
 #include "edgetrack/moving_edges.h"
 #include "edgetrack/pose_uncertainty.h"
+#include "edgetrack/rolling_shutter.h"
 #include "edgetrack/status_statistics.h"
 #include "edgetrack/thin_lines.h"
 #include "edgetrack/tracker_inputs.h"
@@ -112,6 +113,7 @@ class Tracker::State {
   std::vector<PixelBox> read_boxes_;  ///< per visible point, the pixels its moving-edge search reads
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
+  RowTimes row_times_;  ///< a rolling shutter's control points as sampled, before their rows' times
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
   std::vector<unsigned char> borrowed_;  ///< per visible point, nonzero: its reference is its primitive's
@@ -147,6 +149,9 @@ class Tracker::State {
   /// The status measures of the attempt from `start` searching `range` and the rule's judgement.
   void judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range, std::uint64_t saturations,
              FrameResult& result) const;
+  /// A rolling shutter's frame, solved from the last trusted poses' velocity, is solved again
+  /// from `start` with the velocity from the last trusted pose to `solution` (rolling_shutter.h).
+  void resolve_at_own_velocity(const Se3& start, const PoseParams& pose_params, PoseSolution& solution);
   /// The motion model and the contrast memory take the frame's result; the next frame's start.
   void conclude(FrameResult& result);
   /// A camera created without an image size takes the first frame's: the camera is checked
@@ -253,7 +258,7 @@ TrackerMemory Tracker::memory() const {
   m.control_points = capacity_bytes(s.sampled_) + capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
                      capacity_bytes(s.references_) + capacity_bytes(s.borrowed_);
   m.matches = capacity_bytes(s.matches_);
-  m.pose_workspace = s.pose_workspace_.heap_bytes();
+  m.pose_workspace = s.pose_workspace_.heap_bytes() + s.row_times_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
   return m;
 }
@@ -392,6 +397,7 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
     return;
   }
   keep_visible(sampled_, edge_ids_, visible_);
+  row_times_.move(visible_, camera_, start, motion_.velocity(), params_.readout);
   if (guessing) {
     references_.assign(visible_.size(), real(0));
     borrowed_.assign(visible_.size(), 0);
@@ -423,12 +429,23 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   // clutter beyond stands out. A prediction after a loss is no start near anything.
   pose_params.weigh_at_start = !guessing || (start_is_guess_ && !started_ && !motion_.lost_last_frame());
   result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
+  resolve_at_own_velocity(start, pose_params, result.pose);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
   result.points_matched = static_cast<int>(matches_.size()) - result.pose.outliers;
   judge(grey, start, range, saturations, result);
   grey_in_place_.init(nullptr, 0, 0);  // the frame is the caller's: nothing may point into it after track
+}
+
+void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams& pose_params, PoseSolution& solution) {
+  if (params_.readout == real(0) || !solution.solved || is_zero(motion_.velocity()) || motion_.lost_last_frame()) return;
+  const Twist own = (solution.camera_from_model * motion_.trusted().inverse()).log();
+  row_times_.again(visible_, matches_, camera_, start, own, params_.readout);
+  PoseSolution second = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
+  second.evaluations += solution.evaluations;
+  second.iterations += solution.iterations;
+  if (second.solved) solution = second;  // else the first solve's pose stands
 }
 
 void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range,

@@ -6,6 +6,7 @@
 
 #include "edgetrack/angles.h"
 #include "edgetrack/number_text.h"
+#include "edgetrack/rolling_shutter.h"
 
 namespace edgetrack {
 namespace {
@@ -62,6 +63,7 @@ std::optional<SettingProblem> first_not_finite(const TrackerParams& p) {
       {"", "the status' pose uncertainty bound", p.status.max_pose_uncertainty_px},
       {"", "the status' lost uncertainty share", p.status.lost_uncertainty_range_share},
       {"", "the status' edge location error", p.status.edge_location_px},
+      {"edgetrack/camera/readout", "", p.readout},
   };
   for (const auto& r : reals) {
     if (finite(r.value)) continue;
@@ -131,6 +133,8 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
     return unfiled("the motion's largest range factor", "1..16", motion.max_range_factor);
   if (motion.recovery_frames < 0 || motion.start_frames < 0)
     return SettingProblem{"", "the motion's recovery and start frames must be at least 0"};
+  if (params.readout < real(-kMaxReadout) || params.readout > real(kMaxReadout))
+    return problem("edgetrack/camera/readout", "-1..1 frame intervals", static_cast<double>(params.readout));
   const std::string status = check_status_params(params.status);
   if (!status.empty()) return SettingProblem{"", status};
   const ThinLineParams& lines = params.thin_lines;

@@ -227,12 +227,25 @@ class Reading {
     return true;
   }
 
-  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status> and <thin_lines>.
+  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status>, <thin_lines> and <camera>.
   Result<bool> edgetrack_block(const XmlElement& block) {
     for (const XmlElement& e : block.children) {
       Result<bool> read = true;
       if (e.name == "status") read = status(e, "<edgetrack><status>");
       else if (e.name == "thin_lines") read = thin_lines(e, "<edgetrack><thin_lines>");
+      else if (e.name == "camera") read = camera_timing(e);
+      if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  /// The camera's timing, which ViSP's pinhole has none of: <edgetrack><camera><readout>. An
+  /// element that names no setting is refused, as in <status>.
+  Result<bool> camera_timing(const XmlElement& block) {
+    for (const XmlElement& e : block.children) {
+      const std::string where = "<edgetrack><camera><" + e.name + ">";
+      if (e.name != "readout") return bad(e, where, "is no camera setting of edgetrack's (readout is)");
+      auto read = measure(e, where, 1, config_.params.readout);
       if (!read.ok()) return read;
     }
     return true;

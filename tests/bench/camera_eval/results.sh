@@ -64,15 +64,18 @@ parting_line() {
     "$(grep -c ' found ' "$work/matches_s40.txt")" "$(grep -c ' outlier 1 ' "$work/matches_s40.txt")"
 }
 
-# row LABEL NAME MODEL LENS [READOUT]: ours in double (`track`, `eval`) and S40.23 (against the double's
-# poses), with synth's intrinsics.xml when LENS is "given"; ViSP's tracker (`compare`) on the
-# sequence's pinhole camera.xml unless the lens is given (compare has no lens for ViSP). READOUT:
-# synth's --readout of the sequence (0 when not given), for the frame-by-frame measure.
+# row LABEL NAME MODEL LENS [READOUT [TRACKED_READOUT]]: ours in double (`track`, `eval`) and S40.23
+# (against the double's poses), with synth's intrinsics.xml when LENS is "given"; ViSP's tracker
+# (`compare`) on the sequence's pinhole camera.xml unless the lens or the readout is given (compare
+# passes neither to ViSP). READOUT: synth's --readout of the sequence (0 when not given), for the
+# frame-by-frame measure; TRACKED_READOUT: `track --readout`, the readout given to our tracker (the
+# frame-by-frame measures are those of a tracker of one rigid pose per frame: not for these rows).
 row() {
-  local label=$1 seq=$work/$2 model=$3 lens=$4 readout=${5:-0}
+  local label=$1 seq=$work/$2 model=$3 lens=$4 readout=${5:-0} tracked_readout=${6:-}
   local args=(--model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos"
               --images "$seq/frames/frame%04d.pgm" --quiet)
   [ "$lens" = given ] && args+=(--intrinsics "$seq/intrinsics.xml")
+  [ -n "$tracked_readout" ] && args+=(--readout "$tracked_readout")
   "$edgetrack" track "${args[@]}" --poses "$work/poses.csv" >/dev/null
   "$edgetrack" eval --poses "$work/poses.csv" --truth "$seq/truth.csv" >"$work/eval.txt"
   "$edgetrack_s40" track "${args[@]}" --poses "$work/poses_s40.csv" >/dev/null
@@ -80,7 +83,7 @@ row() {
   cut -d, -f1-7 "$work/poses.csv" >"$work/double_poses.csv"
   "$edgetrack" eval --poses "$work/poses_s40.csv" --truth "$work/double_poses.csv" >"$work/s40.txt"
   local visp="| - | - | - "
-  if [ "$lens" != given ]; then
+  if [ "$lens" != given ] && [ -z "$tracked_readout" ]; then
     "$edgetrack" compare --model "$model" --camera "$seq/camera.xml" --init-pose "$seq/first.pos" \
       --images "$seq/frames/frame%04d.pgm" --truth "$seq/truth.csv" 2>/dev/null >"$work/compare.txt"
     visp=$(printf '| %d | %.3f | %.3f ' "$(bench_value visp_lost "$work/compare.txt")" \
@@ -91,6 +94,7 @@ row() {
     "$(bench_value distance_mm "$work/eval.txt")" "$(bench_value max_distance_mm "$work/eval.txt")" \
     "$(bench_value lost "$work/eval_s40.txt")" "$(bench_value distance_mm "$work/eval_s40.txt")" \
     "$(bench_value max_distance_mm "$work/s40.txt")" "$visp"
+  [ -n "$tracked_readout" ] && return
   local intrinsics=()
   [ "$lens" = given ] && intrinsics=("$seq/intrinsics.xml")
   if awk -v a="$(bench_value max_distance_mm "$work/s40.txt")" -v b="$s40_target_mm" 'BEGIN { exit !(a > b) }'; then
@@ -167,7 +171,9 @@ echo "Ours: \`edgetrack track\` and \`edgetrack eval\` (camera position in the o
 echo "distance to the truth, mm) in the double and S40.23 builds; \"S40.23 - double\": the largest per-frame"
 echo "distance between their camera positions. ViSP 3.5's vpMbGenericTracker (edge) through"
 echo "\`edgetrack compare --truth\` (lost when track() throws) on the pinhole camera: \"-\" where our tracker is"
-echo "given the lens, which \`compare\` does not pass to ViSP."
+echo "given the lens, which \`compare\` does not pass to ViSP. \"readout given\": the same frames tracked with the rows'"
+echo "readout given to our tracker (\`track --readout 1\`: each row seen at its own time, docs/ARCHITECTURE.md,"
+echo "\"Rolling shutter\"); ViSP has no such setting."
 echo
 echo "| sequence | motion px/frame | lost | mean mm | largest mm | S40.23 lost | S40.23 mean mm | S40.23 - double mm | ViSP lost | ViSP mean mm | ViSP largest mm |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -182,10 +188,12 @@ for model in cube60 wood_toy; do
   row "$name, fast" "${model}_fast" "$models/$model.cao" none
   row "$name, fast, motion blur" "${model}_blur" "$models/$model.cao" none
   row "$name, fast, rolling shutter" "${model}_rolling" "$models/$model.cao" none 1
+  row "$name, fast, rolling shutter, readout given" "${model}_rolling" "$models/$model.cao" none 1 1
   row "$name, exposure +40 %" "${model}_brighter" "$models/$model.cao" none
   row "$name, exposure -40 %" "${model}_darker" "$models/$model.cao" none
   row "$name, JPEG $jpeg_quality" "${model}_jpeg" "$models/$model.cao" none
   row "$name, all at once" "${model}_all" "$models/$model.cao" given 1
+  row "$name, all at once, readout given" "${model}_all" "$models/$model.cao" given 1 1
 done
 echo
 echo "The rows over $target_mm mm but those of a lens not given, frame by frame (\`camera_eval_frames\`, double): \"tracked\" the run above; \"half a"

@@ -89,6 +89,13 @@ case $name in
     expect_error "--hypotheses: the number of edge hypotheses must be 1 to 4, not 9" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$mbt/cube/image%04d.pgm" --hypotheses 9
+    expect_error "--readout: <edgetrack><camera><readout> must be -1..1 frame intervals, not 1.5" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
+      --images "$mbt/cube/image%04d.pgm" --readout 1.5
+    printf '<conf>\n<edgetrack>\n<camera>\n<readout>-2</readout>\n</camera>\n</edgetrack>\n</conf>\n' >"$work/readout.xml"
+    expect_error "$work/readout.xml:4: <edgetrack><camera><readout> must be -1..1 frame intervals, not -2" \
+      "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --config "$work/readout.xml" \
+      --init-pose "$mbt/cube.0.pos" --images "$mbt/cube/image%04d.pgm"
     printf '<conf>\n<camera>\n<px>1e308</px>\n</camera>\n</conf>\n' >"$work/huge_px.xml"
     expect_error "$work/huge_px.xml:3: <camera><px>: the camera's px must be in (0, 1e+06] pixels" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$work/huge_px.xml" --init-pose "$mbt/cube.0.pos" \

@@ -66,6 +66,9 @@ class MotionModel {
   /// A lost frame: the prediction moves on by the velocity, damped once more per lost frame;
   /// the next recovery_frames frames search wider.
   void lose(const EdgeModel& model, const PinholeCamera& camera);
+  /// The motion per frame measured from the last trusted poses (camera frame: a frame later the
+  /// pose is exp(velocity()) times it); zero until two frames have been trusted.
+  const Twist& velocity() const { return velocity_; }
   /// True when the last frame was lost (lose() after the last trust() or reset()).
   bool lost_last_frame() const { return frames_since_trusted_ > 1; }
   /// Starts again from `camera_from_model`, at rest, as a new model would.

@@ -62,6 +62,11 @@ struct TrackerParams {
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it
   StatusParams status;  ///< the tracked / uncertain / lost rule
+  /// A rolling shutter's readout time from the first row to the last, in frame intervals (the
+  /// datasheet's readout time times the frame rate), -kMaxReadout..kMaxReadout, negative for
+  /// rows read bottom first (rolling_shutter.h); <edgetrack><camera><readout>. 0, the default,
+  /// is a global shutter: every row seen at the frame's time.
+  real readout{0};
 };
 
 /// A setting outside what the tracker can use.

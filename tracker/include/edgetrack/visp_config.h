@@ -4,7 +4,8 @@
 /// older <sample> beside it), <face> and <lod>. Values the file does not give keep what the
 /// configuration held before, so a second file overrides the first element by element.
 /// edgetrack's own status settings (StatusParams, each element named as its field) come from a
-/// <status> block, or <edgetrack><status>, which ViSP passes over.
+/// <status> block, or <edgetrack><status>, which ViSP passes over; the camera's rolling-shutter
+/// readout (TrackerParams::readout) from <edgetrack><camera><readout>.
 #pragma once
 
 #include <string>
