@@ -76,10 +76,21 @@ bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
   return plain;
 }
 
+/// Runs body() built for the chosen vectors (vector_kernels.h) on x86-64, where AVX2 takes four
+/// doubles where SSE2 takes two (the AVX2 target has no fused multiply-add: the same roundings);
+/// elsewhere as built, the choice's test costing more than it could save.
+template <class Body>
+__attribute__((always_inline)) inline void in_chosen_vectors(const Body& body) {
+#if defined(__x86_64__)
+  vector_kernels::run(body);
+#else
+  body();
+#endif
+}
+
 /// y[i] += s x[i]: MINPACK's loop for floating point, each element's product and sum in a lane
-/// of the chosen vectors (vector_kernels.h: AVX2 takes four doubles where SSE2 takes two; the
-/// target has no fused multiply-add, so the same two roundings); for fixed point the same
-/// operations without the 128-bit product when s is large (real/fixed64.h).
+/// (in_chosen_vectors); for fixed point the same operations without the 128-bit product when s
+/// is large (real/fixed64.h).
 template <class T>
 void add_multiple_of(int n, const T& s, const T* x, T* y) {
   if constexpr (!std::numeric_limits<T>::is_iec559) {
@@ -88,18 +99,18 @@ void add_multiple_of(int n, const T& s, const T* x, T* y) {
     const T* __restrict from = x;
     T* __restrict to = y;
     const T scale = s;
-    vector_kernels::run([&]() __attribute__((always_inline)) {
+    in_chosen_vectors([&]() __attribute__((always_inline)) {
       for (int i = 0; i < n; ++i) to[i] += from[i] * scale;
     });
   }
 }
 
-/// x[i] /= d for i < n (MINPACK's own divisions), each in a lane of the chosen vectors.
+/// x[i] /= d for i < n (MINPACK's own divisions), each in a lane (in_chosen_vectors).
 template <class T>
 void divide_each(int n, T* x, const T& d) {
   T* __restrict to = x;
   const T divisor = d;
-  vector_kernels::run([&]() __attribute__((always_inline)) {
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
     for (int i = 0; i < n; ++i) to[i] /= divisor;
   });
 }
