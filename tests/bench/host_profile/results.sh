@@ -63,7 +63,7 @@ run_args() {
 }
 
 labels=("${revisions[@]}" "working tree")
-declare -A step_row
+declare -A step_row points
 for label in "${labels[@]}"; do
   edgetrack=$(host_edgetrack "$label")
   for run in "${runs[@]}"; do
@@ -72,6 +72,8 @@ for label in "${labels[@]}"; do
     valgrind --tool=callgrind --callgrind-out-file="$work/$key.cg" --toggle-collect='edgetrack::Tracker::track*' \
       "$edgetrack" track $(run_args "$run") --last $((frames - 1)) --poses "$work/$key.csv" --quiet >/dev/null 2>"$work/$key.err"
     step_row[$label.$run]=$(callgrind_steps "$work/$key.cg" "$frames")
+    # The control points per frame: the mean of the poses CSV's points column (matches kept).
+    points[$label.$run]=$(awk -F, 'NR > 1 { s += $8; n++ } END { printf "%.1f", s / n }' "$work/$key.csv")
   done
 done
 
@@ -123,21 +125,38 @@ for run in "${runs[@]}"; do
         part["f"] / f, part["l"] / f, part["d"] / f, part["c"] / f, whole / f, 100 * whole / frame
     }'
 done
+echo
+echo "### Per control point"
+echo
+echo "The same counts over the control points matched per frame (the mean of the poses' points column):"
+echo "instructions per control point in each step, and in the whole Tracker::track."
+echo
+echo "| sequence | build | control points per frame | ME | pose | visible edges | whole Tracker::track |"
+echo "|---|---|---:|---:|---:|---:|---:|"
+for run in "${runs[@]}"; do
+  for label in "${labels[@]}"; do
+    echo "${step_row[$label.$run]}" | awk -F'|' -v run="$run" -v label="$label" -v n="${points[$label.$run]}" '
+      function per_point(field) { split(field, part, " "); return sprintf("%.0f", part[1] * 1e6 / n) }
+      { printf "| %s | %s | %s | %s | %s | %s | %s |\n", run, label, n, per_point($3), per_point($4), per_point($1),
+          per_point($6) }'
+  done
+done
 for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480" "generated wood toy QVGA"; do
   key="working_tree.${run//[ \/]/_}"
   total=$(callgrind_annotate "$work/$key.cg" 2>/dev/null | sed -n 's/^ *\([0-9,]*\) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
   echo
   echo "### $run, working tree: the $top_functions largest functions"
   echo
-  echo "Instructions per frame in each function's own code (inlined callees included), and its share of Tracker::track."
+  echo "Instructions per frame in each function's own code (inlined callees included), per control point"
+  echo "(${points[working tree.$run]} per frame), and its share of Tracker::track."
   echo
-  echo "| function | instructions per frame | share |"
-  echo "|---|---:|---:|"
+  echo "| function | instructions per frame | per control point | share |"
+  echo "|---|---:|---:|---:|"
   callgrind_annotate "$work/$key.cg" 2>/dev/null |
     awk -v n="$top_functions" '/file:function/ { go = 1; next } go && /^ *[0-9,]+ / && shown++ < n { print }' |
     while read -r count _ rest; do
       name=$(echo "$rest" | sed 's/^[^:]*://; s/ \[.*//; s/(anonymous namespace):://g; s/(.*//')
-      awk -v c="${count//,/}" -v t="$total" -v f="$frames" -v n="$name" \
-        'BEGIN { printf "| `%s` | %.0f | %.1f %% |\n", n, c / f, 100 * c / t }'
+      awk -v c="${count//,/}" -v t="$total" -v f="$frames" -v n="$name" -v p="${points[working tree.$run]}" \
+        'BEGIN { printf "| `%s` | %.0f | %.0f | %.1f %% |\n", n, c / f, c / f / p, 100 * c / t }'
     done
 done

@@ -9,6 +9,8 @@
 /// ViSP XML file applies its tracker settings (step, range, masks, faces) to the sequence's camera
 /// ("-": none); a kud renders the frames through ViSP's radial lens and gives the tracker the lens.
 ///   bench_tracker [frames] [cube|toy] [frame|steps] [on-demand|whole] [hypotheses] [lmder|normal] [visp.xml|-] [kud]
+/// With EDGETRACK_KERNELS=scalar in the environment it runs the scalar reference kernels
+/// (real/vector_kernels.h), to count what the vector ones save.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +22,7 @@
 #include "edgetrack/scene_renderer.h"
 #include "edgetrack/tracker.h"
 #include "edgetrack/visp_config.h"
+#include "real/vector_kernels.h"
 #include "synthetic_sequence.h"
 
 using namespace edgetrack;
@@ -37,6 +40,8 @@ class CountEachStep : public StepObserver {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+  const char* kernels = std::getenv("EDGETRACK_KERNELS");
+  if (kernels && std::string(kernels) == "scalar") vector_kernels::choose(vector_kernels::Choice::kScalar);
   const int frames = argc > 1 ? std::atoi(argv[1]) : 60;
   const Scene scene = argc > 2 && std::string(argv[2]) == "toy" ? Scene::kWoodToy : Scene::kCube;
   const Result<EdgeModel> model = load_model(model_path(scene));

@@ -11,6 +11,7 @@ DECLARE(test_me_ellipse);
 DECLARE(test_me_line);
 #endif
 DECLARE(test_me_masks);
+DECLARE(test_me_response);
 DECLARE(test_me_site);
 DECLARE(test_robust);
 DECLARE(test_transformations);
@@ -26,6 +27,7 @@ void register_tests() {
   REGISTER(test_me_line);
 #endif
   REGISTER(test_me_masks);
+  REGISTER(test_me_response);
   REGISTER(test_me_site);
   REGISTER(test_robust);
   REGISTER(test_transformations);

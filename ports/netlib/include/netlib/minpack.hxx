@@ -13,6 +13,7 @@
 
 #include "netlib/minpack.h"
 #include "real/sum_of_products.h"
+#include "real/vector_kernels.h"
 
 inline namespace edgetrack_ports {
 
@@ -75,15 +76,43 @@ bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
   return plain;
 }
 
-/// y[i] += s x[i]: MINPACK's loop for floating point; for fixed point the same operations
-/// without the 128-bit product when s is large (real/fixed64.h).
+/// Runs body() built for the chosen vectors (vector_kernels.h) on x86-64, where AVX2 takes four
+/// doubles where SSE2 takes two (the AVX2 target has no fused multiply-add: the same roundings);
+/// elsewhere as built, the choice's test costing more than it could save.
+template <class Body>
+__attribute__((always_inline)) inline void in_chosen_vectors(const Body& body) {
+#if defined(__x86_64__)
+  vector_kernels::run(body);
+#else
+  body();
+#endif
+}
+
+/// y[i] += s x[i]: MINPACK's loop for floating point, each element's product and sum in a lane
+/// (in_chosen_vectors); for fixed point the same operations without the 128-bit product when s
+/// is large (real/fixed64.h).
 template <class T>
 void add_multiple_of(int n, const T& s, const T* x, T* y) {
   if constexpr (!std::numeric_limits<T>::is_iec559) {
     add_multiple(n, s, x, y);
   } else {
-    for (int i = 0; i < n; ++i) y[i] += x[i] * s;
+    const T* __restrict from = x;
+    T* __restrict to = y;
+    const T scale = s;
+    in_chosen_vectors([&]() __attribute__((always_inline)) {
+      for (int i = 0; i < n; ++i) to[i] += from[i] * scale;
+    });
   }
+}
+
+/// x[i] /= d for i < n (MINPACK's own divisions), each in a lane (in_chosen_vectors).
+template <class T>
+void divide_each(int n, T* x, const T& d) {
+  T* __restrict to = x;
+  const T divisor = d;
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
+    for (int i = 0; i < n; ++i) to[i] /= divisor;
+  });
 }
 
 /// Floating point: C sums of products of `a` with the columns b[0], ..., b[C - 1], each summed in
@@ -280,8 +309,8 @@ void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag
     T ajnorm = j == 0 ? acnorm[pivot ? ipvt[0] : 0] : enorm(m - j, aj + j, machine);
     if (ajnorm != T(0)) {
       if (aj[j] < T(0)) ajnorm = -ajnorm;
-      if (std::numeric_limits<T>::is_iec559) {
-        for (int i = j; i < m; ++i) aj[i] /= ajnorm;  // MINPACK's own operations, bit for bit
+      if constexpr (std::numeric_limits<T>::is_iec559) {
+        minpack_detail::divide_each(m - j, aj + j, ajnorm);  // MINPACK's own operations, bit for bit
       } else {
         // Fixed point: one division and m - j multiplications instead of m - j divisions
         // (a division costs ten multiplications there); the result moves by at most an ulp.

@@ -108,9 +108,10 @@ class vpMe {
   /// n-1-a, column n-1-b (so the centre's is 0). The area rule gives this by construction; it is
   /// checked on the rounded weights, and lets a response take one product per pixel pair.
   bool masksAntisymmetric() const { return masks_antisymmetric_; }
-  /// Entries per row of paddedMaskWeights: 8 on SSE2 hosts, where vpMeResponse takes a row of 8
-  /// products in one vector multiply-add, 0 (no padded masks) elsewhere, as on ARMv5TE.
-#if defined(__SSE2__)
+  /// Entries per row of paddedMaskWeights: 8 on SSE2 hosts and with NEON (AArch64, ARMv7-A with
+  /// -mfpu=neon), where vpMeResponse takes a row of 8 products in vector multiply-adds, 0 (no
+  /// padded masks) elsewhere, as on ARMv5TE.
+#if defined(__SSE2__) || defined(__ARM_NEON)
   static constexpr unsigned int kPaddedRow = 8;
 #else
   static constexpr unsigned int kPaddedRow = 0;

@@ -11,6 +11,8 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#elif defined(__ARM_NEON)
+#include <arm_neon.h>
 #endif
 
 #include "real/vector_kernels.h"
@@ -51,7 +53,7 @@ class vpMeResponse {
   /// for the batch (a site's path, a refinement's lines) instead of once per pixel.
   void at_each(const int* i, const int* j, int n, int* out) const {
     // The limits in locals: stores to `out` could otherwise alias them and reload them per pixel.
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(__ARM_NEON)
     if (padded_ && size_ == 5) {
       padded_each_5<true>(i, j, n, out);
       return;
@@ -73,7 +75,7 @@ class vpMeResponse {
   /// (a straight path in order, a block listed from corner to corner): when both lie inside, no
   /// pixel needs the border test.
   void at_each_in_box(const int* i, const int* j, int n, int* out) const {
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(__ARM_NEON)
     if (padded_ && size_ == 5 && n > 0 && !outside(i[0], j[0]) && !outside(i[n - 1], j[n - 1])) {
       padded_each_5<false>(i, j, n, out);
       return;
@@ -87,14 +89,17 @@ class vpMeResponse {
   /// already. With the vector path, when the block lies inside, the windows share their pixels'
   /// loads; else the eight others in one batch (at_each).
   void at_block_3x3(int i, int j, int centre, int* out) const {
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(__ARM_NEON)
     if (padded_ && size_ == 5 && !outside(i - 1, j - 1) && !outside(i + 1, j + 1)) {
       const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
       const unsigned char* top_left = image_.bitmap + (i - 1 - half_) * stride + (j - 1 - half_);
-      if (avx2_)
+#if defined(__SSE2__)
+      if (avx2_) {
         padded_block_5_avx2(padded_, top_left, stride, sign_, out);
-      else
-        padded_block_5(padded_, top_left, stride, sign_, out);
+        return;
+      }
+#endif
+      padded_block_5(padded_, top_left, stride, sign_, out);
       return;
     }
 #endif
@@ -113,7 +118,7 @@ class vpMeResponse {
   /// sign * sum of weight * pixel over the window centred at (i, j); 0 when outside(i, j).
   int at(int i, int j) const {
     if (outside(i, j)) return 0;
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(__ARM_NEON)
     if (padded_ && size_ == 5) return sign_ * padded_sum<5>(i - half_, j - half_);
 #endif
     // Only the vector path inlined: the others' weights and row pointers, inlined in a caller's
@@ -174,21 +179,20 @@ class vpMeResponse {
     return total;
   }
 
-#if defined(__SSE2__)
-  /// SSE2: rows padded with zero weights to vpMe::kPaddedRow (8) entries, one 8-lane 16-bit
-  /// multiply-add per row (weight * pixel < 2^15, sums in 32 bits). Reads the kPaddedRow - Size
-  /// pixels right of the window, which the constructor checked lie in the row.
+#if defined(__SSE2__) || defined(__ARM_NEON)
+  /// Rows padded with zero weights to vpMe::kPaddedRow (8) entries, 8 products of 16 bits per row
+  /// (weight * pixel < 2^15, sums in 32 bits; integers, exact in any order): one multiply-add on
+  /// SSE2, two widening multiply-accumulates with NEON. Reads the kPaddedRow - Size pixels right
+  /// of the window, which the constructor checked lie in the row.
   template <int Size>
   int padded_sum(int i0, int j0) const {
     static_assert(Size == 5, "the padded rows of a 5 x 5 mask");
-    __m128i weights[5];
-    for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
+    Row weights[5];
+    for (int a = 0; a < 5; ++a) weights[a] = load_row(padded_ + a * 8);
     const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
     return padded_sum_5(weights, image_.bitmap + i0 * stride + j0, stride);
   }
 
-  /// padded_sum<5> of the window whose top-left pixel is at `window`, the mask's rows already in
-  /// registers.
   /// at_each's vector path for the 5 x 5 mask: the mask's rows loaded once for the batch; with
   /// kBorderTest false the caller knows every pixel lies inside.
   template <bool kBorderTest>
@@ -196,14 +200,26 @@ class vpMeResponse {
     const int first = first_, last_i = last_i_, last_j = last_j_, sign = sign_, half = half_;
     const unsigned char* bitmap = image_.bitmap;
     const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
-    __m128i weights[5];
-    for (int a = 0; a < 5; ++a) weights[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded_ + a * 8));
+#if defined(__SSE2__)
+    if (!kBorderTest && avx2_) {
+      padded_each_5_avx2(padded_, bitmap, stride, half, sign, i, j, n, out);
+      return;
+    }
+#endif
+    Row weights[5];
+    for (int a = 0; a < 5; ++a) weights[a] = load_row(padded_ + a * 8);
     for (int k = 0; k < n; ++k) {
       const int row = i[k], column = j[k];
       const bool out_of_image = kBorderTest && (row < first || row > last_i || column < first || column > last_j);
       out[k] = out_of_image ? 0 : sign * padded_sum_5(weights, bitmap + (row - half) * stride + (column - half), stride);
     }
   }
+#endif
+
+#if defined(__SSE2__)
+  /// A padded mask row in a register.
+  using Row = __m128i;
+  static Row load_row(const int16_t* weights) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(weights)); }
 
   /// The 3 x 3 block's padded sums, times `sign`, row-major into out[9]: the 7 x 7 pixels under
   /// the nine windows (top-left at `top_left`, 8 read per row) each loaded once, every window row
@@ -250,8 +266,12 @@ class vpMeResponse {
   /// same operations in three-operand VEX form.
   static void padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left, std::ptrdiff_t stride, int sign,
                                   int* out);
+  /// padded_each_5<false> with AVX2 (vpMeResponse_avx2.cpp): two windows per 256-bit multiply-add
+  /// and four windows' lanes summed together; every window lies inside.
+  static void padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap, std::ptrdiff_t stride, int half,
+                                 int sign, const int* i, const int* j, int n, int* out);
 
-  static int padded_sum_5(const __m128i (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
+  static int padded_sum_5(const Row (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
     static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
     const __m128i zero = _mm_setzero_si128();
     __m128i total = _mm_setzero_si128();
@@ -263,6 +283,83 @@ class vpMeResponse {
     total = _mm_add_epi32(total, _mm_shuffle_epi32(total, _MM_SHUFFLE(1, 0, 3, 2)));
     total = _mm_add_epi32(total, _mm_shuffle_epi32(total, _MM_SHUFFLE(2, 3, 0, 1)));
     return _mm_cvtsi128_si32(total);
+  }
+#elif defined(__ARM_NEON)
+  /// A padded mask row in a register.
+  using Row = int16x8_t;
+  static Row load_row(const int16_t* weights) { return vld1q_s16(weights); }
+
+  /// The 8 pixels from `pixels`, widened to 16 bits.
+  static int16x8_t pixel_row(const unsigned char* pixels) { return vreinterpretq_s16_u16(vmovl_u8(vld1_u8(pixels))); }
+
+  /// total + the 8 products of pixels and weights, lane by lane.
+  static int32x4_t multiply_add(int32x4_t total, int16x8_t pixels, int16x8_t weights) {
+    total = vmlal_s16(total, vget_low_s16(pixels), vget_low_s16(weights));
+    return vmlal_s16(total, vget_high_s16(pixels), vget_high_s16(weights));
+  }
+
+  /// {sum of a's lanes, b's, c's, d's}.
+  static int32x4_t lane_sums(int32x4_t a, int32x4_t b, int32x4_t c, int32x4_t d) {
+#if defined(__aarch64__)
+    return vpaddq_s32(vpaddq_s32(a, b), vpaddq_s32(c, d));
+#else
+    const int32x2_t ab = vpadd_s32(vadd_s32(vget_low_s32(a), vget_high_s32(a)), vadd_s32(vget_low_s32(b), vget_high_s32(b)));
+    const int32x2_t cd = vpadd_s32(vadd_s32(vget_low_s32(c), vget_high_s32(c)), vadd_s32(vget_low_s32(d), vget_high_s32(d)));
+    return vcombine_s32(ab, cd);
+#endif
+  }
+
+  /// The sum of a's lanes.
+  static int lane_sum(int32x4_t a) {
+#if defined(__aarch64__)
+    return vaddvq_s32(a);
+#else
+    const int32x2_t pair = vadd_s32(vget_low_s32(a), vget_high_s32(a));
+    return vget_lane_s32(vpadd_s32(pair, pair), 0);
+#endif
+  }
+
+  /// The SSE2 padded_block_5's operations with NEON: the 7 x 7 pixels under the nine windows
+  /// (top-left at `top_left`, 8 read per row) each loaded once, every window row multiplied with
+  /// its mask row moved to the window's column; sums times `sign`, row-major into out[9].
+  static void padded_block_5(const int16_t* padded, const unsigned char* top_left, std::ptrdiff_t stride, int sign,
+                             int* out) {
+    static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
+    // shifted[3 a + s]: mask row a moved s lanes up, for the window s - 1 columns off.
+    const int16x8_t zero = vdupq_n_s16(0);
+    int16x8_t shifted[15];
+    for (int a = 0; a < 5; ++a) {
+      const int16x8_t row = vld1q_s16(padded + a * 8);
+      shifted[3 * a] = row;
+      shifted[3 * a + 1] = vextq_s16(zero, row, 7);
+      shifted[3 * a + 2] = vextq_s16(zero, row, 6);
+    }
+    int32x4_t total[9];
+    for (int w = 0; w < 9; ++w) total[w] = vdupq_n_s32(0);
+#pragma GCC unroll 7
+    for (int r = 0; r < 7; ++r) {
+      const int16x8_t pixels = pixel_row(top_left + r * stride);
+#pragma GCC unroll 3
+      for (int di = 0; di < 3; ++di) {
+        const int a = r - di;  // the row of window row di's mask that image row r meets
+        if (a < 0 || a > 4) continue;
+#pragma GCC unroll 3
+        for (int s = 0; s < 3; ++s) total[3 * di + s] = multiply_add(total[3 * di + s], pixels, shifted[3 * a + s]);
+      }
+    }
+    for (int w = 0; w < 8; w += 4) {
+      int32x4_t sums = lane_sums(total[w], total[w + 1], total[w + 2], total[w + 3]);
+      if (sign < 0) sums = vnegq_s32(sums);
+      vst1q_s32(out + w, sums);
+    }
+    out[8] = sign * lane_sum(total[8]);
+  }
+
+  static int padded_sum_5(const Row (&weights)[5], const unsigned char* window, std::ptrdiff_t stride) {
+    static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
+    int32x4_t total = vdupq_n_s32(0);
+    for (int a = 0; a < 5; ++a) total = multiply_add(total, pixel_row(window + a * stride), weights[a]);
+    return lane_sum(total);
   }
 #else
   template <int Size>
