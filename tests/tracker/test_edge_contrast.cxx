@@ -120,6 +120,23 @@ static void test_edge_contrast() {
   TEST_NEAR("nor of a match off the solved projection", found[4], 1030, 1e-9);
   TEST_NEAR("nor of a match far weaker than its primitive's others: the primitive's mean", found[5], 1015, 1e-9);
   TEST("borrowed", borrowed[5] != 0, true);
+  // The same memory from projections made once (the tracker shares its status's): the same
+  // references; a match whose point is marked behind the camera is not remembered.
+  std::vector<ControlPoint> kept_points;
+  for (const EdgeMatch& m : kept) kept_points.push_back(m.point);
+  ProjectedPoints projected;
+  project_points(kept_points, camera, pose, projected);
+  ContrastMemory shared;
+  shared.remember(kept, camera, pose, real(1), &projected);
+  std::vector<real> shared_found;
+  std::vector<unsigned char> shared_borrowed;
+  shared.references(asked, camera, pose, real(10), shared_found, shared_borrowed);
+  TEST("projections given: the same references", shared_found == found && shared_borrowed == borrowed, true);
+  projected.in_front[0] = 0;
+  shared.remember(kept, camera, pose, real(1), &projected);
+  shared.references(asked, camera, pose, real(10), shared_found, shared_borrowed);
+  TEST_NEAR("a match marked behind the camera is not remembered: its primitive's other", shared_found[0], 1030, 1e-9);
+  TEST("borrowed", shared_borrowed[0] != 0, true);
   std::vector<EdgeMatch> mixed = kept;
   mixed[3].contrast = real(-1030);  // a silhouette whose background changes side
   memory.remember(mixed, camera, pose, real(1));

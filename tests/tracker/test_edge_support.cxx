@@ -2,6 +2,7 @@
 /// The image's support of a pose along its projected edges (edge_support.h): the angle between
 /// gradient and normal without a libm arctangent, full support and a small angle on the edge,
 /// none over flat image beside it, and a gradient across the normal measured but not supporting.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -66,6 +67,35 @@ void test_angle() {
   TEST_NEAR("no gradient at 0", gradient_normal_angle_deg(real(0), real(0), Vec2{real(1), real(0)}), 0.0, 1e-9);
 }
 
+/// Through a lens, the projections the frame's status makes once (project_points) give
+/// edge_support's own verdict; points behind the camera are marked so and not measured.
+void test_shared_projections(const vpImage<unsigned char>& edge, const std::vector<ControlPoint>& points,
+                             const std::vector<PixelBox>& boxes, const real& floor, const real& angle) {
+  LensDistortion lens;
+  lens.model = LensModel::kVisp;
+  lens.kud = real(-0.25);
+  const PinholeCamera camera(real(100), real(100), real(50), real(50), kSide, kSide, lens);
+  int measured = 0;
+  for (const double shift : {0.0, 0.004, 0.03}) {
+    const Se3 pose(Mat33::identity(), Vec3{real(shift), real(0), real(0)});
+    ProjectedPoints projected;
+    project_points(points, camera, pose, projected);
+    const EdgeSupport own = edge_support(edge, points, boxes, camera, pose, floor, support_bound(angle));
+    const EdgeSupport shared = edge_support(edge, points, boxes, camera, pose, floor, support_bound(angle), &projected);
+    TEST("projections given: the same points measured and supported",
+         own.measured == shared.measured && own.supported == shared.supported, true);
+    TEST("at the same mean angle", own.mean_angle_deg == shared.mean_angle_deg, true);
+    measured += own.measured;
+  }
+  TEST("points were measured", measured > 0, true);
+  const Se3 behind(Mat33::identity(), Vec3{real(0), real(0), real(-2)});
+  ProjectedPoints projected;
+  project_points(points, camera, behind, projected);
+  TEST("behind the camera no point is in front", std::count(projected.in_front.begin(), projected.in_front.end(), 1), 0);
+  TEST_EQUAL("nor measured",
+             edge_support(edge, points, boxes, camera, behind, floor, support_bound(angle), &projected).measured, 0);
+}
+
 }  // namespace
 
 static void test_edge_support() {
@@ -91,6 +121,7 @@ static void test_edge_support() {
   const Se3 far(Mat33::identity(), Vec3{real(-0.2), real(0), real(0)});
   TEST_EQUAL("beyond the range searched nothing is read",
              edge_support(edge, points, boxes, kCamera, far, floor, support_bound(angle)).measured, 0);
+  test_shared_projections(edge, points, boxes, floor, angle);
   // A weak step (5 levels, Sobel 20) is under the floor.
   TEST_EQUAL("a step under the gradient floor is not measured",
              edge_support(step_image(0, 80, 85), points, boxes, kCamera, Se3(), floor, support_bound(angle)).measured, 0);

@@ -52,7 +52,8 @@ bool projects_near(const PinholeCamera& camera, const Vec3& p, const Vec2& norma
 }  // namespace
 
 void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
-                              const Se3& camera_from_model, const real& within) {
+                              const Se3& camera_from_model, const real& within,
+                              const ProjectedPoints* projected) {
   using std::fabs;
   remembered_.clear();
   // Sized by the matches, so that it grows only on a frame with more matches than any before.
@@ -72,8 +73,12 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
     for (size_t k = first; k < end; ++k) {
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
-      const Vec3 p = camera_from_model * m.point.point_in_model;
-      if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
+      if (projected) {
+        if (!projected->in_front[k] || !(fabs(dot(m.point.normal, projected->pixel[k] - m.found)) < within)) continue;
+      } else {
+        const Vec3 p = camera_from_model * m.point.point_in_model;
+        if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
+      }
       remembered_.push_back({m.point.edge, m.point.point_in_model, m.contrast});
     }
     first = end;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "edgetrack/contours.h"
+#include "real/divisor.h"
 
 namespace edgetrack {
 namespace {
@@ -56,7 +57,9 @@ void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, 
                   const PinholeCamera& camera, const SamplingParams& params, const Window& window,
                   PointSink& points) {
   using std::floor;
-  const Vec2 na{ca.x / ca.z, ca.y / ca.z}, nb{cb.x / cb.z, cb.y / cb.z};
+  // Each end's depth divides three values (bit for bit the divisions themselves).
+  const Divisor<real> by_za(ca.z), by_zb(cb.z);
+  const Vec2 na{by_za.divide(ca.x), by_za.divide(ca.y)}, nb{by_zb.divide(cb.x), by_zb.divide(cb.y)};
   const Vec2 chord = nb - na;
   const int pieces = camera.chord_pieces(na, nb, real(0.02), kCurvePieces);
   // Lengths in pixels along the polyline of the curve.
@@ -74,7 +77,7 @@ void sample_curve(const Vec3& a, const Vec3& b, const Vec3& ca, const Vec3& cb, 
   const real length = lengths[pieces];
   const int n = static_cast<int>(floor(length / params.step));  // equation (1)
   if (n <= 0) return;
-  const real wa = real(1) / ca.z, wb = real(1) / cb.z;
+  const real wa = by_za.divide(real(1)), wb = by_zb.divide(real(1));
   const real spacing = length / real(n);
   int piece = 0;
   for (int k = 0; k < n; ++k) {
@@ -245,6 +248,18 @@ void keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& e
   visible.reserve(points.size());
   for (const ControlPoint& p : points)
     if (edge_ids.shows(p.edge, p.pixel, p.direction)) visible.push_back(p);
+}
+
+void project_points(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
+                    ProjectedPoints& out) {
+  out.pixel.assign(points.size(), Vec2{real(0), real(0)});
+  out.in_front.assign(points.size(), 0);
+  for (size_t p = 0; p < points.size(); ++p) {
+    const Vec3 in_camera = camera_from_model * points[p].point_in_model;
+    if (in_camera.z <= real(0)) continue;
+    out.pixel[p] = camera.project(in_camera);
+    out.in_front[p] = 1;
+  }
 }
 
 }  // namespace edgetrack

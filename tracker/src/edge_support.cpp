@@ -53,7 +53,7 @@ SupportBound support_bound(const real& support_angle_deg) {
 
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                          const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
-                         const real& gradient_floor, const SupportBound& bound) {
+                         const real& gradient_floor, const SupportBound& bound, const ProjectedPoints* projected) {
   using std::fabs;
   EdgeSupport support;
   support.visible = static_cast<int>(points.size());
@@ -62,11 +62,18 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
   real angle_sum(0);
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
-    const Vec3 in_camera = pose * point.point_in_model;
-    if (in_camera.z <= real(0)) continue;
     // Where the edge projected with `pose` crosses the point's normal: the point's search path,
     // whose pixels the grey image holds (a move along the edge would leave them).
-    const real shift = dot(point.normal, camera.project(in_camera) - point.pixel);
+    Vec2 at;
+    if (projected) {
+      if (!projected->in_front[p]) continue;
+      at = projected->pixel[p];
+    } else {
+      const Vec3 in_camera = pose * point.point_in_model;
+      if (in_camera.z <= real(0)) continue;
+      at = camera.project(in_camera);
+    }
+    const real shift = dot(point.normal, at - point.pixel);
     const Vec2 pixel = point.pixel + shift * point.normal;
     // Read only where this frame's grey image is up to date for the point, one pixel inside
     // for the Sobel's 3x3 neighbourhood.

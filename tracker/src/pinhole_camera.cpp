@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "edgetrack/downscaled_camera.h"
+#include "real/divisor.h"
 #include "real/sum_of_products.h"
 
 namespace edgetrack {
@@ -25,6 +26,13 @@ Vec2 PinholeCamera::distort_other(const Vec2& n) const {
             n.y * radial + lens.p1 * (r2 + real(2) * n.y * n.y) + lens.p2 * xy2};
   }
   return n;
+}
+
+Vec2 PinholeCamera::project_through_lens(const Vec3& p) const {
+  // Both quotients over one divisor (bit for bit the two divisions, less work on a core without
+  // a divider): the contrast memory and the frame's status project every point.
+  const Divisor<real> by_z(p.z);
+  return to_pixel(distort(Vec2{by_z.divide(p.x), by_z.divide(p.y)}));
 }
 
 LensJacobian PinholeCamera::lens_jacobian(const Vec2& n) const {

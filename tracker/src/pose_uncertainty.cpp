@@ -58,13 +58,15 @@ Perturbation perturbation_of(const EdgeModel& model) {
 /// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
 void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
                     const Vec2& n, real g[kDof]) {
-  real nu = n.x * camera.px * inv_z;
-  real nv = n.y * camera.py * inv_z;
+  real nu, nv;
   if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
     const Vec2 across = camera.lens_covector(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z},
                                              Vec2{n.x * camera.px, n.y * camera.py});
     nu = across.x * inv_z;
     nv = across.y * inv_z;
+  } else {
+    nu = n.x * camera.px * inv_z;
+    nv = n.y * camera.py * inv_z;
   }
   const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
   // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).

@@ -92,4 +92,9 @@ void RowTimes::again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& 
 
 size_t RowTimes::heap_bytes() const { return capacity_bytes(sampled_) + capacity_bytes(moved_); }
 
+void RowTimes::reserve(size_t points) {
+  sampled_.reserve(points);
+  moved_.reserve(points);
+}
+
 }  // namespace edgetrack

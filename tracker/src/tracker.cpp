@@ -44,17 +44,21 @@ class StepClock {
 /// The largest move of a control point along its normal from where the frame sampled it to
 /// where `pose` projects it, pixels: what the moving-edge search had to reach. The shift
 /// n . (project(P) - pixel) is |a X + b Y + c Z| / Z; the largest is found by comparing cross
-/// products, so that one division is left for the frame (an ARMv5TE has no divider).
-real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose) {
+/// products, so that one division is left for the frame (an ARMv5TE has no divider). Through a
+/// lens the shift needs the projection itself: `projected` holds each point's (project_points).
+real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose,
+                          const ProjectedPoints& projected) {
   using std::fabs;
+  if (camera.distorted()) {
+    real worst(0);
+    for (size_t p = 0; p < points.size(); ++p)
+      if (projected.in_front[p]) worst = std::max(worst, fabs(dot(points[p].normal, projected.pixel[p] - points[p].pixel)));
+    return worst;
+  }
   real worst_numerator(0), worst_depth(1);
   for (const ControlPoint& p : points) {
     const Vec3 in_camera = pose * p.point_in_model;
     if (in_camera.z <= real(0)) continue;
-    if (camera.distorted()) {  // through a lens the shift needs the projection itself (depth stays 1)
-      worst_numerator = std::max(worst_numerator, fabs(dot(p.normal, camera.project(in_camera) - p.pixel)));
-      continue;
-    }
     const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
     const real numerator = fabs(sum_of_products(p.normal.x * camera.px, in_camera.x, p.normal.y * camera.py,
                                                 in_camera.y, offset, in_camera.z));
@@ -64,6 +68,23 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
     }
   }
   return worst_numerator / worst_depth;
+}
+
+/// Whether two poses are the same, bit for bit.
+bool same_pose(const Se3& a, const Se3& b) {
+  const Mat33 &ra = a.rotation(), &rb = b.rotation();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (!(ra.m[r][c] == rb.m[r][c])) return false;
+  const Vec3 &ta = a.translation(), &tb = b.translation();
+  return ta.x == tb.x && ta.y == tb.y && ta.z == tb.z;
+}
+
+/// Whether a match's point is this control point (a match holds a copy of its point).
+bool same_point(const ControlPoint& a, const ControlPoint& b) {
+  return a.edge == b.edge && a.pixel.x == b.pixel.x && a.pixel.y == b.pixel.y &&
+         a.point_in_model.x == b.point_in_model.x && a.point_in_model.y == b.point_in_model.y &&
+         a.point_in_model.z == b.point_in_model.z;
 }
 
 /// The step times and the converted pixels of `from` carried into `to`, measured after it.
@@ -120,6 +141,9 @@ class Tracker::State {
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
   StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
+  ProjectedPoints solved_pixels_;  ///< through a lens, where the solved pose projects the visible points (judge)
+  Se3 solved_pixels_pose_;  ///< the pose solved_pixels_ were projected with
+  ProjectedPoints remembered_pixels_;  ///< solved_pixels_ per match, for the contrast memory (conclude)
 
  private:
   /// The grey step: converts what the moving edges will read (read_boxes_) and returns the image
@@ -148,12 +172,15 @@ class Tracker::State {
   }
   /// The status measures of the attempt from `start` searching `range` and the rule's judgement.
   void judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range, std::uint64_t saturations,
-             FrameResult& result) const;
+             FrameResult& result);
   /// A rolling shutter's frame, solved from the last trusted poses' velocity, is solved again
   /// from `start` with the velocity from the last trusted pose to `solution` (rolling_shutter.h).
   void resolve_at_own_velocity(const Se3& start, const PoseParams& pose_params, PoseSolution& solution);
   /// The motion model and the contrast memory take the frame's result; the next frame's start.
   void conclude(FrameResult& result);
+  /// Through a lens, solved_pixels_ per match when judge projected the matches' points with
+  /// `solved` (the last attempt's pose), else null: the contrast memory then projects them.
+  const ProjectedPoints* projected_matches(const Se3& solved);
   /// A camera created without an image size takes the first frame's: the camera is checked
   /// with it and the image buffers sized (the one frame that allocates them).
   std::optional<Error> take_frame_size(const FrameView& frame);
@@ -256,7 +283,9 @@ TrackerMemory Tracker::memory() const {
   m.edge_id_lines = s.edge_ids_.line_bytes();
   m.grey_image = static_cast<size_t>(s.grey_.getWidth()) * s.grey_.getHeight();
   m.control_points = capacity_bytes(s.sampled_) + capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
-                     capacity_bytes(s.references_) + capacity_bytes(s.borrowed_);
+                     capacity_bytes(s.references_) + capacity_bytes(s.borrowed_) +
+                     capacity_bytes(s.solved_pixels_.pixel) + capacity_bytes(s.solved_pixels_.in_front) +
+                     capacity_bytes(s.remembered_pixels_.pixel) + capacity_bytes(s.remembered_pixels_.in_front);
   m.matches = capacity_bytes(s.matches_);
   m.pose_workspace = s.pose_workspace_.heap_bytes() + s.row_times_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
@@ -290,6 +319,13 @@ void Tracker::State::reserve_for_limits() {
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
   contrast_memory_.reserve(points);
+  if (camera_.distorted()) {
+    for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
+      projected->pixel.reserve(points);
+      projected->in_front.reserve(points);
+    }
+  }
+  if (params_.readout != real(0)) row_times_.reserve(points);
   if (limits_.colour_frames) {
     grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
     grey_boxes_.reserve(points, camera_.height);
@@ -312,6 +348,8 @@ void Tracker::State::set_params(const TrackerParams& params) {
   me_ = moving_edge_masks(params.me);
   support_bound_ = support_bound(params.status.support_angle_deg);
   motion_.set_params(params.motion);
+  // A rolling shutter switched on after create takes its room now, not in a frame.
+  if (limits_.stated() && params.readout != real(0)) row_times_.reserve(static_cast<size_t>(limits_.control_points));
 }
 
 const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
@@ -449,7 +487,7 @@ void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams&
 }
 
 void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start, unsigned range,
-                           std::uint64_t saturations, FrameResult& result) const {
+                           std::uint64_t saturations, FrameResult& result) {
   FrameMeasures& m = result.measures;
   m.visible = result.points_sampled;
   m.matched = static_cast<int>(matches_.size());
@@ -459,7 +497,12 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.inlier_share = m.matched > 0 ? real(m.kept) / real(m.matched) : real(0);
   m.residual_scale = result.pose.residual_scale;
   const Se3& solved = result.pose.camera_from_model;
-  m.correction_px = largest_normal_shift(visible_, camera_, solved);
+  // Through a lens, each point's projection once for the two measures that need it.
+  if (camera_.distorted()) {
+    project_points(visible_, camera_, solved, solved_pixels_);
+    solved_pixels_pose_ = solved;
+  }
+  m.correction_px = largest_normal_shift(visible_, camera_, solved, solved_pixels_);
   const Se3 change = solved * start.inverse();
   m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
   m.rotation_change_deg = real(kDegreesPerRadian) * norm(rotation_log(change.rotation()));
@@ -470,7 +513,8 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.saturations = fixedpoint::saturation_count() - saturations;
   m.after_loss = motion_.lost_last_frame();
   const EdgeSupport support =
-      edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_);
+      edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_,
+                   camera_.distorted() ? &solved_pixels_ : nullptr);
   m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
   m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =
@@ -487,11 +531,26 @@ void Tracker::State::conclude(FrameResult& result) {
     const Se3& solved = result.pose.camera_from_model;
     result.camera_from_model = solved;
     motion_.trust(solved, model_, camera_, params_.me.range);
-    contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px);
+    contrast_memory_.remember(matches_, camera_, solved, params_.status.tracked_scale_px, projected_matches(solved));
     started_ = true;
   }
   status_statistics_.add(result.measures, result.status, params_.status);
   camera_from_model_ = motion_.prediction();
+}
+
+const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
+  if (!camera_.distorted() || !same_pose(solved, solved_pixels_pose_)) return nullptr;
+  remembered_pixels_.pixel.resize(matches_.size());
+  remembered_pixels_.in_front.resize(matches_.size());
+  // The matches follow the visible points they came from, in order (search_moving_edges).
+  size_t v = 0;
+  for (size_t k = 0; k < matches_.size(); ++k, ++v) {
+    while (v < visible_.size() && !same_point(visible_[v], matches_[k].point)) ++v;
+    if (v == visible_.size()) return nullptr;
+    remembered_pixels_.pixel[k] = solved_pixels_.pixel[v];
+    remembered_pixels_.in_front[k] = solved_pixels_.in_front[v];
+  }
+  return &remembered_pixels_;
 }
 
 }  // namespace edgetrack

@@ -13,12 +13,13 @@
 ///            (the object's own rows' time, not the middle row's): the shear alone;
 /// and of alone's matches kept by the pose step, how far along the normal each lies from that
 /// place (pixels): the mean |offset| and the share within a pixel.
-///   camera_eval_frames MODEL.cao SEQUENCE_DIR READOUT [INTRINSICS] [--matches FRAME]
+///   camera_eval_frames MODEL.cao SEQUENCE_DIR READOUT [INTRINSICS] [--matches FRAME] [--robust-rounds N]
 /// (synth's camera.xml, truth.csv, frames/frameNNNN.pgm; READOUT as synth's --readout;
 /// INTRINSICS: synth's intrinsics.xml, the lens given as `track --intrinsics` gives it). With
 /// --matches, the tracked run's control points of that frame instead, then its matches, one a
 /// line: control point, found pixel, outlier, chosen hypothesis, contrast (to compare two builds
-/// of `real`).
+/// of `real`). --robust-rounds N: the tracked and alone runs with PoseParams::robust_rounds N
+/// instead of the default (how far the robust rounds are from settling their weights).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -62,14 +63,19 @@ struct Sums {
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: %s MODEL.cao SEQUENCE_DIR READOUT [INTRINSICS] [--matches FRAME]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MODEL.cao SEQUENCE_DIR READOUT [INTRINSICS] [--matches FRAME] [--robust-rounds N]\n",
+                 argv[0]);
     return 2;
   }
   GeneratedSequence sequence;
   if (!sequence.load(argv[0], argv[1], argv[2])) return 1;
   const double readout = std::atof(argv[3]);
-  int dump = -1;
+  int dump = -1, robust_rounds = -1;
   for (int i = 4; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--robust-rounds") == 0 && i + 1 < argc) {
+      robust_rounds = std::atoi(argv[++i]);
+      continue;
+    }
     if (std::strcmp(argv[i], "--matches") == 0 && i + 1 < argc) {
       dump = std::atoi(argv[++i]);
       continue;
@@ -83,7 +89,8 @@ int main(int argc, char** argv) {
     camera = lens.value();
   }
   const std::vector<Se3>& truth = sequence.truth;
-  const TrackerConfig& config = sequence.config;
+  TrackerConfig& config = sequence.config;
+  if (robust_rounds >= 0) config.params.pose.robust_rounds = robust_rounds;
   TrackerParams from_truth = config.params;
   from_truth.motion.start_frames = 0;
   Result<Tracker> tracked = Tracker::create(sequence.model, config.camera, truth[0], config.params);

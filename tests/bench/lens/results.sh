@@ -98,3 +98,5 @@ echo "for it); the visible edges sample each edge along its curve (a polyline of
 echo "each control point and its direction through the lens) and Edge-ID cuts lines and faces into pieces"
 echo "along the curved images, deciding how many from a bound that needs no point through the lens where"
 echo "one piece is enough (docs/ARCHITECTURE.md). Grey scaling and ME differ only by the points they see."
+echo "Outside the four steps, the status's largest shift and edge support and the contrast memory share"
+echo "one projection through the lens of each visible point at the solved pose (\`project_points\`)."

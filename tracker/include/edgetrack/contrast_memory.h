@@ -33,9 +33,11 @@ class ContrastMemory {
   /// within `within` pixels (along its normal) of its projection at camera_from_model, the
   /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
   /// matches (a point under an occluder matched to noise by chance is not its edge). `matches`
-  /// come grouped by primitive, as the sampling orders them.
+  /// come grouped by primitive, as the sampling orders them. `projected`, when given, holds
+  /// each match's point projected at camera_from_model (project_points), so that a lens's
+  /// projections are not computed again.
   void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model,
-                const real& within);
+                const real& within, const ProjectedPoints* projected = nullptr);
   /// For each point, the contrast remembered at the nearest remembered point of the same
   /// primitive, when that lies within `reach` pixels of it at camera_from_model (about one
   /// sample step: where the edge was sampled last time). A point with none within reach whose

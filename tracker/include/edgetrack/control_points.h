@@ -54,6 +54,16 @@ size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera
                              const SamplingParams& params, const FaceVisibility& faces,
                              std::vector<ControlPoint>& points);
 
+/// Where a pose projects each of some points (control points, or the points of matches), and
+/// whether each is in front of the camera (else its pixel is (0, 0)): through a lens a projection
+/// is dear, so the frame's status measures and the contrast memory share one per point.
+struct ProjectedPoints {
+  std::vector<Vec2> pixel;
+  std::vector<unsigned char> in_front;
+};
+void project_points(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
+                    ProjectedPoints& out);
+
 /// Keeps the points whose own edge the Edge-ID buffer shows at their pixel.
 std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids);
 /// The same into `visible` (emptied first, memory reused).

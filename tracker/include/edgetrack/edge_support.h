@@ -49,8 +49,11 @@ SupportBound support_bound(const real& support_angle_deg);
 /// measured. A point is measured where the Sobel gradient's magnitude reaches `gradient_floor`
 /// and supported within `bound` (support_bound of StatusParams::support_angle_deg; StatusParams
 /// says what the settings stand for).
+/// `projected`, when given, holds project_points(points, camera, pose), which the frame's status
+/// computes once (through a lens a projection is dear).
 EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points,
                          const std::vector<PixelBox>& read_boxes, const PinholeCamera& camera, const Se3& pose,
-                         const real& gradient_floor, const SupportBound& bound);
+                         const real& gradient_floor, const SupportBound& bound,
+                         const ProjectedPoints* projected = nullptr);
 
 }  // namespace edgetrack

@@ -61,8 +61,10 @@ struct PinholeCamera {
   Vec2 project(const Vec3& point_in_camera) const {
     if (!distorted())
       return {u0 + px * point_in_camera.x / point_in_camera.z, v0 + py * point_in_camera.y / point_in_camera.z};
-    return to_pixel(distort(Vec2{point_in_camera.x / point_in_camera.z, point_in_camera.y / point_in_camera.z}));
+    return project_through_lens(point_in_camera);
   }
+  /// project() through the lens, out of line: the pinhole's stays short where it is inlined.
+  Vec2 project_through_lens(const Vec3& point_in_camera) const;
   /// The point at depth Z (metres) seen at `pixel` (ViSP's model undistorts with kdu, as
   /// vpPixelMeterConversion does; OpenCV's is inverted by iteration, as cv::undistortPoints does).
   Vec3 unproject(const Vec2& pixel, const real& depth) const {

@@ -60,6 +60,8 @@ class RowTimes {
              const Se3& pose, const Twist& velocity, const real& readout);
   /// The heap its buffers hold, for Tracker::memory.
   size_t heap_bytes() const;
+  /// Room for `points` control points, so that move() and again() allocate nothing.
+  void reserve(size_t points);
 
  private:
   std::vector<ControlPoint> sampled_;
