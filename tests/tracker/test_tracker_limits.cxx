@@ -82,6 +82,26 @@ static void test_tracker_limits() {
   TEST("a copy allocates its buffers when copied, not when it tracks",
        allocation_count().allocations - before_copy_tracks.allocations, uint64_t{0});
 
+  // Through a lens and a rolling shutter the tracker keeps more per point (the shared projections,
+  // the points as sampled and moved); with limits they too are allocated at create.
+  PinholeCamera lens_camera = camera;
+  lens_camera.lens.model = LensModel::kVisp;
+  lens_camera.lens.kud = real(-0.05);
+  lens_camera.lens.kdu = real(0.05);
+  TrackerParams rolling;
+  rolling.readout = real(0.5);
+  Result<Tracker> lens_bounded = Tracker::create(model.value(), lens_camera, truth[0], rolling, qvga_limits(128));
+  TEST("a tracker with limits, a lens and a rolling shutter starts", lens_bounded.ok(), true);
+  if (!lens_bounded.ok()) return;
+  uint64_t lens_allocations = 0;
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), frame);
+    const AllocationCount before = allocation_count();
+    lens_bounded.value().track(rgb565_view(frame)).value();
+    lens_allocations += allocation_count().allocations - before.allocations;
+  }
+  TEST("and none of its frames allocates", lens_allocations, uint64_t{0});
+
   // What create refuses.
   TrackerLimits small_model = qvga_limits(128);
   small_model.primitives = 4;
