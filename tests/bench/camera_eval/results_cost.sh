@@ -16,18 +16,23 @@ export EDGETRACK_PLUGIN_DIR=$work/plugin
 arm=$(bench_tree arm s40_23 bench_tracker)/tests/bench/tracker/bench_tracker
 host=$(bench_tree host double bench_tracker)/tests/bench/tracker/bench_tracker
 
-# bench_args SCENE KUD: bench_tracker's arguments with the default settings, the lens kud (0: none).
-bench_args() { echo "$frames $1 %s on-demand 1 lmder - $2"; }
+# bench_args SCENE KUD [XML]: bench_tracker's arguments with the default settings (or XML's), the lens
+# kud (0: none).
+bench_args() { echo "$frames $1 %s on-demand 1 lmder ${3:--} $2"; }
 
-# arm_steps SCENE KUD: "visible grey ME pose whole" guest instructions per frame.
+# A rolling shutter read over one frame interval (<edgetrack><camera><readout>), the rest the defaults.
+rolling_xml=$work/readout.xml
+printf '<?xml version="1.0"?>\n<conf><edgetrack><camera><readout>1</readout></camera></edgetrack></conf>\n' >"$rolling_xml"
+
+# arm_steps SCENE KUD [XML]: "visible grey ME pose whole" guest instructions per frame.
 arm_steps() {
-  local key=$work/arm.$1.$2
+  local key=$work/arm.$1.$2.${3:+rolling}
   # shellcheck disable=SC2046
   "$top/toolchains/qemu/count-insns.sh" --out "$key.steps.sum" --windows "$key.steps" \
-    "$arm" $(printf "$(bench_args "$1" "$2")" steps) >/dev/null
+    "$arm" $(printf "$(bench_args "$1" "$2" "${3:-}")" steps) >/dev/null
   # shellcheck disable=SC2046
   "$top/toolchains/qemu/count-insns.sh" --out "$key.frames.sum" --windows "$key.frames" \
-    "$arm" $(printf "$(bench_args "$1" "$2")" frame) >/dev/null
+    "$arm" $(printf "$(bench_args "$1" "$2" "${3:-}")" frame) >/dev/null
   awk -v f="$frames" 'NR == FNR { split($3, a, "="); s[(FNR-1)%4] += a[2]; next } { split($3, a, "="); t += a[2] }
     END { printf "%.0f %.0f %.0f %.0f %.0f", s[0]/f, s[1]/f, s[2]/f, s[3]/f, t/f }' "$key.steps" "$key.frames"
 }
@@ -62,6 +67,7 @@ for scene in cube toy; do
     result[arm.$scene.$kud]=$(arm_steps "$scene" "$kud")
     result[host.$scene.$kud]=$(host_steps "$scene" "$kud")
   done
+  result[arm.$scene.rolling]=$(arm_steps "$scene" 0 "$rolling_xml")
 done
 
 bench_heading "Real cameras: what the lens costs per frame (camera_eval_cost)" "ARM S40.23 and host double builds"
@@ -83,4 +89,25 @@ for build in arm host; do
   for scene in cube toy; do
     rows "$label" "$scene" "${kud_of[$scene]}" "${result[$build.$scene.0]}" "${result[$build.$scene.${kud_of[$scene]}]}"
   done
+done
+echo
+echo "### The rolling-shutter step (\\`<edgetrack><camera><readout>\\`, \\`track --readout\\`)"
+echo
+echo "The same pinhole frames on the PXA270 with a readout of one frame interval: each control point moved to"
+echo "its row's read time and the frame solved a second time with its own velocity (docs/ARCHITECTURE.md,"
+echo "\"Rolling shutter\"). The frames are global-shutter renders, so this counts the step's work, not how a"
+echo "rolling-shutter frame tracks (docs/results/camera_eval.md). The first two frames have no velocity yet and"
+echo "are tracked as without it."
+echo
+echo "| build | scene | readout | visible edges | grey scaling | ME | pose | whole Tracker::track |"
+echo "|---|---|---|---:|---:|---:|---:|---:|"
+for scene in cube toy; do
+  read -r -a pin <<<"${result[arm.$scene.0]}"
+  read -r -a rolling <<<"${result[arm.$scene.rolling]}"
+  printf '| PXA270 S40.23 | %s | 0 | %s | %s | %s | %s | %s |\n' "$scene" "${pin[@]}"
+  cells=""
+  for i in 0 1 2 3 4; do
+    cells+=$(awk -v a="${pin[$i]}" -v b="${rolling[$i]}" 'BEGIN { printf " %.0f (%+.1f %%) |", b, 100 * (b - a) / a }')
+  done
+  printf '| PXA270 S40.23 | %s | 1 frame |%s\n' "$scene" "$cells"
 done
