@@ -285,7 +285,9 @@ templates_section() {
     >/dev/null 2>&1 || true
   local d_heap d_insns
   d_heap=$(board_value "heap high-water" detect.board)
-  d_insns=$(awk '{ sub("insns=", "", $3); print $3 }' detect.windows | head -n 1)
+  d_insns=$(awk '{ sub("insns=", "", $3); print $3 }' detect.windows 2>/dev/null | head -n 1)
+  # A run that did not get to the end of a detection says why, in the board's own last line.
+  [ -n "$d_insns" ] || d_insns="not measured: the run ended before a detection finished (\`$(grep -v '^board:' detect.board | tail -n 1 | tr '|' '/')\`)"
   echo
   echo "### Templates in flash and \`--init-auto\` on the microcontroller"
   echo
