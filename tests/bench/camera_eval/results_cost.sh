@@ -91,7 +91,7 @@ for build in arm host; do
   done
 done
 echo
-echo "### The rolling-shutter step (\\`<edgetrack><camera><readout>\\`, \\`track --readout\\`)"
+echo "### The rolling-shutter step (\`<edgetrack><camera><readout>\`, \`track --readout\`)"
 echo
 echo "The same pinhole frames on the PXA270 with a readout of one frame interval: each control point moved to"
 echo "its row's read time and the frame solved a second time with its own velocity (docs/ARCHITECTURE.md,"
