@@ -11,7 +11,7 @@
 #include "edgetrack/face_visibility.h"
 #include "edgetrack/motion_model.h"
 #include "edgetrack/pose_solver.h"
-#include "edgetrack/thin_lines.h"
+#include "edgetrack/thin_line_params.h"
 #include "edgetrack/tracking_status.h"
 
 namespace edgetrack {
@@ -58,7 +58,7 @@ struct TrackerParams {
   /// beyond the edge's own mask response, and raise it slightly on the plain generated
   /// sequences (docs/ME.md).
   int hypotheses = 1;
-  ThinLineParams thin_lines;  ///< matches on a thin dark line beside an edge (thin_lines.h)
+  ThinLineParams thin_lines;  ///< matches on a thin dark line beside an edge (thin_line_params.h)
   GreyScaling grey = GreyScaling::kOnDemand;
   MotionParams motion;  ///< prediction between frames and the range that follows it
   StatusParams status;  ///< the tracked / uncertain / lost rule
