@@ -108,6 +108,12 @@ pc_flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs ed
 [ "$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --variable=real edgetrack)" = "$real" ] || fail "edgetrack.pc: real is not $real"
 # shellcheck disable=SC2086
 ${EDGETRACK_CONSUMER_LAUNCHER:-} $cxx $flags "$source/examples/minimal/minimal.cpp" $pc_flags -o "$work/minimal_pc" || fail "minimal does not build with pkg-config's flags"
+# The public headers reach no port but real: otherwise a ViSP or VXL installed on the consumer's
+# machine would be taken in their place, silently, or the build would fail where none is.
+# shellcheck disable=SC2086
+reached=$(echo '#include <edgetrack/edgetrack.h>' | $cxx $flags $pc_flags -x c++ -E -H - -o /dev/null 2>&1 |
+          grep -E '^\.+ .*/(visp3|vnl|vcl|netlib|testlib)/' || true)
+[ -z "$reached" ] || fail "edgetrack/edgetrack.h reaches headers other than real's: $reached"
 
 # Five frames of the real cube sequence: every pose solved, most points matched, and the pose
 # the installed command line finds for each frame with the same (default) settings.
