@@ -10,8 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
 mkdir -p "$bench_build_root"
-work=$(mktemp -d "${TMPDIR:-/tmp}/thin_lines.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+bench_scratch thin_lines
 bench=$(bench_tree host double edgetrack tracking_eval_drift_profiles)
 edgetrack=$bench/app/edgetrack
 profiles=$bench/tests/bench/tracking_eval/tracking_eval_drift_profiles
@@ -21,9 +20,6 @@ castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
 castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
 models=$top/data/models
 on=(--thin-lines enabled=1)
-
-# value KEY FILE: the value of KEY=... on a machine-readable line.
-value() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" "$2" | head -n 1; }
 
 # track_eval EDGETRACK SEQUENCE MODEL OUT [TRACK ARGS...]: tracks a generated sequence from its first
 # pose and evaluates it against its truth into OUT.eval; the poses in OUT.csv.
@@ -48,8 +44,8 @@ clutter_row() {
   local name="60 mm cube"
   [ "$model" = wood_toy ] && name="wood toy"
   printf '| %s | %s | %s | %.3f | %s | %.3f | %.3f | %.3f |\n' "$name" "$mm" "$seed" \
-    "$(value distance_mm "$work/defaults.eval")" "$(value lost "$work/on.eval")" "$(value distance_mm "$work/on.eval")" \
-    "$(value max_distance_mm "$work/on.eval")" "$(value max_distance_mm "$work/s40.eval")"
+    "$(bench_value distance_mm "$work/defaults.eval")" "$(bench_value lost "$work/on.eval")" "$(bench_value distance_mm "$work/on.eval")" \
+    "$(bench_value max_distance_mm "$work/on.eval")" "$(bench_value max_distance_mm "$work/s40.eval")"
   [ "$seed" != 1 ] || "$profiles" "$models/$model.cao" "$seq" >"$work/profiles.$model.$mm.txt"
 }
 
@@ -70,10 +66,7 @@ real_row() {
   echo "| $name |$cells"
 }
 
-echo "## The thin-line test in clutter (tracking_eval_thin_lines)"
-echo
-echo "\`tests/bench/tracking_eval/results_thin_lines.sh\`: host double and S40.23 builds, $(bench_machine)."
-echo
+bench_heading "The thin-line test in clutter (tracking_eval_thin_lines)" "host double and S40.23 builds"
 echo "The thin-line test (\`<edgetrack><thin_lines>\`, \`track --thin-lines enabled=1\`; docs/ME.md, \"Thin lines"
 echo "beside the edges\") takes off a match whose darker side comes back within a line's width. It is off by"
 echo "default. Generated: \`edgetrack synth --clutter MM --seed S\` (QVGA, 60 frames, dark lines MM mm beside"
