@@ -92,6 +92,17 @@ const char* const kFrameDoc =
     "H x W x 4 (RGBA32, BGRA32), (3H/2) x W (NV21, I420), uint16 H x W (RGB565). `layout`: an edgetrack.Layout; "
     "by default grey8 for uint8 H x W and RGB565 for uint16 H x W.";
 
+/// The templates of `params`, checked, made with the GIL released (it takes seconds).
+TemplateSet templates_made(const EdgeModel& model, const PinholeCamera& camera, const TemplateParams& params) {
+  value_or_raise(check_template_params(params));
+  std::optional<Result<TemplateSet>> made;
+  {
+    py::gil_scoped_release release;
+    made.emplace(make_template_set(model, camera, params));
+  }
+  return value_or_raise(std::move(*made));
+}
+
 }  // namespace
 
 void bind_tracking(py::module_& m) {
@@ -158,13 +169,7 @@ void bind_tracking(py::module_& m) {
         TemplateParams params;
         params.views.distance_min = real(distance_min);
         params.views.distance_max = real(distance_max);
-        value_or_raise(check_template_params(params));
-        std::optional<Result<TemplateSet>> made;
-        {
-          py::gil_scoped_release release;
-          made.emplace(make_template_set(model, camera, params));
-        }
-        return value_or_raise(std::move(*made));
+        return templates_made(model, camera, params);
       },
       py::arg("model"), py::arg("camera"), py::arg("distance_min") = 0.0, py::arg("distance_max") = 0.0,
       "Templates for detecting `model` with `camera` (its image size needed), over camera distances in metres "
@@ -174,13 +179,7 @@ void bind_tracking(py::module_& m) {
       [](const EdgeModel& model, const PinholeCamera& camera) {
         TemplateParams params;
         params.views = auto_init_views(camera, model_extent(model));
-        value_or_raise(check_template_params(params));
-        std::optional<Result<TemplateSet>> made;
-        {
-          py::gil_scoped_release release;
-          made.emplace(make_template_set(model, camera, params));
-        }
-        return value_or_raise(std::move(*made));
+        return templates_made(model, camera, params);
       },
       py::arg("model"), py::arg("camera"),
       "Templates over the distances `edgetrack track --init-auto` searches when none is given: wherever the "
