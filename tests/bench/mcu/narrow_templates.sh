@@ -24,11 +24,10 @@ first_view() {
     d = sqrt(px * px + py * py + pz * pz)
     printf "%.6f,%.6f,%.6f %.6f\n", px / d, py / d, pz / d, d }'
 }
-# pos_distance_mm POS_A POS_B: the distance between the camera positions of two .pos poses, mm.
-pos_distance_mm() {
-  paste <(first_view "$1" | awk '{ split($1, a, ","); printf "%.9f %.9f %.9f\n", a[1] * $2, a[2] * $2, a[3] * $2 }') \
-        <(first_view "$2" | awk '{ split($1, a, ","); printf "%.9f %.9f %.9f\n", a[1] * $2, a[2] * $2, a[3] * $2 }') |
-    awk '{ printf "%.2f", 1000 * sqrt(($1 - $4) ^ 2 + ($2 - $5) ^ 2 + ($3 - $6) ^ 2) }'
+# translation_distance_mm POS_A POS_B: the distance between the model's origins in the camera frame of two .pos
+# poses, mm (the cube's symmetric poses put the camera elsewhere in the model frame, the model at the same place).
+translation_distance_mm() {
+  paste <(head -n 3 "$1") <(head -n 3 "$2") | awk '{ s += ($1 - $2) ^ 2 } END { printf "%.2f", 1000 * sqrt(s) }'
 }
 # detector_code MAP: the flash of the detector's objects (tracker/src/detector) in a link map, bytes.
 detector_code() {
@@ -69,7 +68,7 @@ narrow_templates_section() {
   local found error insns_m3 insns_arm heap
   found=$(grep -q 'found=1' narrow-m3.txt && echo yes || echo no)
   error="no pose"
-  [ -s narrow-m3.pos ] && error="$(pos_distance_mm narrow-m3.pos seq/first.pos) mm"
+  [ -s narrow-m3.pos ] && error="$(translation_distance_mm narrow-m3.pos seq/first.pos) mm"
   insns_m3=$(awk '{ sub("insns=", "", $3); print $3 }' narrow-m3.windows 2>/dev/null | head -n 1)
   insns_arm=$(awk '{ sub("insns=", "", $3); print $3 }' narrow-arm.windows 2>/dev/null | head -n 1)
   heap=$(board_value "heap high-water" narrow-m3.board)
@@ -93,12 +92,18 @@ narrow_templates_section() {
   echo "| templates, features | $count, $features | |"
   echo "| their constant data (\`.rodata\` of the compiled source) | $(kb "$template_bytes") KB: $per_template bytes per template | |"
   echo "| the detector's code in the command line firmware | $(kb "$code") KB | |"
-  echo "| found on the first frame (Cortex-M3), camera position against the truth | $found, $error | |"
+  echo "| found on the first frame (Cortex-M3), its translation against the truth | $found, $error | |"
   echo "| guest instructions of \`Detector::detect\`, Cortex-M3 | ${insns_m3:-not measured} | |"
   echo "| guest instructions of \`Detector::detect\`, PXA270 | ${insns_arm:-not measured} | |"
   echo "| heap high-water of \`detect\` on the board (the templates read into RAM from their file, the model, the frame, the detector's maps) | $(kb "$heap") KB | 192 KB: $(met "$heap" 192) |"
   echo
   echo "What remains of the 256 KB flash budget beside the tracker firmware ($(kb "$t_flash") KB) and the detector's code:"
-  echo "$(kb "$remaining") KB, room for $fit templates at $per_template bytes each (this set has $count)."
+  if [ "$remaining" -gt 0 ]; then
+    echo "$(kb "$remaining") KB, room for $fit templates at $per_template bytes each (this set has $count)."
+  else
+    echo "nothing: the two are over it by $(kb $((-remaining))) KB, so no template fits until the tracker firmware shrinks."
+  fi
+  echo "Each KB of flash holds $((1024 / per_template)) templates: this set's views ($directions directions within $narrow_cone degrees of"
+  echo "the axis, $distances distances from $low to $high m, $narrow_in_plane rotations each) take $(kb "$template_bytes") KB."
 }
 narrow_templates_section
