@@ -2,8 +2,8 @@
 # Sourced by tests/bench/mcu/results.sh (its trees, scratch directory and helpers): the markdown
 # sections of docs/results/mcu.md on the tracker's steps and on soft float. Guest instructions per
 # step of Tracker::track (bench_tracker's StepObserver windows, as docs/results/tracker.md counts the
-# PXA270's) for the Cortex-M3 in S40.23 and in float (soft float: the M3 has no FPU) beside the
-# PXA270's S40.23, and the accuracy of each M3 build's `edgetrack track` on the generated sequences
+# PXA270's) for the Cortex-M3 and the PXA270, each in S40.23 and in float (soft float: neither has an
+# FPU), and the accuracy of each M3 build's `edgetrack track` on the generated sequences
 # against the truth and against the host double build.
 
 steps_frames=60  # bench_tracker's sequence, as docs/results/tracker.md's PXA270 table
@@ -58,9 +58,10 @@ eval_within() {
 }
 
 steps_and_float_section() {
-  local float_dir
+  local float_dir arm_float_dir
   host_double=$(bench_tree host double edgetrack)
   float_dir=$(bench_tree mcu float edgetrack bench_tracker)
+  arm_float_dir=$(bench_tree arm float bench_tracker)
   cmake --build "$mcu_dir" --target bench_tracker >"$work/bench_tracker.mcu.log" 2>&1 ||
     { tail -n 40 "$work/bench_tracker.mcu.log" >&2; return 1; }
   cmake --build "$arm_dir" --target bench_tracker >"$work/bench_tracker.arm.log" 2>&1 ||
@@ -68,31 +69,35 @@ steps_and_float_section() {
   steps_count m3_s40 "$mcu_dir" arm-none-eabi
   steps_count m3_float "$float_dir" arm-none-eabi
   steps_count pxa_s40 "$arm_dir"
+  steps_count pxa_float "$arm_float_dir"
 
   echo
-  echo "### Guest instructions per step: Cortex-M3 in S40.23 and in soft float, PXA270 in S40.23"
+  echo "### Guest instructions per step: Cortex-M3 and PXA270, in S40.23 and in soft float"
   echo
   echo "\`bench_tracker $steps_frames cube steps on-demand\` (tests/bench/tracker, the program of docs/results/tracker.md's"
   echo "PXA270 table, built in each tree): a StepObserver opens one count window per step of \`Tracker::track\`; the"
   echo "whole frame is one window of \`bench_tracker $steps_frames cube frame on-demand\`. The same $steps_frames generated QVGA"
   echo "frames of the cube, rendered by the program before its windows, paper's settings. Means per frame. The"
   echo "Cortex-M3 float tree is \`-DEDGETRACK_REAL=float\` with the same toolchain file (\`build/bench-mcu-float\`):"
-  echo "the M3 has no FPU, so every float operation is a call into libgcc's soft-float routines."
+  echo "the M3 has no FPU, so every float operation is a call into libgcc's soft-float routines; the PXA270's float"
+  echo "tree (\`build/bench-arm-float\`) likewise."
   echo
   echo "| target, real | visible edges | grey scaling | ME | pose | outside the steps | whole frame | largest frame | in soft-float routines per frame |"
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
   steps_row "Cortex-M3, S40.23" m3_s40
   steps_row "Cortex-M3, float (soft)" m3_float
   steps_row "PXA270, S40.23" pxa_s40
+  steps_row "PXA270, float (soft)" pxa_float
   echo
   echo "Soft-float instructions per frame in each step (visible edges, grey, ME, pose): Cortex-M3 S40.23"
-  echo "$(steps_soft m3_s40); Cortex-M3 float $(steps_soft m3_float)."
+  echo "$(steps_soft m3_s40); Cortex-M3 float $(steps_soft m3_float); PXA270 float $(steps_soft pxa_float)."
   echo "Outside the steps: the whole frame's window less its four steps' (the status rule's measures, the motion"
-  echo "model's update and the contrasts remembered for the next frame, tracker/src/tracker.cpp). The frames are RGB565: the bare-metal"
+  echo "model's update and the contrasts remembered for the next frame, tracker/src/tracker.cpp). These frames are RGB565"
+  echo "(the command line's above are grey8 PGM, read as they are): the bare-metal"
   echo "tree converts each pixel to grey by the rule, not through the hosted builds' 64 KB table (docs/MCU.md), hence"
   echo "its dearer grey step."
   echo "Camera position error against the truth on these frames (mean, largest, mm): Cortex-M3 S40.23"
-  echo "$(steps_error m3_s40), Cortex-M3 float $(steps_error m3_float), PXA270 S40.23 $(steps_error pxa_s40)."
+  echo "$(steps_error m3_s40), Cortex-M3 float $(steps_error m3_float), PXA270 S40.23 $(steps_error pxa_s40), PXA270 float $(steps_error pxa_float)."
 
   # The generated sequences of `edgetrack synth` (OSMesa, noise and blur): the cube's and the wood toy's.
   "$host_dir/app/edgetrack" synth --out seq60 --frames 60 --pgm >/dev/null
