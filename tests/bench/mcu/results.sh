@@ -312,3 +312,7 @@ templates_section() {
   echo "(its flash: above)."
 }
 templates_section
+
+# --- Per step and in soft float; a narrow template set for the detector (sections of their own) ---
+source "$here/steps_and_float.sh"
+source "$here/narrow_templates.sh"
