@@ -216,6 +216,8 @@ int main(int argc, char** argv) {
     std::fprintf(poses, "%s\n", line);
   }
   if (std::fclose(poses) != 0) return fail(std::string(argv[7]) + ": writing failed");
+  std::fprintf(stderr, "tracker limits: %d control points per frame, %d primitives, %dx%d\n", kTrackerLimits.control_points,
+               kTrackerLimits.primitives, kTrackerLimits.image_width, kTrackerLimits.image_height);
   report_memory(tracker->memory(), before_tracker, created, live_heap() - before_tracker);
   const size_t after_lock = edgetrack_allocation_calls() - calls_at_lock;
   std::fprintf(stderr, "allocations: %lu until the tracker was created, %lu after it (%lu refused)\n",

@@ -95,13 +95,21 @@ static void test_edge_id_buffer() {
   fresh.surface_depth(fresh_depth);
   TEST("a reused buffer equals a fresh one", edge_image(ids) == edge_image(fresh) && depth == fresh_depth, true);
 
-  // A byte per pixel for a model of a few primitives, RGB565 for any: the same edges everywhere.
-  EdgeIdBuffer narrow(camera, primitive_count(cube)), wide(camera);
-  narrow.render(cube, turned);
+  // Half a byte per pixel for a model of up to 15 primitives, a byte up to 255, RGB565 for any:
+  // the same edges everywhere.
+  EdgeIdBuffer nibbles(camera, primitive_count(cube)), bytes(camera, EdgeIdBuffer::kNarrowPrimitives), wide(camera);
+  nibbles.render(cube, turned);
+  bytes.render(cube, turned);
   wide.render(cube, turned);
-  TEST_EQUAL("the cube's Edge-ID image takes a byte per pixel", narrow.image_bytes(), size_t(320 * 240));
+  TEST_EQUAL("the cube's Edge-ID image takes half a byte per pixel", nibbles.image_bytes(), size_t(320 * 240 / 2));
+  TEST_EQUAL("a byte for up to 255 primitives", bytes.image_bytes(), size_t(320 * 240));
   TEST_EQUAL("or two as RGB565", wide.image_bytes(), size_t(2 * 320 * 240));
-  TEST("both show the same edge at every pixel", edge_image(narrow) == edge_image(wide), true);
+  TEST("all show the same edge at every pixel",
+       edge_image(nibbles) == edge_image(wide) && edge_image(bytes) == edge_image(wide), true);
+  // Drawn again from another pose, each image's last lines are cleared, not left behind.
+  nibbles.render(cube, face_on);
+  wide.render(cube, face_on);
+  TEST("a redrawn half-byte image equals the RGB565 one", edge_image(nibbles) == edge_image(wide), true);
 
   // Partly outside the image and partly behind the camera: no crash, nothing drawn off-image.
   const Se3 close(Mat33::identity(), {real(0.02), real(0), real(0.0)});

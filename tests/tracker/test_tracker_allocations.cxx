@@ -3,6 +3,7 @@
 /// pose again and again, no call to Tracker::track after the first makes a heap allocation and
 /// the live bytes stay the same, so a long run's memory stays flat. Prints the allocations per
 /// frame (the figure docs/RELIABILITY.md reports).
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -66,9 +67,12 @@ static void test_tracker_allocations() {
   TEST("and to all of it but at most 32 KB", counted - int64_t(memory.total()) <= 32 * 1024, true);
   const size_t pixels = static_cast<size_t>(camera.width) * camera.height;
   TEST_EQUAL("an RGB565 frame is converted into a grey image of the frame's size", memory.grey_image, pixels);
-  TEST_EQUAL("the Edge-ID image holds a byte per pixel (the cube has 12 edges)", memory.edge_id_image, pixels);
+  TEST_EQUAL("the Edge-ID image holds half a byte per pixel (the cube has 12 edges)", memory.edge_id_image, pixels / 2);
   TEST("the depths under the lines take less than a tenth of a depth image's", memory.edge_id_lines < pixels * 4 / 10,
        true);
+  // One line's depths at a time: less than a longest line's 4-byte depths for each of the 12 edges.
+  const size_t longest_line = static_cast<size_t>(std::max(camera.width, camera.height) + 1);
+  TEST("and are kept for one line at a time", memory.edge_id_lines < 12 * longest_line * sizeof(int32_t), true);
 
   // A grey8 frame is read in place: no grey image, and the same pose as from RGB565 (the grey
   // levels are rgb565ToGrey's either way).

@@ -56,6 +56,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
                               const ProjectedPoints* projected) {
   using std::fabs;
   remembered_.clear();
+  groups_.clear();
   // Sized by the matches, so that it grows only on a frame with more matches than any before.
   remembered_.reserve(matches.size());
   // Mean |contrast| per primitive over the kept matches (matches come grouped by primitive).
@@ -70,6 +71,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
         ++count;
       }
     const real half_mean = count > 0 ? sum / real(2 * count) : real(0);
+    const size_t group_first = remembered_.size();
     for (size_t k = first; k < end; ++k) {
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
@@ -79,37 +81,32 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
         const Vec3 p = camera_from_model * m.point.point_in_model;
         if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
       }
-      remembered_.push_back({m.point.edge, m.point.point_in_model, m.contrast});
+      remembered_.push_back({m.point.point_in_model, m.contrast});
     }
+    if (remembered_.size() > group_first) add_group(matches[first].point.edge, group_first);
     first = end;
   }
-  group();
 }
 
-void ContrastMemory::group() {
-  groups_.clear();
-  for (size_t first = 0, end = 0; first < remembered_.size(); first = end) {
-    Group g;
-    g.edge = remembered_[first].edge;
-    g.first = first;
-    for (end = first; end < remembered_.size() && remembered_[end].edge == g.edge; ++end) {
-    }
-    g.end = end;
-    // The axis of the largest change from the first point to the last: a straight edge's.
-    using std::fabs;
-    const Vec3 spread = remembered_[end - 1].point_in_model - remembered_[first].point_in_model;
-    const real sx = fabs(spread.x), sy = fabs(spread.y), sz = fabs(spread.z);
-    g.axis = sx >= sy && sx >= sz ? 0 : sy >= sz ? 1 : 2;
-    bool grows = true, falls = true;
-    for (size_t k = first + 1; k < end; ++k) {
-      const real& before = coordinate(remembered_[k - 1].point_in_model, g.axis);
-      const real& after = coordinate(remembered_[k].point_in_model, g.axis);
-      grows = grows && !(after < before);
-      falls = falls && !(after > before);
-    }
-    g.order = grows ? 1 : falls ? -1 : 0;
-    groups_.push_back(g);
+void ContrastMemory::add_group(int edge, size_t first) {
+  using std::fabs;
+  Group g;
+  g.edge = edge;
+  g.first = first;
+  g.end = remembered_.size();
+  // The axis of the largest change from the first point to the last: a straight edge's.
+  const Vec3 spread = remembered_[g.end - 1].point_in_model - remembered_[first].point_in_model;
+  const real sx = fabs(spread.x), sy = fabs(spread.y), sz = fabs(spread.z);
+  g.axis = sx >= sy && sx >= sz ? 0 : sy >= sz ? 1 : 2;
+  bool grows = true, falls = true;
+  for (size_t k = first + 1; k < g.end; ++k) {
+    const real& before = coordinate(remembered_[k - 1].point_in_model, g.axis);
+    const real& after = coordinate(remembered_[k].point_in_model, g.axis);
+    grows = grows && !(after < before);
+    falls = falls && !(after > before);
   }
+  g.order = grows ? 1 : falls ? -1 : 0;
+  groups_.push_back(g);
 }
 
 size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, const Group& g,

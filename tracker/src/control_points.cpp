@@ -250,6 +250,12 @@ void keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& e
     if (edge_ids.shows(p.edge, p.pixel, p.direction)) visible.push_back(p);
 }
 
+void keep_visible(std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids) {
+  points.erase(std::remove_if(points.begin(), points.end(),
+                              [&edge_ids](const ControlPoint& p) { return !edge_ids.shows(p.edge, p.pixel, p.direction); }),
+               points.end());
+}
+
 void project_points(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
                     ProjectedPoints& out) {
   out.pixel.assign(points.size(), Vec2{real(0), real(0)});

@@ -17,20 +17,43 @@ EdgeIdBuffer::EdgeIdBuffer(const PinholeCamera& camera, int primitives)
     : camera_(camera),
       screen_{0, 0, camera.width - 1, camera.height - 1},
       pixels_(static_cast<size_t>(camera.width) * camera.height),
-      narrow_(primitives <= kNarrowPrimitives) {
-  if (narrow_) narrow_ids_.assign(pixels_, NarrowId{0});
-  else colours_.assign(pixels_, 0);
+      bits_(image_bits(static_cast<size_t>(primitives < 0 ? 0 : primitives))) {
+  if (bits_ == 16) colours_.assign(pixels_, 0);
+  else narrow_ids_.assign(bits_ == 4 ? (pixels_ + 1) / 2 : pixels_, NarrowId{0});
+}
+
+int EdgeIdBuffer::image_bits(size_t primitives) {
+  if (primitives <= static_cast<size_t>(kNibblePrimitives)) return 4;
+  return primitives <= static_cast<size_t>(kNarrowPrimitives) ? 8 : 16;
 }
 
 namespace {
 
+/// An image of one value per pixel (RGB565 colours or primitive numbers), for the drawing loops.
+template <class Pixel>
+struct WholePixels {
+  Pixel* image;
+  void set(size_t i, uint16_t value) const { image[i] = static_cast<Pixel>(value); }
+};
+
+/// An image of 4-bit primitive numbers, two per byte, the even pixel in the low half.
+template <class Byte>
+struct NibblePixels {
+  Byte* image;
+  void set(size_t i, uint16_t value) const {
+    const unsigned shift = (i & 1u) * 4u;
+    Byte& byte = image[i >> 1];
+    byte = static_cast<Byte>((static_cast<unsigned>(byte) & ~(0xFu << shift)) | (unsigned{value} << shift));
+  }
+};
+
 /// Sets the pixels of `lines` in `image` to 0. Each line is walked from a local copy: a byte
 /// store may alias anything but a local, so the walk's steps stay in registers.
-template <class Pixel, class Segments>
-void clear_line_pixels(Pixel* image, const Segments& lines, int width, int height) {
+template <class Image, class Segments>
+void clear_line_pixels(const Image& image, const Segments& lines, int width, int height) {
   for (const auto& s : lines) {
     const LineWalk line = s.line;
-    draw_line(line, width, height, [image, width](int x, int y, int32_t) { image[static_cast<size_t>(y) * width + x] = Pixel{0}; });
+    draw_line(line, width, height, [image, width](int x, int y, int32_t) { image.set(static_cast<size_t>(y) * width + x, 0); });
   }
 }
 
@@ -41,26 +64,29 @@ void EdgeIdBuffer::clear_lines() {
     std::fill(narrow_ids_.begin(), narrow_ids_.end(), NarrowId{0});
     std::fill(colours_.begin(), colours_.end(), uint16_t(0));
     clear_all_ = false;
-  } else if (narrow_) {
-    clear_line_pixels(narrow_ids_.data(), segments_, camera_.width, camera_.height);
+  } else if (bits_ == 4) {
+    clear_line_pixels(NibblePixels<NarrowId>{narrow_ids_.data()}, segments_, camera_.width, camera_.height);
+  } else if (bits_ == 8) {
+    clear_line_pixels(WholePixels<NarrowId>{narrow_ids_.data()}, segments_, camera_.width, camera_.height);
   } else {
-    clear_line_pixels(colours_.data(), segments_, camera_.width, camera_.height);
+    clear_line_pixels(WholePixels<uint16_t>{colours_.data()}, segments_, camera_.width, camera_.height);
   }
   segments_.clear();
   occluders_.clear();
 }
 
-void EdgeIdBuffer::use_image(bool narrow) {
-  const bool sized = narrow ? narrow_ids_.size() == pixels_ : colours_.size() == pixels_;
-  if (narrow == narrow_ && sized) return;
-  if (narrow) {
+void EdgeIdBuffer::use_image(int bits) {
+  const size_t bytes = bits == 4 ? (pixels_ + 1) / 2 : pixels_;
+  const bool sized = bits == 16 ? colours_.size() == pixels_ : narrow_ids_.size() == bytes;
+  if (bits == bits_ && sized) return;
+  if (bits != 16) {
     std::vector<uint16_t>().swap(colours_);
-    narrow_ids_.assign(pixels_, NarrowId{0});
+    std::vector<NarrowId>(bytes, NarrowId{0}).swap(narrow_ids_);
   } else {
     std::vector<NarrowId>().swap(narrow_ids_);
     colours_.assign(pixels_, 0);
   }
-  narrow_ = narrow;
+  bits_ = bits;
   edge_colours_.clear();  // their values are the other image's
   segments_.clear();      // the new image has none of their pixels
   occluders_.clear();
@@ -68,7 +94,7 @@ void EdgeIdBuffer::use_image(bool narrow) {
 }
 
 void EdgeIdBuffer::assign(const uint16_t* rgb565) {
-  use_image(false);
+  use_image(16);
   std::copy(rgb565, rgb565 + pixels_, colours_.begin());
   segments_.clear();
   occluders_.clear();
@@ -77,23 +103,23 @@ void EdgeIdBuffer::assign(const uint16_t* rgb565) {
 
 void EdgeIdBuffer::reserve_for(const EdgeModel& model) {
   const size_t primitives = static_cast<size_t>(primitive_count(model));
-  use_image(narrow_ && primitives <= static_cast<size_t>(kNarrowPrimitives));
+  // An image only widens: a model of more primitives than the last needs more bits.
+  use_image(std::max(bits_, image_bits(primitives)));
   if (edge_colours_.size() != primitives) {
     edge_colours_.resize(primitives);
     for (size_t e = 0; e < primitives; ++e)
-      edge_colours_[e] = narrow_ ? static_cast<uint16_t>(e + 1) : pack_rgb565(encode_edge_id(static_cast<int>(e)));
+      edge_colours_[e] = bits_ != 16 ? static_cast<uint16_t>(e + 1) : pack_rgb565(encode_edge_id(static_cast<int>(e)));
   }
   // At most one line per primitive; a clipped polygon fans into kMaxClippedVertices - 2
   // triangles, a windowed back facet (never clipped) into one per rim box.
   segments_.reserve(primitives);
   occluders_.reserve((model.triangles.size() + 2 * model.cylinder_surface.size()) * (kMaxClippedVertices - 2));
-  // A line clipped to the screen has at most one pixel per column or row, and one more for
-  // rounding; past one image's worth the lines cross each other anyway.
+  // One line at a time (draw_segments): a line clipped to the screen has at most one pixel per
+  // column or row, and one more for rounding. Owners only under the lines a side may not hide:
+  // cylinder silhouettes and circles.
   const size_t line_pixels = static_cast<size_t>(std::max(camera_.width, camera_.height) + 1);
-  line_depth_.reserve(std::min(primitives * line_pixels, pixels_));
-  // Owners only under the lines a side may not hide: cylinder silhouettes and circles.
-  const size_t exemptible = primitives - model.edges.size();
-  line_owner_.reserve(std::min(exemptible * line_pixels, pixels_));
+  line_depth_.reserve(line_pixels);
+  if (primitives > model.edges.size()) line_owner_.reserve(line_pixels);
   points_in_camera_.reserve(model.vertices.size());
   front_.reserve(model.faces.size());
   rim_boxes_.reserve(model.cylinders.size());
@@ -108,7 +134,6 @@ void EdgeIdBuffer::render(const EdgeModel& model, const Se3& camera_from_model) 
   collect_segments(model, camera_from_model);
   collect_faces(model, camera_from_model);
   collect_cylinder_sides(model, camera_from_model);
-  find_nearest_surfaces();
   draw_segments();
 }
 
@@ -347,75 +372,71 @@ struct StepAlong {
 
 }  // namespace
 
-void EdgeIdBuffer::find_nearest_surfaces() {
-  size_t pixels = 0, owned = 0;
-  for (Segment& s : segments_) {
-    s.first_pixel = pixels;
-    pixels += static_cast<size_t>(s.line.count);
-    // Only a line that a surface's owner may not hide reads who that surface is.
-    s.first_owner = owned;
-    if (s.exempt_owner >= 0) owned += static_cast<size_t>(s.line.count);
-  }
+void EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
   // No surface anywhere yet. A pixel two lines share gets the same nearest surface from each
   // (line_in_triangle gives a triangle's own depth there, whatever the line).
+  const size_t pixels = static_cast<size_t>(s.line.count);
   line_depth_.assign(pixels, 0);
-  line_owner_.assign(owned, 0);
+  // Only a line that a surface's owner may not hide reads who that surface is.
+  line_owner_.assign(s.exempt_owner >= 0 ? pixels : 0, 0);
   // In the order a whole-surface fill would take, keeping the first of equal depths: the same
   // nearest surface at every pixel as that fill's. A triangle whose box misses the line's box has
   // none of its pixels (most of a tessellated side's facets, for each line).
-  for (const Segment& s : segments_) {
-    int32_t* depth = line_depth_.data() + s.first_pixel;
-    const LineWalk& line = s.line;
-    const StepAlong step_along(line);
-    for (const Occluder& o : occluders_) {
-      const PixelRect& box = o.triangle.box;
-      if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
-      if (s.exempt_owner < 0) {
-        line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
-          int32_t& nearest = depth[step_along(x, y)];
-          if (w > nearest) nearest = w;
-        });
-        continue;
-      }
-      int16_t* owner = line_owner_.data() + s.first_owner;
-      const int16_t id = o.owner;
-      line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
-        const int k = step_along(x, y);
-        if (w > depth[k]) {
-          depth[k] = w;
-          owner[k] = id;
-        }
-      });
-    }
-  }
-}
-
-template <class Pixel>
-void EdgeIdBuffer::draw_segments_into(Pixel* image) const {
-  const int width = camera_.width, height = camera_.height;
-  for (const Segment& s : segments_) {
-    const int32_t* depth = line_depth_.data() + s.first_pixel;
-    const LineWalk line = s.line;  // a local copy, as in clear_line_pixels
-    const StepAlong step_along(line);
-    const Pixel code = static_cast<Pixel>(s.code);
-    const int exempt = s.exempt_owner;
-    if (exempt < 0) {  // no surface's owner is negative: only the depth decides
-      draw_line(line, width, height, [depth, image, width, step_along, code](int x, int y, int32_t w) {
-        if (w + (w >> 7) >= depth[step_along(x, y)]) image[static_cast<size_t>(y) * width + x] = code;
+  int32_t* depth = line_depth_.data();
+  const LineWalk& line = s.line;
+  const StepAlong step_along(line);
+  for (const Occluder& o : occluders_) {
+    const PixelRect& box = o.triangle.box;
+    if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
+    if (s.exempt_owner < 0) {
+      line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
+        int32_t& nearest = depth[step_along(x, y)];
+        if (w > nearest) nearest = w;
       });
       continue;
     }
-    const int16_t* owner = line_owner_.data() + s.first_owner;
-    draw_line(line, width, height, [depth, owner, image, width, step_along, code, exempt](int x, int y, int32_t w) {
+    int16_t* owner = line_owner_.data();
+    const int16_t id = o.owner;
+    line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
       const int k = step_along(x, y);
-      if (w + (w >> 7) >= depth[k] || owner[k] == exempt) image[static_cast<size_t>(y) * width + x] = code;
+      if (w > depth[k]) {
+        depth[k] = w;
+        owner[k] = id;
+      }
     });
   }
 }
 
+template <class Image>
+void EdgeIdBuffer::draw_segment_into(const Segment& s, const Image& image) const {
+  const int width = camera_.width, height = camera_.height;
+  const int32_t* depth = line_depth_.data();
+  const LineWalk line = s.line;  // a local copy, as in clear_line_pixels
+  const StepAlong step_along(line);
+  const uint16_t code = s.code;
+  const int exempt = s.exempt_owner;
+  if (exempt < 0) {  // no surface's owner is negative: only the depth decides
+    draw_line(line, width, height, [depth, image, width, step_along, code](int x, int y, int32_t w) {
+      if (w + (w >> 7) >= depth[step_along(x, y)]) image.set(static_cast<size_t>(y) * width + x, code);
+    });
+    return;
+  }
+  const int16_t* owner = line_owner_.data();
+  draw_line(line, width, height, [depth, owner, image, width, step_along, code, exempt](int x, int y, int32_t w) {
+    const int k = step_along(x, y);
+    if (w + (w >> 7) >= depth[k] || owner[k] == exempt) image.set(static_cast<size_t>(y) * width + x, code);
+  });
+}
+
 void EdgeIdBuffer::draw_segments() {
-  if (narrow_) draw_segments_into(narrow_ids_.data());
-  else draw_segments_into(colours_.data());
+  // Each line's nearest surfaces, then the line: a line reads only its own, so one line's room
+  // serves them all.
+  for (const Segment& s : segments_) {
+    find_nearest_surfaces(s);
+    if (bits_ == 4) draw_segment_into(s, NibblePixels<NarrowId>{narrow_ids_.data()});
+    else if (bits_ == 8) draw_segment_into(s, WholePixels<NarrowId>{narrow_ids_.data()});
+    else draw_segment_into(s, WholePixels<uint16_t>{colours_.data()});
+  }
 }
 
 void EdgeIdBuffer::surface_depth(std::vector<int32_t>& depth) const {
@@ -441,7 +462,11 @@ size_t EdgeIdBuffer::line_bytes() const {
 int EdgeIdBuffer::edge_at(int x, int y) const {
   if (x < 0 || y < 0 || x >= camera_.width || y >= camera_.height) return -1;
   const size_t i = static_cast<size_t>(y) * camera_.width + x;
-  if (narrow_) return narrow_ids_.empty() ? -1 : static_cast<int>(narrow_ids_[i]) - 1;
+  if (bits_ == 4) {
+    if (narrow_ids_.empty()) return -1;
+    return static_cast<int>((static_cast<unsigned>(narrow_ids_[i >> 1]) >> ((i & 1u) * 4u)) & 0xFu) - 1;
+  }
+  if (bits_ == 8) return narrow_ids_.empty() ? -1 : static_cast<int>(narrow_ids_[i]) - 1;
   return colours_.empty() ? -1 : decode_edge_id_rgb565(colours_[i]);
 }
 

@@ -49,8 +49,8 @@ __attribute__((always_inline)) inline void weigh(size_t n, const real* __restric
   for (size_t i = 0; i < n; ++i) out[i] = w[i] * a[i];
 }
 
-/// One evaluation's loop over the matches: the camera-frame point (X, Y, Z) = z + t, its X, Y and
-/// 1 / Z, and delta = (a X + b Y + c Z) / Z, times the weight when there are weights (`weight`
+/// One evaluation's loop over the matches: the camera-frame point (X, Y, Z) = z + t, its 1 / Z,
+/// and delta = (a X + b Y + c Z) / Z, times the weight when there are weights (`weight`
 /// not null); false (the arrays then partly written) when a point is not in front of the camera.
 /// The arrays are restrict parameters (none overlaps another) and, in floating point, the depth
 /// test is a pass of its own, so that the host compiler takes two matches per vector
@@ -58,8 +58,8 @@ __attribute__((always_inline)) inline void weigh(size_t n, const real* __restric
 /// it for the chosen vectors (as turn_points and weigh).
 __attribute__((always_inline)) inline bool distances_to_lines(size_t n, const Vec3& t, const real* __restrict zx, const real* __restrict zy,
                         const real* __restrict zz, const real* __restrict a, const real* __restrict b,
-                        const real* __restrict c, const real* __restrict weight, real* __restrict x,
-                        real* __restrict y, real* __restrict inv_z, real* __restrict delta, real* __restrict fx) {
+                        const real* __restrict c, const real* __restrict weight, real* __restrict inv_z,
+                        real* __restrict delta, real* __restrict fx) {
   constexpr bool kFloating = std::is_floating_point<real>::value;
   if constexpr (kFloating)
     for (size_t i = 0; i < n; ++i)
@@ -67,8 +67,6 @@ __attribute__((always_inline)) inline bool distances_to_lines(size_t n, const Ve
   for (size_t i = 0; i < n; ++i) {
     const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
     if (!kFloating && p.z <= real(0)) return false;
-    x[i] = p.x;
-    y[i] = p.y;
     // One divisor for both quotients: the depth's reciprocal is the Jacobian's.
     const Divisor<real> by_z(p.z);
     inv_z[i] = by_z.divide(real(1));
@@ -88,16 +86,14 @@ __attribute__((always_inline)) inline bool distances_to_lines(size_t n, const Ve
 /// the Jacobian follows from them without the lens again (radial_lens_gradients). Not inlined:
 /// the pinhole's loop in f keeps its own registers.
 __attribute__((noinline)) bool distances_through_lens(size_t n, const PinholeCamera& camera, const Vec3& t, const real* zx, const real* zy,
-                            const real* zz, const real* a, const real* b, const real* c, const real* weight, real* x,
-                            real* y, real* inv_z, real* delta, real* fx, real* normalised_x, real* normalised_y,
+                            const real* zz, const real* a, const real* b, const real* c, const real* weight,
+                            real* inv_z, real* delta, real* fx, real* normalised_x, real* normalised_y,
                             real* radial_factor, real* radial_sum) {
   const bool radial = camera.lens.model == LensModel::kVisp;
   const real kud = camera.lens.kud;
   for (size_t i = 0; i < n; ++i) {
     const Vec3 p{zx[i] + t.x, zy[i] + t.y, zz[i] + t.z};
     if (!(p.z > real(0))) return false;
-    x[i] = p.x;
-    y[i] = p.y;
     const Divisor<real> by_z(p.z);
     const real w = by_z.divide(real(1));
     inv_z[i] = w;
@@ -153,14 +149,14 @@ void radial_lens_gradients(size_t n, const real& kud, const real* normalised_x, 
 }
 
 /// The Jacobian's six columns (MINPACK's layout, column c at out_c) at the last evaluation: per
-/// match, from (a, b) times the weight (`ka`, `kb`; through a lens (a, b) J_lens), the moved
-/// point's X and Y (`px`, `py`), the turned point (`zx`, `zy`, `zz`) and 1 / Z; kLeft false
-/// when J(w) is the identity. Restrict parameters and no branch in the loop, inlined where
+/// match, from (a, b) times the weight (`ka`, `kb`; through a lens (a, b) J_lens), the turned
+/// point (`zx`, `zy`, `zz`), the moved point's X and Y (z + t, as the evaluation added them) and
+/// 1 / Z; kLeft false when J(w) is the identity. Restrict parameters and no branch in the loop, inlined where
 /// vector_kernels::run builds it, each lane one match's columns (as distances_to_lines).
 template <bool kLeft>
 __attribute__((always_inline)) inline void jacobian_columns(
-    size_t n, const real* __restrict ka, const real* __restrict kb, const real* __restrict px,
-    const real* __restrict py, const real* __restrict zx, const real* __restrict zy, const real* __restrict zz,
+    size_t n, const real* __restrict ka, const real* __restrict kb, const Vec3& t, const real* __restrict zx,
+    const real* __restrict zy, const real* __restrict zz,
     const real* __restrict inverse_depth, const Mat33 jl, real* __restrict out_0, real* __restrict out_1,
     real* __restrict out_2, real* __restrict out_3, real* __restrict out_4, real* __restrict out_5) {
   for (size_t i = 0; i < n; ++i) {
@@ -169,7 +165,7 @@ __attribute__((always_inline)) inline void jacobian_columns(
     // lens the chain rule's (a, b) J_lens, d(x, y) / d p being the same).
     const real gx = ka[i] * inv_z;
     const real gy = kb[i] * inv_z;
-    const real gz = -sum_of_products(gx, px[i], gy, py[i]) * inv_z;
+    const real gz = -sum_of_products(gx, zx[i] + t.x, gy, zy[i] + t.y) * inv_z;
     out_0[i] = gx;
     out_1[i] = gy;
     out_2[i] = gz;
@@ -208,10 +204,7 @@ class PointToLineProblem {
       w.rotated[k].resize(count_);
       w.turned[k].resize(count_);
     }
-    for (int k = 0; k < 2; ++k) {
-      w.gradient[k].resize(count_);
-      w.moved[k].resize(count_);
-    }
+    for (int k = 0; k < 2; ++k) w.gradient[k].resize(count_);
     w.inverse_depth.resize(count_);
     if (camera.distorted())
       for (int k = 0; k < 2; ++k) {
@@ -220,7 +213,6 @@ class PointToLineProblem {
         w.lens_radial[k].resize(count_);
       }
     w.evaluated.resize(count_);
-    w.scratch.resize(count_);  // sized with the rest, so that only a frame with more matches allocates
     // The points in millimetres and the distances' coefficients are the solve_pose call's
     // (prepare_matches): only the rotation and the weights differ between its solves.
     const Mat33& r = start.rotation();
@@ -311,9 +303,9 @@ class PointToLineProblem {
         if (!(m.m[r][c] == real(r == c ? 1 : 0))) return false;
     return true;
   }
-  real* scratch() {
-    return w_.scratch.data();
-  }
+  /// Where an evaluation the solver did not ask for writes its residuals: the Jacobian's
+  /// memory, which only gradf fills (after that evaluation) and which LM leaves free after it.
+  real* scratch() { return w_.jacobian.data(); }
 
   bool f(const real* x, real* fx) {
     const Vec3 v{x[0], x[1], x[2]}, w{x[3], x[4], x[5]};
@@ -323,7 +315,6 @@ class PointToLineProblem {
     const Vec3 t = start_translation_mm_ + v;
     const std::vector<real>* q = w_.rotated;
     const std::vector<real>* u = w_.unweighted;
-    std::vector<real>* p = w_.moved;
     real* const inv_z = w_.inverse_depth.data();
     real* const delta = w_.evaluated.data();
     evaluated_ = false;
@@ -339,14 +330,13 @@ class PointToLineProblem {
     const std::vector<real>* z = turned_;
     if (camera_.distorted()) {
       if (!distances_through_lens(count_, camera_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
-                                  u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z, delta,
-                                  fx, w_.lens_point[0].data(), w_.lens_point[1].data(),
+                                  u[2].data(), weighted_ ? weights_ : nullptr, inv_z, delta, fx,
+                                  w_.lens_point[0].data(), w_.lens_point[1].data(),
                                   w_.lens_radial[0].data(), w_.lens_radial[1].data()))
         return false;
     } else if (!vector_kernels::run([&]() __attribute__((always_inline)) {
                  return distances_to_lines(count_, t, z[0].data(), z[1].data(), z[2].data(), u[0].data(), u[1].data(),
-                                           u[2].data(), weighted_ ? weights_ : nullptr, p[0].data(), p[1].data(), inv_z,
-                                           delta, fx);
+                                           u[2].data(), weighted_ ? weights_ : nullptr, inv_z, delta, fx);
                })) {
       return false;
     }
@@ -374,17 +364,17 @@ class PointToLineProblem {
                      w_.lens_gradient[1].data());
     const std::vector<real>* k = camera_.distorted() ? w_.lens_gradient : w_.gradient;
     const std::vector<real>* z = turned_;
-    const std::vector<real>* p = w_.moved;
+    const Vec3 t = start_translation_mm_ + Vec3{x[0], x[1], x[2]};  // the evaluation's own sum
     const real* const inverse_depth = w_.inverse_depth.data();
     real* const column[6] = {fjac, fjac + ld, fjac + 2 * ld, fjac + 3 * ld, fjac + 4 * ld, fjac + 5 * ld};
     vector_kernels::run([&]() __attribute__((always_inline)) {
       if (left)
-        jacobian_columns<true>(count_, k[0].data(), k[1].data(), p[0].data(), p[1].data(), z[0].data(), z[1].data(),
-                               z[2].data(), inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
+        jacobian_columns<true>(count_, k[0].data(), k[1].data(), t, z[0].data(), z[1].data(), z[2].data(),
+                               inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
                                column[5]);
       else
-        jacobian_columns<false>(count_, k[0].data(), k[1].data(), p[0].data(), p[1].data(), z[0].data(), z[1].data(),
-                                z[2].data(), inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
+        jacobian_columns<false>(count_, k[0].data(), k[1].data(), t, z[0].data(), z[1].data(), z[2].data(),
+                                inverse_depth, jl, column[0], column[1], column[2], column[3], column[4],
                                 column[5]);
     });
     return true;
@@ -485,20 +475,31 @@ void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
   solution.end_rms = PointToLineProblem::rms(workspace.residuals.data(), workspace.residuals.size());
 }
 
-/// The median of |values| (the distances may be signed); `values` and `other` are work.
-real median_of(const std::vector<real>& signed_values, std::vector<real>& values, std::vector<real>& other) {
+/// Room for median_of's work between solves: the Jacobian's memory, which LM only uses within
+/// a solve (2 x matches of its 6 x matches).
+struct OrderWork {
+  real* values;
+  real* other;
+};
+OrderWork order_work(PoseWorkspace& workspace, size_t matches) {
+  workspace.jacobian.resize(matches * 6);
+  return {workspace.jacobian.data(), workspace.jacobian.data() + matches};
+}
+
+/// The median of |values| (the distances may be signed), in `work` (room for as many).
+real median_of(const std::vector<real>& signed_values, const OrderWork& work) {
   using std::fabs;
-  values.resize(signed_values.size());
-  for (size_t i = 0; i < values.size(); ++i) values[i] = fabs(signed_values[i]);
-  const size_t mid = values.size() / 2;
+  const size_t n = signed_values.size();
+  real* const values = work.values;
+  for (size_t i = 0; i < n; ++i) values[i] = fabs(signed_values[i]);
+  const size_t mid = n / 2;
   // The same number either way: floating point without a branch per comparison (a host CPU
   // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
   if constexpr (std::is_floating_point<real>::value) {
-    if (values.empty()) return real(0);
-    other.resize(values.size());
-    return kth_smallest(values.data(), other.data(), values.size(), mid);
+    if (n == 0) return real(0);
+    return kth_smallest(values, work.other, n, mid);
   }
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  std::nth_element(values, values + mid, values + n);
   return values[mid];
 }
 
@@ -538,9 +539,9 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 /// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
 /// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
 int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
-                  std::vector<real>& scratch, std::vector<real>& other, std::vector<real>& weights) {
+                  const OrderWork& work, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(kMadToSigma) * median_of(distances, scratch, other);
+  real c = params.tukey_c * real(kMadToSigma) * median_of(distances, work);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
@@ -588,6 +589,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   if (matches.size() < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   PointToLineProblem::prepare_matches(matches, camera, true, workspace);
+  const OrderWork order = order_work(workspace, matches.size());
   const bool robust = params.tukey_c > real(0) && params.robust_rounds > 0;
   std::vector<real>& distances = workspace.distances;
   std::vector<real>& weights = workspace.weights;
@@ -598,7 +600,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     for (size_t i = 0; i < matches.size(); ++i)
       distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
     weights.resize(matches.size());
-    tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
+    tukey_weights(matches, distances, params, order, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
   }
   const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, true, workspace);
@@ -608,7 +610,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(kMadToSigma) * median_of(distances, workspace.magnitudes, workspace.selection);
+    solution.residual_scale = real(kMadToSigma) * median_of(distances, order);
     return solution;
   }
 
@@ -621,7 +623,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     // round after it.
     if (!moved && !rechosen && distances == workspace.before_round) break;
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
-    solution.outliers = tukey_weights(matches, distances, params, workspace.magnitudes, workspace.selection, weights);
+    solution.outliers = tukey_weights(matches, distances, params, order, weights);
     if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
     workspace.before_round = distances;
     const SolveResult robust_solve =
@@ -638,20 +640,18 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(kMadToSigma) * median_of(distances, workspace.magnitudes, workspace.selection);
+  solution.residual_scale = real(kMadToSigma) * median_of(distances, order);
   return solution;
 }
 
 void PoseWorkspace::reserve(size_t matches, bool lens) {
   for (std::vector<real>* arrays : {model_mm, rotated, unweighted, turned})
     for (int i = 0; i < 3; ++i) arrays[i].reserve(matches);
-  for (std::vector<real>* arrays : {gradient, moved})
-    for (int i = 0; i < 2; ++i) arrays[i].reserve(matches);
+  for (int i = 0; i < 2; ++i) gradient[i].reserve(matches);
   if (lens)
     for (std::vector<real>* arrays : {lens_point, lens_gradient, lens_radial})
       for (int i = 0; i < 2; ++i) arrays[i].reserve(matches);
-  for (std::vector<real>* array : {&evaluated, &inverse_depth, &residuals, &work, &scratch, &distances, &weights,
-                                   &magnitudes, &selection, &before_round})
+  for (std::vector<real>* array : {&evaluated, &inverse_depth, &residuals, &work, &distances, &weights, &before_round})
     array->reserve(matches);
   jacobian.reserve(matches * 6);  // m x 6 (solve_once)
 }
@@ -660,11 +660,10 @@ size_t PoseWorkspace::heap_bytes() const {
   size_t bytes = 0;
   for (const std::vector<real>* arrays : {model_mm, rotated, unweighted, turned})
     for (int i = 0; i < 3; ++i) bytes += capacity_bytes(arrays[i]);
-  for (const std::vector<real>* arrays : {gradient, moved, lens_point, lens_gradient, lens_radial})
+  for (const std::vector<real>* arrays : {gradient, lens_point, lens_gradient, lens_radial})
     for (int i = 0; i < 2; ++i) bytes += capacity_bytes(arrays[i]);
   for (const std::vector<real>* array :
-       {&evaluated, &inverse_depth, &residuals, &jacobian, &work, &scratch, &distances, &weights, &magnitudes,
-        &selection, &before_round})
+       {&evaluated, &inverse_depth, &residuals, &jacobian, &work, &distances, &weights, &before_round})
     bytes += capacity_bytes(*array);
   return bytes;
 }

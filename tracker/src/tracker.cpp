@@ -129,8 +129,7 @@ class Tracker::State {
   vpImage<unsigned char> grey_in_place_;
   // Each frame's points, matches and pose buffers, kept so that a frame allocates nothing once
   // they have grown to the largest frame seen.
-  std::vector<ControlPoint> sampled_;
-  std::vector<ControlPoint> visible_;
+  std::vector<ControlPoint> visible_;  ///< the sampled control points, then the visible ones among them
   std::vector<PixelBox> read_boxes_;  ///< per visible point, the pixels its moving-edge search reads
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
@@ -160,7 +159,6 @@ class Tracker::State {
   void attempt(const FrameView& frame, const Se3& start, unsigned range, bool guessing, FrameResult& result);
   /// A frame that would sample more control points than limits_ allow: lost, nothing searched.
   void over_limit(FrameResult& result) {
-    sampled_.clear();
     visible_.clear();
     read_boxes_.clear();
     matches_.clear();
@@ -282,7 +280,7 @@ TrackerMemory Tracker::memory() const {
   m.edge_id_image = s.edge_ids_.image_bytes();
   m.edge_id_lines = s.edge_ids_.line_bytes();
   m.grey_image = static_cast<size_t>(s.grey_.getWidth()) * s.grey_.getHeight();
-  m.control_points = capacity_bytes(s.sampled_) + capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
+  m.control_points = capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
                      capacity_bytes(s.references_) + capacity_bytes(s.borrowed_) +
                      capacity_bytes(s.solved_pixels_.pixel) + capacity_bytes(s.solved_pixels_.in_front) +
                      capacity_bytes(s.remembered_pixels_.pixel) + capacity_bytes(s.remembered_pixels_.in_front);
@@ -312,13 +310,13 @@ void Tracker::State::reserve_for_limits() {
   if (!limits_.stated()) return;  // the buffers grow to the largest frame seen
   edge_ids_.reserve_for(model_);
   const size_t points = static_cast<size_t>(limits_.control_points);
-  for (std::vector<ControlPoint>* buffer : {&sampled_, &visible_}) buffer->reserve(points);
+  visible_.reserve(points);
   read_boxes_.reserve(points);
   references_.reserve(points);
   borrowed_.reserve(points);
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
-  contrast_memory_.reserve(points);
+  contrast_memory_.reserve(points, static_cast<size_t>(limits_.primitives));
   if (camera_.distorted()) {
     for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
       projected->pixel.reserve(points);
@@ -428,13 +426,13 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   face_visibility_.update(model_, camera_, start, params_.faces);
   SamplingParams sampling = sampling_params(params_);
   sampling.max_points = static_cast<size_t>(limits_.control_points);
-  if (sample_control_points(model_, camera_, start, sampling, face_visibility_, sampled_) > 0) {
+  if (sample_control_points(model_, camera_, start, sampling, face_visibility_, visible_) > 0) {
     over_limit(result);
     end(Step::kVisibleEdges);
     clock.lap(Step::kVisibleEdges, result);
     return;
   }
-  keep_visible(sampled_, edge_ids_, visible_);
+  keep_visible(visible_, edge_ids_);
   row_times_.move(visible_, camera_, start, motion_.velocity(), params_.readout);
   if (guessing) {
     references_.assign(visible_.size(), real(0));

@@ -19,7 +19,7 @@ if [ -n "${EDGETRACK_MCU_BENCH_TREES:-}" ]; then
   IFS=: read -r host_dir mcu_dir arm_dir <<<"$EDGETRACK_MCU_BENCH_TREES"
 else
   host_dir=$(bench_tree host s40_23 edgetrack)
-  mcu_dir=$(bench_tree mcu s40_23 edgetrack tracker_firmware)
+  mcu_dir=$(bench_tree mcu s40_23 edgetrack tracker_firmware tracker_firmware_cube_xml)
   arm_dir=$(bench_tree arm s40_23 edgetrack)
 fi
 firmware=$mcu_dir/app/edgetrack
@@ -173,16 +173,6 @@ echo "arena at the end: what reading the inputs (the model, the XML, freed once 
 
 # --- The tracker firmware's stated maxima and its settings (TrackerLimits, the heap arena) ---
 
-# limits_tree POINTS ARENA_KB: the bare-metal S40.23 tree whose tracker firmware is built for POINTS
-# control points per frame in an arena of ARENA_KB (app/mcu/CMakeLists.txt), built.
-limits_tree() {
-  local dir="$bench_build_root/bench-mcu-s40_23-points$1"
-  cmake -S "$top" -B "$dir" -G Ninja -DEDGETRACK_REAL=s40_23 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_TOOLCHAIN_FILE="$top/toolchains/cortex-m3.cmake" -DEDGETRACK_MCU_MAX_CONTROL_POINTS="$1" \
-    -DEDGETRACK_MCU_ARENA_KB="$2" >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log" >&2; return 1; }
-  cmake --build "$dir" --target tracker_firmware >"$dir.build.log" 2>&1 || { tail -n 40 "$dir.build.log" >&2; return 1; }
-  echo "$dir"
-}
 # settings_run NAME FIRMWARE CAMERA_XML: the tracker firmware's run on the 20 frames with CAMERA_XML's
 # settings (NAME.board: its report, NAME.windows: instructions per Tracker::track), the host's
 # poses with them (NAME.host.csv).
@@ -204,14 +194,13 @@ settings_section() {
   # generated sequence's camera.
   { echo '<?xml version="1.0"?>'; echo '<conf>'; sed -n '/<ecm>/,/<\/ecm>/p' "$cube_xml"
     sed -n '/<camera>/,/<\/camera>/p' seq/camera.xml; echo '</conf>'; } >cube-settings.xml
-  local paper_points paper_arena cube_points cube_dir
-  paper_points=$(sed -n 's/^EDGETRACK_MCU_MAX_CONTROL_POINTS:STRING=//p' "$mcu_dir/CMakeCache.txt")
-  paper_arena=$(sed -n 's/^EDGETRACK_MCU_ARENA_KB:STRING=//p' "$mcu_dir/CMakeCache.txt")
-  # Control points grow as the sample step shrinks: the paper's maximum scaled by 10 / cube.xml's step.
-  cube_points=$(awk -v p="$paper_points" -v s="$(setting step "$cube_xml")" 'BEGIN { printf "%d", p * 10 / s + 0.999 }')
-  cube_dir=$(limits_tree "$cube_points" 1024)  # an arena large enough to measure what it needs
+  local paper_points arena cube_points
+  arena=$(sed -n 's/^EDGETRACK_MCU_ARENA_KB:STRING=//p' "$mcu_dir/CMakeCache.txt")
+  # tracker_firmware_cube_xml: built for the paper's maximum scaled by 10 / cube.xml's step, in the same arena.
   settings_run paper "$tracker_firmware" seq/camera.xml
-  settings_run cube "$cube_dir/app/mcu/tracker_firmware" cube-settings.xml
+  settings_run cube "$mcu_dir/app/mcu/tracker_firmware_cube_xml" cube-settings.xml
+  limit_of() { sed -n 's/^tracker limits: \([0-9]*\) control points per frame.*/\1/p' "$1"; }
+  paper_points=$(limit_of paper.board) cube_points=$(limit_of cube.board)
   echo
   echo "### No heap after the tracker is created, and ViSP's cube.xml settings"
   echo
@@ -220,7 +209,7 @@ settings_section() {
   echo "heap (toolchains/mcu/heap_guard.c), an arena whose size is given to the link. The same 20 frames with the"
   echo "paper's settings (synth's camera.xml: the tracker's defaults) and with ViSP's \`mbt/cube.xml\` moving-edge"
   echo "settings (its \`<ecm>\` with the generated camera). cube.xml's maximum is the paper's scaled by the sample"
-  echo "steps' ratio; its firmware is built with a 1024 KB arena to measure what it needs. RAM in all is the"
+  echo "steps' ratio (\`tracker_firmware_cube_xml\`), in the same $arena KB arena. RAM in all is the"
   echo "static RAM, the heap's high-water mark in the arena and the stack's; instructions are per \`Tracker::track\`"
   echo "(count markers in the firmware, qemu-system-arm)."
   echo
@@ -238,7 +227,7 @@ settings_section() {
   local p_ram c_ram
   p_ram=$(( $(board_value static paper.board) + $(board_value "heap high-water" paper.board) + $(board_value "stack high-water" paper.board) ))
   c_ram=$(( $(board_value static cube.board) + $(board_value "heap high-water" cube.board) + $(board_value "stack high-water" cube.board) ))
-  echo "| heap high-water in the arena (KB) | $(kb "$(board_value "heap high-water" paper.board)") (arena $paper_arena) | $(kb "$(board_value "heap high-water" cube.board)") |"
+  echo "| heap high-water in the arena of $arena KB (KB) | $(kb "$(board_value "heap high-water" paper.board)") | $(kb "$(board_value "heap high-water" cube.board)") |"
   echo "| static RAM, stack high-water (KB) | $(kb "$(board_value static paper.board)"), $(kb "$(board_value "stack high-water" paper.board)") | $(kb "$(board_value static cube.board)"), $(kb "$(board_value "stack high-water" cube.board)") |"
   echo "| RAM in all (KB), budget 192 | $(kb "$p_ram"): $(met "$p_ram" 192) | $(kb "$c_ram"): $(met "$c_ram" 192) |"
   echo "| instructions per frame: mean, largest | $(per_frame paper.windows | sed 's/ |/,/') | $(per_frame cube.windows | sed 's/ |/,/') |"

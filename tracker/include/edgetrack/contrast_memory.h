@@ -20,10 +20,11 @@ class ContrastMemory {
     remembered_.clear();
     groups_.clear();
   }
-  /// Room for the contrasts of `matches` matches: remember then allocates nothing for up to that many.
-  void reserve(size_t matches) {
+  /// Room for the contrasts of `matches` matches of up to `primitives` primitives: remember then
+  /// allocates nothing for up to that many.
+  void reserve(size_t matches, size_t primitives) {
     remembered_.reserve(matches);
-    groups_.reserve(matches);
+    groups_.reserve(primitives);
   }
   /// Heap bytes it holds (tracker_memory.h).
   size_t heap_bytes() const {
@@ -33,7 +34,7 @@ class ContrastMemory {
   /// within `within` pixels (along its normal) of its projection at camera_from_model, the
   /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
   /// matches (a point under an occluder matched to noise by chance is not its edge). `matches`
-  /// come grouped by primitive, as the sampling orders them. `projected`, when given, holds
+  /// come grouped by primitive, one run per primitive, as the sampling orders them. `projected`, when given, holds
   /// each match's point projected at camera_from_model (project_points), so that a lens's
   /// projections are not computed again.
   void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model,
@@ -53,8 +54,8 @@ class ContrastMemory {
   /// The mean contrast of remembered_[first, end) when all share one sign, else 0.
   real mean_of_one_polarity(size_t first, size_t end) const;
 
+  /// A remembered point; its primitive is its group's.
   struct Remembered {
-    int edge = 0;
     Vec3 point_in_model;
     real contrast{0};
   };
@@ -69,8 +70,8 @@ class ContrastMemory {
     int axis = 0;
     int order = 0;
   };
-  /// Groups the points of each primitive (remembered_ holds them contiguously).
-  void group();
+  /// Groups remembered_[first, end) as primitive `edge`'s points.
+  void add_group(int edge, size_t first);
   /// Along a monotonic group's axis, the coordinates that can lie within `bound` (taxicab) of a
   /// point: within twice the bound, so that a point left out fails the bound whatever the
   /// rounding of the differences.

@@ -69,5 +69,7 @@ std::vector<ControlPoint> keep_visible(const std::vector<ControlPoint>& points, 
 /// The same into `visible` (emptied first, memory reused).
 void keep_visible(const std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids,
                   std::vector<ControlPoint>& visible);
+/// The same in place, in the same order: one buffer for the sampled and the visible points.
+void keep_visible(std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_ids);
 
 }  // namespace edgetrack

@@ -24,10 +24,12 @@ class EdgeIdBuffer {
  public:
   /// Buffers for images of the camera's size, allocated at the first render or assign. Up to
   /// kNarrowPrimitives primitives (`primitives`, the models it will draw: primitive_count) the
-  /// image holds one byte per pixel, the primitive's number + 1, instead of the RGB565 colour:
-  /// the same edge at every pixel, in half the memory.
+  /// image holds the primitive's number + 1 instead of the RGB565 colour, in half a byte per
+  /// pixel up to kNibblePrimitives, else a byte: the same edge at every pixel, in a quarter or
+  /// half the memory.
   explicit EdgeIdBuffer(const PinholeCamera& camera, int primitives = kMaxEdges);
   static constexpr int kNarrowPrimitives = 255;
+  static constexpr int kNibblePrimitives = 15;
 
   /// Redraws the colours for the model seen from camera_from_model. On a closed model
   /// (EdgeModel::closed) back faces are skipped. An edge pixel is kept when its inverse depth is
@@ -68,8 +70,6 @@ class EdgeIdBuffer {
     PixelRect box;
     uint16_t code = 0;
     int exempt_owner = -1;
-    size_t first_pixel = 0;  ///< where its pixels start in line_depth_
-    size_t first_owner = 0;  ///< and in line_owner_ (exempt_owner >= 0 only)
   };
   /// A triangle of a surface as this frame projects it, and its owner (a cylinder number + 1, or
   /// 0 for a face).
@@ -80,8 +80,10 @@ class EdgeIdBuffer {
   /// Clears the colours the last render drew, at its lines' pixels (or everywhere after assign),
   /// so that they are 0 everywhere.
   void clear_lines();
-  /// Sizes the image for one byte or RGB565 per pixel (an image of the other kind is freed).
-  void use_image(bool narrow);
+  /// Bits per pixel of the image for `primitives` primitives: 4, 8, or 16 (RGB565).
+  static int image_bits(size_t primitives);
+  /// Sizes the image for `bits` per pixel (an image of another kind is freed).
+  void use_image(int bits);
   /// Through a lens, how many pieces each side of a segment (count 2) or triangle (count 3) is
   /// cut into so that its curve stays within `bend_pixels` of the pieces, at most `most`; 1 for
   /// a pinhole.
@@ -96,11 +98,14 @@ class EdgeIdBuffer {
   void collect_faces(const EdgeModel& model, const Se3& camera_from_model);
   /// The cylinders' sides, back facets only where they can show (cylinder_windows.h).
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
-  /// The nearest surface and its owner at every pixel of this frame's lines, per line.
-  void find_nearest_surfaces();
+  /// The nearest surface and its owner at every pixel of line `s`, into line_depth_ and line_owner_.
+  void find_nearest_surfaces(const Segment& s);
+  /// Each of this frame's lines, after its nearest surfaces.
   void draw_segments();
-  template <class Pixel>
-  void draw_segments_into(Pixel* image) const;
+  /// Line `s`'s pixels where it is nearer than the surface (find_nearest_surfaces), into
+  /// `image` (a pixel store of edge_id_buffer.cpp).
+  template <class Image>
+  void draw_segment_into(const Segment& s, const Image& image) const;
 
   PinholeCamera camera_;
   PixelRect screen_;
@@ -108,13 +113,15 @@ class EdgeIdBuffer {
   /// everything as an unsigned char's may (the drawing loops keep their state in registers).
   enum class NarrowId : uint8_t {};
   size_t pixels_ = 0;                   ///< width * height
-  bool narrow_ = false;                 ///< narrow_ids_ is the image, not colours_
-  std::vector<NarrowId> narrow_ids_;    ///< primitive number + 1, 0 = background (up to kNarrowPrimitives)
+  /// Bits per pixel: 4 or 8, narrow_ids_ is the image; 16, colours_ is.
+  int bits_ = 16;
+  /// Primitive number + 1, 0 = background (up to kNarrowPrimitives): a byte per pixel, or with
+  /// 4 bits two pixels per byte, the even pixel in the low half.
+  std::vector<NarrowId> narrow_ids_;
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background (more primitives, or assign)
-  /// Per pixel of each of segments_ (Segment::first_pixel on, in the line's order): the Q20 1/Z
-  /// of the nearest surface there (0: none) and, for a line with an exempt owner
-  /// (Segment::first_owner on), its Occluder::owner. Only the lines' pixels need them: a few
-  /// bytes per line pixel instead of six per image pixel.
+  /// Per pixel of the line being drawn (in the line's order): the Q20 1/Z of the nearest surface
+  /// there (0: none) and, for a line with an exempt owner, its Occluder::owner. Only a line's
+  /// pixels need them: a few bytes per pixel of the longest line, not six per image pixel.
   std::vector<int32_t> line_depth_;
   std::vector<int16_t> line_owner_;
   bool clear_all_ = false;  ///< the image holds more than segments_ drew (assign)

@@ -89,7 +89,9 @@ struct PoseSolution {
 /// The pose step's scratch memory. A caller that keeps one between solves (the tracker does)
 /// makes no heap allocation once its buffers have reached the largest match count seen; what
 /// it holds between calls means nothing. Per match, the arrays are structures of arrays (one
-/// array per coordinate), the layout of MINPACK's column-major Jacobian.
+/// array per coordinate), the layout of MINPACK's column-major Jacobian. What lives only within
+/// one LM solve or only between solves shares memory: the Jacobian's holds the robust weights'
+/// median work between solves and an evaluation's residuals LM did not ask for.
 struct PoseWorkspace {
   std::vector<real> model_mm[3];      ///< point_in_model, millimetres
   std::vector<real> rotated[3];       ///< R0 * point_in_model, millimetres
@@ -97,13 +99,12 @@ struct PoseWorkspace {
   std::vector<real> gradient[2];      ///< a and b times the match's weight, for the Jacobian
   std::vector<real> evaluated;        ///< the distances at the last evaluation, unweighted
   std::vector<real> turned[3];        ///< R(w) R0 * point at the last evaluation with w != 0
-  std::vector<real> moved[2];         ///< X and Y of the camera-frame point at the last evaluation
-  std::vector<real> inverse_depth;    ///< 1 / Z of that point, for the Jacobian
+  std::vector<real> inverse_depth;    ///< 1 / Z of the camera-frame point there, for the Jacobian
   std::vector<real> lens_point[2];     ///< through a lens: the undistorted X / Z and Y / Z at the last evaluation
   std::vector<real> lens_gradient[2];  ///< and (a, b) J_lens times the weight there, for the Jacobian
   std::vector<real> lens_radial[2];    ///< ViSP's lens: 1 + kud r^2 and a x + b y there, which the Jacobian reuses
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
-  std::vector<real> scratch, distances, weights, magnitudes, selection;
+  std::vector<real> distances, weights;
   std::vector<real> before_round;  ///< the distances the last robust round weighed (its weights, rounds_settled_px)
 
   /// The heap its buffers hold (their capacities), for Tracker::memory.

@@ -18,10 +18,10 @@ size_t capacity_bytes(const std::vector<T>& v) {
 /// A tracker's heap per buffer, bytes reserved (Tracker::memory).
 struct TrackerMemory {
   size_t model = 0;            ///< the tracker's copy of the EdgeModel
-  size_t edge_id_image = 0;    ///< the Edge-ID image: a byte per pixel up to 255 primitives, else RGB565
-  size_t edge_id_lines = 0;    ///< per line pixel, the nearest surface's depth and owner; the lines and triangles
+  size_t edge_id_image = 0;    ///< the Edge-ID image: half a byte per pixel up to 15 primitives, a byte up to 255, else RGB565
+  size_t edge_id_lines = 0;    ///< per pixel of one line, the nearest surface's depth and owner; the lines and triangles
   size_t grey_image = 0;       ///< the grey image (none while the frames are grey8, read in place)
-  size_t control_points = 0;   ///< sampled and visible points, their read boxes and reference contrasts
+  size_t control_points = 0;   ///< the sampled points, then the visible ones; their read boxes and reference contrasts
   size_t matches = 0;          ///< the moving edges' matches
   size_t pose_workspace = 0;   ///< the pose solver's per-match arrays
   size_t contrast_memory = 0;  ///< the last trusted frame's contrasts
