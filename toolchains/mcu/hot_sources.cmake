@@ -9,15 +9,15 @@
 # -O3's) took about twice their flash for a few per cent fewer instructions.
 set(EDGETRACK_MCU_HOT_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
     CACHE STRING "Compile options of the bare-metal sources where a frame spends its instructions")
-set(edgetrack_hot_tracker moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support
-    raster control_points)
+set(edgetrack_hot_tracker moving_edges pose_uncertainty contrast_memory edge_support)
 list(TRANSFORM edgetrack_hot_tracker REPLACE "(.+)" "${PROJECT_SOURCE_DIR}/tracker/src/\\1.cpp")
 set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
                             PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
-# The pose's loops over the matches: built for speed, -O2 with inlining limits near -O3's (plain -O2
-# leaves fixed64's * and / as calls). Built as the sources above, it was 16 KB smaller and the
-# tracker firmware's frames just over 2.0 M instructions (2002243 a frame, the 20 generated frames).
-set(EDGETRACK_MCU_FAST_OPTIONS -O2 --param=max-inline-insns-single=200 --param=max-inline-insns-auto=40
+# The pose's loops over the matches: built for speed, -O2 with the arithmetic forced inline as above
+# (-O2's inlining limits raised near -O3's instead took 8.3 KB more for 2 K fewer instructions a
+# frame). Built as the sources above, it was 16 KB smaller and the tracker firmware's frames just
+# over 2.0 M instructions (2002243 a frame, the 20 generated frames).
+set(EDGETRACK_MCU_FAST_OPTIONS -O2 -DFIXEDPOINT_FORCE_INLINE
     CACHE STRING "Compile options of the bare-metal sources built for speed")
 set_source_files_properties(${PROJECT_SOURCE_DIR}/tracker/src/pose_solver.cpp DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
                             PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FAST_OPTIONS}")
