@@ -7,12 +7,12 @@
 # frames (toolchains/qemu/count-insns.sh --profile), by the object each function was linked from,
 # and from the calls to fixed64's operators each object makes. -O2 (with inlining limits near
 # -O3's) took about twice their flash for a few per cent fewer instructions.
-set(EDGETRACK_MCU_HOT_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
+set(EDGETRACK_MCU_FRAME_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
     CACHE STRING "Compile options of the bare-metal sources where a frame spends its instructions")
 set(edgetrack_hot_tracker moving_edges pose_uncertainty contrast_memory edge_support)
 list(TRANSFORM edgetrack_hot_tracker REPLACE "(.+)" "${PROJECT_SOURCE_DIR}/tracker/src/\\1.cpp")
 set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")
 # The pose's loops over the matches: built for speed, -O2 with the arithmetic forced inline as above
 # (-O2's inlining limits raised near -O3's instead took 8.3 KB more for 2 K fewer instructions a
 # frame). Built as the sources above, it was 16 KB smaller and the tracker firmware's frames just
@@ -24,7 +24,7 @@ set_source_files_properties(${PROJECT_SOURCE_DIR}/tracker/src/pose_solver.cpp DI
 # The pose's Levenberg-Marquardt (MINPACK, and through vnl for the command line), instantiated on `real`.
 set_source_files_properties(${PROJECT_SOURCE_DIR}/ports/netlib/instances/minpack+real-.cxx
                             DIRECTORY ${PROJECT_SOURCE_DIR}/ports/netlib
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")
 set_source_files_properties(${PROJECT_SOURCE_DIR}/ports/vnl/instances/algo/vnl_levenberg_marquardt+real-.cxx
                             DIRECTORY ${PROJECT_SOURCE_DIR}/ports/vnl
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")

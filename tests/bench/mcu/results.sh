@@ -134,7 +134,7 @@ echo
 by_library "$mcu_dir/app/mcu/tracker_firmware.map"
 # The tree's own objects in the tracker firmware, each built as a frame's loops (the hot sources' options,
 # toolchains/mcu/hot_sources.cmake, read from the tree's build.ninja) or plainly for size (-Os).
-hot_flags=$(sed -n 's/^EDGETRACK_MCU_HOT_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
+hot_flags=$(sed -n 's/^EDGETRACK_MCU_FRAME_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
 fast_flags=$(sed -n 's/^EDGETRACK_MCU_FAST_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
 built_for() {
   awk -v o="/$1:" -v hot="$hot_flags" -v fast="$fast_flags" '$1 == "build" && index($2, o) { f = 1; next }
