@@ -9,7 +9,8 @@
 # -O3's) took about twice their flash for a few per cent fewer instructions.
 set(EDGETRACK_MCU_FRAME_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
     CACHE STRING "Compile options of the bare-metal sources where a frame spends its instructions")
-set(edgetrack_hot_tracker moving_edges pose_uncertainty contrast_memory edge_support)
+set(edgetrack_hot_tracker moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support
+    raster)
 list(TRANSFORM edgetrack_hot_tracker REPLACE "(.+)" "${PROJECT_SOURCE_DIR}/tracker/src/\\1.cpp")
 set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
                             PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")
