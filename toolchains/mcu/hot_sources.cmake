@@ -1,22 +1,31 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# The bare-metal tree is built for size (-Os, toolchains/cortex-m3.cmake: flash is the budget);
-# these sources, where a frame spends its instructions, are built for speed. fixed64's arithmetic
-# is inline in its header, and at -Os each +, * and / of the frame loop becomes a call. Chosen from
-# the per-function counts of the tracked frames (toolchains/qemu/count-insns.sh --profile), by the
-# object each function was linked from. -O2 with inlining limits near -O3's: plain -O2 leaves
-# fixed64's * and / as calls; -O3 inlines as much but its loop transformations cost more flash.
-# Sources with fewer of the frame's instructions (the control points, the Edge-ID raster, the
-# rotations, the tracker's own loop) are left for size: their flash outweighs their instructions.
-set(EDGETRACK_MCU_HOT_OPTIONS -O2 --param=max-inline-insns-single=200 --param=max-inline-insns-auto=40
-    CACHE STRING "Compile options of the bare-metal sources built for speed")
-set(edgetrack_hot_tracker pose_solver moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support)
+# The bare-metal tree is built for size (-Os, toolchains/cortex-m3.cmake: flash is the budget). At
+# -Os GCC calls fixed64's +, * and comparisons instead of inlining them, and a frame is far over the
+# issue's 2.0 M instructions; these sources, where a frame spends its instructions, are built for
+# size too but with FIXEDPOINT_FORCE_INLINE, which forces that arithmetic (and geometry.h's small
+# vector operations) inline (real/fixed64.h). Chosen from the per-function counts of the tracked
+# frames (toolchains/qemu/count-insns.sh --profile), by the object each function was linked from,
+# and from the calls to fixed64's operators each object makes. -O2 (with inlining limits near
+# -O3's) took about twice their flash for a few per cent fewer instructions.
+set(EDGETRACK_MCU_FRAME_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
+    CACHE STRING "Compile options of the bare-metal sources where a frame spends its instructions")
+set(edgetrack_hot_tracker moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support
+    raster)
 list(TRANSFORM edgetrack_hot_tracker REPLACE "(.+)" "${PROJECT_SOURCE_DIR}/tracker/src/\\1.cpp")
 set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")
+# The pose's loops over the matches: built for speed, -O2 with the arithmetic forced inline as above
+# (-O2's inlining limits raised near -O3's instead took 8.3 KB more for 2 K fewer instructions a
+# frame). Built as the sources above, it was 16 KB smaller and the tracker firmware's frames just
+# over 2.0 M instructions (2002243 a frame, the 20 generated frames).
+set(EDGETRACK_MCU_FAST_OPTIONS -O2 -DFIXEDPOINT_FORCE_INLINE
+    CACHE STRING "Compile options of the bare-metal sources built for speed")
+set_source_files_properties(${PROJECT_SOURCE_DIR}/tracker/src/pose_solver.cpp DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FAST_OPTIONS}")
 # The pose's Levenberg-Marquardt (MINPACK, and through vnl for the command line), instantiated on `real`.
 set_source_files_properties(${PROJECT_SOURCE_DIR}/ports/netlib/instances/minpack+real-.cxx
                             DIRECTORY ${PROJECT_SOURCE_DIR}/ports/netlib
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")
 set_source_files_properties(${PROJECT_SOURCE_DIR}/ports/vnl/instances/algo/vnl_levenberg_marquardt+real-.cxx
                             DIRECTORY ${PROJECT_SOURCE_DIR}/ports/vnl
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_HOT_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")

@@ -94,6 +94,18 @@ echo "|---|---:|---:|---:|"
 echo "| Cortex-M3, Thumb-2 (qemu-system-arm -M mps2-an385) | $(per_frame mcu.windows) | $(field mcu.count window_softfloat) |"
 echo "| PXA270, ARMv5TE (qemu-arm -cpu pxa270) | $(per_frame arm.windows) | $(field arm.count window_softfloat) |"
 
+# settings_run NAME FIRMWARE CAMERA_XML: the tracker firmware's run on the 20 frames with CAMERA_XML's
+# settings (NAME.board: its report, NAME.windows: instructions per Tracker::track), the host's
+# poses with them (NAME.host.csv).
+settings_run() {
+  EDGETRACK_BOARD_REPORT=1 "$top/toolchains/mcu/run-firmware.sh" "$2" "$model" "$3" seq/first.pos \
+    'seq/frames/frame%04d.pgm' 0 19 "$1.csv" 2>"$1.board" >/dev/null
+  EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out "$1.count" --windows "$1.windows" \
+    "$2" "$model" "$3" seq/first.pos 'seq/frames/frame%04d.pgm' 0 19 "$1.counted.csv" >/dev/null 2>&1
+  "$host_dir/app/edgetrack" track --model "$model" --camera "$3" --init-pose seq/first.pos \
+    --images 'seq/frames/frame%04d.pgm' --first 0 --last 19 --quiet --poses "$1.host.csv" >/dev/null 2>&1
+}
+settings_run paper "$tracker_firmware" seq/camera.xml
 t_static=$(board_value static tracker-board.txt) t_heap=$(board_value "heap high-water" tracker-board.txt)
 t_stack=$(board_value "stack high-water" tracker-board.txt)
 t_flash=$(flash_bytes "$tracker_firmware")
@@ -116,29 +128,33 @@ echo "| static RAM: .data and .bss (the C library's, the startup code's argument
 echo "| heap high-water (sbrk's highest break): the tracker, the model and settings as read, the C library's file buffers | $(kb "$t_heap") KB | |"
 echo "| stack high-water (painted stack) | $(kb "$t_stack") KB | |"
 echo "| RAM in all | $(kb "$t_ram") KB | 192 KB: $(met "$t_ram" 192) |"
+t_mean=$(per_frame paper.windows | cut -d' ' -f1)
+echo "| guest instructions per \`Tracker::track\` (count markers, qemu-system-arm): mean, largest | $(per_frame paper.windows | sed 's/ |/,/') | 2.0 M mean: $([ "$t_mean" -le 2000000 ] && echo met || echo "over by $((t_mean - 2000000))") |"
 echo
 by_library "$mcu_dir/app/mcu/tracker_firmware.map"
-# The tree's own objects in the tracker firmware, each built for speed (the hot sources' options,
-# toolchains/mcu/hot_sources.cmake, read from the tree's build.ninja) or for size (-Os).
-hot_flags=$(sed -n 's/^EDGETRACK_MCU_HOT_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
+# The tree's own objects in the tracker firmware, each built as a frame's loops (the hot sources' options,
+# toolchains/mcu/hot_sources.cmake, read from the tree's build.ninja) or plainly for size (-Os).
+hot_flags=$(sed -n 's/^EDGETRACK_MCU_FRAME_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
+fast_flags=$(sed -n 's/^EDGETRACK_MCU_FAST_OPTIONS:STRING=//p' "$mcu_dir/CMakeCache.txt" | tr ';' ' ')
 built_for() {
-  awk -v o="/$1:" -v hot="$hot_flags" '$1 == "build" && index($2, o) { f = 1; next }
-    f && /FLAGS =/ { print (index($0, hot) ? "speed" : "size"); exit }' "$mcu_dir/build.ninja"
+  awk -v o="/$1:" -v hot="$hot_flags" -v fast="$fast_flags" '$1 == "build" && index($2, o) { f = 1; next }
+    f && /FLAGS =/ { print (index($0, hot) ? "frame" : index($0, fast) ? "speed" : "size"); exit }' "$mcu_dir/build.ninja"
 }
 awk -v by=object -f "$here/flash_and_ram.awk" "$mcu_dir/app/mcu/tracker_firmware.map" | sort -k2,2nr |
   awk '$1 ~ /\.(cpp|cxx|c)\.obj$/ { print $1, $2 }' >objects.txt
-speed_bytes=0 size_bytes=0 speed_objects=0
+loop_bytes=0 loop_objects=0 speed_bytes=0 speed_objects=0 size_bytes=0
 while read -r object bytes; do
-  if [ "$(built_for "$object")" = speed ]; then
-    speed_bytes=$((speed_bytes + bytes)) speed_objects=$((speed_objects + 1))
-  else
-    size_bytes=$((size_bytes + bytes))
-  fi
+  case $(built_for "$object") in
+    frame) loop_bytes=$((loop_bytes + bytes)) loop_objects=$((loop_objects + 1)) ;;
+    speed) speed_bytes=$((speed_bytes + bytes)) speed_objects=$((speed_objects + 1)) ;;
+    *) size_bytes=$((size_bytes + bytes)) ;;
+  esac
 done <objects.txt
 echo
-echo "The tree's own code in it: $(kb "$speed_bytes") KB in the $speed_objects sources built for speed (\`$hot_flags\`,"
-echo "where the frames spend their instructions: toolchains/mcu/hot_sources.cmake) and $(kb "$size_bytes") KB in the others,"
-echo "built for size (-Os). Its largest objects:"
+echo "The tree's own code in it (toolchains/mcu/hot_sources.cmake): $(kb "$loop_bytes") KB in the $loop_objects sources where the frames"
+echo "spend their instructions, built for size with fixed64's arithmetic and geometry.h's vector operations forced inline"
+echo "(\`$hot_flags\`: \`frame\` below), $(kb "$speed_bytes") KB in the $speed_objects built for speed (\`$fast_flags\`), and"
+echo "$(kb "$size_bytes") KB in the others, built for size (-Os), where that arithmetic is calls. Its largest objects:"
 echo
 echo "| object | built for | flash (KB) |"
 echo "|---|---|---:|"
@@ -173,17 +189,6 @@ echo "arena at the end: what reading the inputs (the model, the XML, freed once 
 
 # --- The tracker firmware's stated maxima and its settings (TrackerLimits, the heap arena) ---
 
-# settings_run NAME FIRMWARE CAMERA_XML: the tracker firmware's run on the 20 frames with CAMERA_XML's
-# settings (NAME.board: its report, NAME.windows: instructions per Tracker::track), the host's
-# poses with them (NAME.host.csv).
-settings_run() {
-  EDGETRACK_BOARD_REPORT=1 "$top/toolchains/mcu/run-firmware.sh" "$2" "$model" "$3" seq/first.pos \
-    'seq/frames/frame%04d.pgm' 0 19 "$1.csv" 2>"$1.board" >/dev/null
-  EDGETRACK_COUNT_TRIPLE=arm-none-eabi "$top/toolchains/qemu/count-insns.sh" --out "$1.count" --windows "$1.windows" \
-    "$2" "$model" "$3" seq/first.pos 'seq/frames/frame%04d.pgm' 0 19 "$1.counted.csv" >/dev/null 2>&1
-  "$host_dir/app/edgetrack" track --model "$model" --camera "$3" --init-pose seq/first.pos \
-    --images 'seq/frames/frame%04d.pgm' --first 0 --last 19 --quiet --poses "$1.host.csv" >/dev/null 2>&1
-}
 # setting NAME FILE: an <ecm> setting of a ViSP XML file, or the tracker's default.
 setting() { sed -n "s/.*<$1>\([^<]*\)<\/$1>.*/\1/p" "$2" | head -n 1; }
 buffer_bytes() { sed -n "s/^tracker memory: $1 \([0-9]*\) bytes$/\1/p" "$2"; }
@@ -197,7 +202,7 @@ settings_section() {
   local paper_points arena cube_points
   arena=$(sed -n 's/^EDGETRACK_MCU_ARENA_KB:STRING=//p' "$mcu_dir/CMakeCache.txt")
   # tracker_firmware_cube_xml: built for the paper's maximum scaled by 10 / cube.xml's step, in the same arena.
-  settings_run paper "$tracker_firmware" seq/camera.xml
+  # (paper.*: the run above.)
   settings_run cube "$mcu_dir/app/mcu/tracker_firmware_cube_xml" cube-settings.xml
   limit_of() { sed -n 's/^tracker limits: \([0-9]*\) control points per frame.*/\1/p' "$1"; }
   paper_points=$(limit_of paper.board) cube_points=$(limit_of cube.board)

@@ -12,10 +12,10 @@ struct Vec2 {
   real y{0};
 };
 
-inline Vec2 operator+(const Vec2& a, const Vec2& b) { return {a.x + b.x, a.y + b.y}; }
-inline Vec2 operator-(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
-inline Vec2 operator*(const real& s, const Vec2& a) { return {s * a.x, s * a.y}; }
-inline real dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
+FIXED64_SMALL_OPERATION inline Vec2 operator+(const Vec2& a, const Vec2& b) { return {a.x + b.x, a.y + b.y}; }
+FIXED64_SMALL_OPERATION inline Vec2 operator-(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
+FIXED64_SMALL_OPERATION inline Vec2 operator*(const real& s, const Vec2& a) { return {s * a.x, s * a.y}; }
+FIXED64_SMALL_OPERATION inline real dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
 real norm(const Vec2& a);
 
 /// A point or direction in 3D, in metres when it is a point.
@@ -25,12 +25,16 @@ struct Vec3 {
   real z{0};
 };
 
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
-inline Vec3 operator*(const real& s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline real dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
+FIXED64_SMALL_OPERATION inline Vec3 operator+(const Vec3& a, const Vec3& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+FIXED64_SMALL_OPERATION inline Vec3 operator-(const Vec3& a, const Vec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+FIXED64_SMALL_OPERATION inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
+FIXED64_SMALL_OPERATION inline Vec3 operator*(const real& s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+FIXED64_SMALL_OPERATION inline real dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+FIXED64_SMALL_OPERATION inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 real norm(const Vec3& a);
@@ -47,7 +51,7 @@ struct Mat33 {
 
 Mat33 operator*(const Mat33& a, const Mat33& b);
 /// Inline: it runs for every control point in every pose evaluation.
-inline Vec3 operator*(const Mat33& a, const Vec3& v) {
+FIXED64_SMALL_OPERATION inline Vec3 operator*(const Mat33& a, const Vec3& v) {
   return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z, a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
           a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
 }

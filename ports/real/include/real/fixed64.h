@@ -12,6 +12,27 @@
 
 #include "real/wide_uint.h"
 
+/// fixed64's +, -, *, comparisons and conversions, forced inline where FIXEDPOINT_FORCE_INLINE is
+/// defined: the sources built for size (-Os) whose loops are a frame's (the bare-metal tree,
+/// toolchains/mcu/hot_sources.cmake), where GCC would otherwise call each of them.
+#if defined(FIXEDPOINT_FORCE_INLINE)
+#define FIXED64_INLINE __attribute__((always_inline))
+#else
+#define FIXED64_INLINE
+#endif
+/// Where a source is built for size (-Os defines __OPTIMIZE_SIZE__), the out-of-line division and
+/// the small vector operations of a frame (edgetrack/geometry.h) inline what they call: each
+/// stays one function in the image, whichever source's copy the linker keeps, instead of a chain
+/// of calls. Builds for speed inline by their own choice, unchanged.
+#if defined(__OPTIMIZE_SIZE__)
+#define FIXED64_FLATTEN __attribute__((flatten))
+#else
+#define FIXED64_FLATTEN
+#endif
+/// A small operation on reals (a vector's sum, a dot product): inlined where fixed64's arithmetic
+/// is, one flattened function elsewhere.
+#define FIXED64_SMALL_OPERATION FIXED64_INLINE FIXED64_FLATTEN
+
 namespace fixedpoint {
 
 /// Number of results that saturated (overflow, division by zero, domain errors) since the
@@ -26,7 +47,7 @@ void count_saturation() noexcept;
 constexpr std::int64_t kRawMax = std::numeric_limits<std::int64_t>::max();
 constexpr std::int64_t kRawMin = std::numeric_limits<std::int64_t>::min();
 
-constexpr std::uint64_t magnitude(std::int64_t v) {
+FIXED64_INLINE constexpr std::uint64_t magnitude(std::int64_t v) {
   return v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
 }
 
@@ -98,7 +119,7 @@ class fixed64 {
   /// template taking `int` alone, so that `real x = 0.5;` does not compile (a plain int
   /// constructor would take 0.5 as 0); `real(0.5)` states the conversion.
   template <class I, std::enable_if_t<std::is_same<I, int>::value, int> = 0>
-  constexpr fixed64(I value)  // NOLINT(google-explicit-constructor)
+  FIXED64_INLINE constexpr fixed64(I value)  // NOLINT(google-explicit-constructor)
       : raw_(static_cast<std::int64_t>(static_cast<std::uint64_t>(static_cast<std::int64_t>(value)) << F)) {}
   /// Other integer types: explicit, saturating (and counting) when out of range.
   template <class I, std::enable_if_t<std::is_integral<I>::value && !std::is_same<I, int>::value &&
@@ -110,16 +131,16 @@ class fixed64 {
   template <class R, std::enable_if_t<std::is_floating_point<R>::value, int> = 0>
   constexpr explicit fixed64(R value) : raw_(from_double(static_cast<double>(value))) {}
 
-  static constexpr fixed64 from_raw(std::int64_t raw) {
+  FIXED64_INLINE static constexpr fixed64 from_raw(std::int64_t raw) {
     fixed64 x;
     x.raw_ = raw;
     return x;
   }
-  constexpr std::int64_t raw() const { return raw_; }
+  FIXED64_INLINE constexpr std::int64_t raw() const { return raw_; }
 
   /// Truncates toward zero, as a C cast from double does; saturates to the integer type's range.
   template <class I, std::enable_if_t<std::is_integral<I>::value && !std::is_same<I, bool>::value, int> = 0>
-  constexpr explicit operator I() const {
+  FIXED64_INLINE constexpr explicit operator I() const {
     const std::int64_t whole = raw_ >= 0 ? raw_ >> F : -static_cast<std::int64_t>(detail::magnitude(raw_) >> F);
     if (std::is_signed<I>::value) {
       if (whole > static_cast<std::int64_t>(std::numeric_limits<I>::max())) return std::numeric_limits<I>::max();
@@ -131,7 +152,7 @@ class fixed64 {
       return std::numeric_limits<I>::max();
     return static_cast<I>(whole);
   }
-  constexpr explicit operator bool() const { return raw_ != 0; }
+  FIXED64_INLINE constexpr explicit operator bool() const { return raw_ != 0; }
   /// Rounds to nearest (one rounding for double and for float).
   constexpr explicit operator double() const { return static_cast<double>(raw_) / kScale; }
   constexpr explicit operator float() const {
@@ -139,8 +160,8 @@ class fixed64 {
   }
   constexpr explicit operator long double() const { return static_cast<long double>(raw_) / kScale; }
 
-  friend constexpr fixed64 operator+(fixed64 x) { return x; }
-  friend constexpr fixed64 operator-(fixed64 x) {
+  FIXED64_INLINE friend constexpr fixed64 operator+(fixed64 x) { return x; }
+  FIXED64_INLINE friend constexpr fixed64 operator-(fixed64 x) {
     if (x.raw_ == detail::kRawMin) {
       detail::count_saturation();
       return from_raw(detail::kRawMax);
@@ -148,14 +169,14 @@ class fixed64 {
     return from_raw(-x.raw_);
   }
 
-  friend constexpr fixed64 operator+(fixed64 a, fixed64 b) {
+  FIXED64_INLINE friend constexpr fixed64 operator+(fixed64 a, fixed64 b) {
     const std::int64_t sum =
         static_cast<std::int64_t>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_));
     // Overflow happened iff both operands have the same sign and the sum's sign differs.
     if ((a.raw_ < 0) == (b.raw_ < 0) && (sum < 0) != (a.raw_ < 0)) return saturated(a.raw_ < 0);
     return from_raw(sum);
   }
-  friend constexpr fixed64 operator-(fixed64 a, fixed64 b) {
+  FIXED64_INLINE friend constexpr fixed64 operator-(fixed64 a, fixed64 b) {
     const std::int64_t difference =
         static_cast<std::int64_t>(static_cast<std::uint64_t>(a.raw_) - static_cast<std::uint64_t>(b.raw_));
     if ((a.raw_ < 0) != (b.raw_ < 0) && (difference < 0) != (a.raw_ < 0)) return saturated(a.raw_ < 0);
@@ -165,7 +186,7 @@ class fixed64 {
   /// int32 (|x| < 2^(31-F): 256 for S40.23) take one signed 32 x 32 -> 64-bit product, those
   /// whose magnitudes fit 32 bits one unsigned product; neither can saturate. Larger operands
   /// take the 128-bit product.
-  friend constexpr fixed64 operator*(fixed64 a, fixed64 b) {
+  FIXED64_INLINE friend constexpr fixed64 operator*(fixed64 a, fixed64 b) {
     // Written so that GCC emits one SMULL and tests the high words with two EORs (ARMv5TE).
     const auto a32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(a.raw_));
     const auto b32 = static_cast<std::int32_t>(static_cast<std::uint32_t>(b.raw_));
@@ -185,7 +206,7 @@ class fixed64 {
   }
   /// Rounded to nearest (halves away from zero): error at most half an ulp. x / 0 saturates
   /// toward the sign of x (0 / 0 gives 0) and counts.
-  friend constexpr fixed64 operator/(fixed64 a, fixed64 b) {
+  FIXED64_FLATTEN friend constexpr fixed64 operator/(fixed64 a, fixed64 b) {
     const bool negative = (a.raw_ ^ b.raw_) < 0;
     const std::uint64_t m = detail::magnitude(a.raw_), d = detail::magnitude(b.raw_);
     // |a| 2^F within 64 bits and |b| within 32 (for S40.23: |a| < 2^18, 0 < |b| < 512): two
@@ -195,17 +216,17 @@ class fixed64 {
     return divide_general(negative, a.raw_, m, d);
   }
 
-  constexpr fixed64& operator+=(fixed64 b) { return *this = *this + b; }
-  constexpr fixed64& operator-=(fixed64 b) { return *this = *this - b; }
-  constexpr fixed64& operator*=(fixed64 b) { return *this = *this * b; }
+  FIXED64_INLINE constexpr fixed64& operator+=(fixed64 b) { return *this = *this + b; }
+  FIXED64_INLINE constexpr fixed64& operator-=(fixed64 b) { return *this = *this - b; }
+  FIXED64_INLINE constexpr fixed64& operator*=(fixed64 b) { return *this = *this * b; }
   constexpr fixed64& operator/=(fixed64 b) { return *this = *this / b; }
 
-  friend constexpr bool operator==(fixed64 a, fixed64 b) { return a.raw_ == b.raw_; }
-  friend constexpr bool operator!=(fixed64 a, fixed64 b) { return a.raw_ != b.raw_; }
-  friend constexpr bool operator<(fixed64 a, fixed64 b) { return a.raw_ < b.raw_; }
-  friend constexpr bool operator<=(fixed64 a, fixed64 b) { return a.raw_ <= b.raw_; }
-  friend constexpr bool operator>(fixed64 a, fixed64 b) { return a.raw_ > b.raw_; }
-  friend constexpr bool operator>=(fixed64 a, fixed64 b) { return a.raw_ >= b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator==(fixed64 a, fixed64 b) { return a.raw_ == b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator!=(fixed64 a, fixed64 b) { return a.raw_ != b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator<(fixed64 a, fixed64 b) { return a.raw_ < b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator<=(fixed64 a, fixed64 b) { return a.raw_ <= b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator>(fixed64 a, fixed64 b) { return a.raw_ > b.raw_; }
+  FIXED64_INLINE friend constexpr bool operator>=(fixed64 a, fixed64 b) { return a.raw_ >= b.raw_; }
 
   /// Prints the value as a double would print (I/O only, never in the computing path).
   template <class CharT, class Traits>
@@ -218,12 +239,12 @@ class fixed64 {
 
   /// The * and / of operands past their fast paths, kept out of line so that the inlined fast
   /// paths stay short.
-  __attribute__((noinline)) static constexpr fixed64 multiply_general(bool negative, std::uint64_t ma,
-                                                                      std::uint64_t mb) {
+  __attribute__((noinline)) FIXED64_FLATTEN static constexpr fixed64 multiply_general(bool negative, std::uint64_t ma,
+                                                                                      std::uint64_t mb) {
     return from_raw(detail::signed_from_magnitude(negative, detail::shift_right_rounded(detail::multiply(ma, mb), F)));
   }
-  __attribute__((noinline)) static constexpr fixed64 divide_general(bool negative, std::int64_t a, std::uint64_t m,
-                                                                    std::uint64_t d) {
+  __attribute__((noinline)) FIXED64_FLATTEN static constexpr fixed64 divide_general(bool negative, std::int64_t a,
+                                                                                     std::uint64_t m, std::uint64_t d) {
     if (d == 0) {
       detail::count_saturation();
       return from_raw(a == 0 ? 0 : a < 0 ? detail::kRawMin : detail::kRawMax);
@@ -282,11 +303,11 @@ class fixed64 {
 template <int F>
 class fixed64_divisor {
  public:
-  explicit constexpr fixed64_divisor(fixed64<F> d)
+  FIXED64_FLATTEN explicit constexpr fixed64_divisor(fixed64<F> d)
       : d_(d), fast_(d.raw() != 0 && (detail::magnitude(d.raw()) >> 32) == 0) {
     if (fast_) normalised_ = detail::normalise(static_cast<std::uint32_t>(detail::magnitude(d.raw())));
   }
-  constexpr fixed64<F> divide(fixed64<F> a) const {
+  FIXED64_FLATTEN constexpr fixed64<F> divide(fixed64<F> a) const {
     const std::uint64_t m = detail::magnitude(a.raw());
     if (__builtin_expect(fast_ && (m >> (64 - F)) == 0, 1))
       return fixed64<F>::from_raw(detail::divide_rounded((a.raw() ^ d_.raw()) < 0, m << F, normalised_));
@@ -307,11 +328,11 @@ using s40_23 = fixed64<23>;
 
 /// |x|; |lowest()| saturates to max() and counts.
 template <int F>
-constexpr fixed64<F> abs(fixed64<F> x) {
+FIXED64_INLINE constexpr fixed64<F> abs(fixed64<F> x) {
   return x.raw() < 0 ? -x : x;
 }
 template <int F>
-constexpr fixed64<F> fabs(fixed64<F> x) {
+FIXED64_INLINE constexpr fixed64<F> fabs(fixed64<F> x) {
   return abs(x);
 }
 
