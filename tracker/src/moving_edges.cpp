@@ -416,6 +416,7 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
+    match.point_index = static_cast<int>(p);
     match.contrast = real(site.conv);
     match.found = refined_edge_point(response, site.i, site.j, site.conv, point);
     if (hypotheses > 1) add_alternatives(response, found, hypotheses, site, match);

@@ -80,13 +80,6 @@ bool same_pose(const Se3& a, const Se3& b) {
   return ta.x == tb.x && ta.y == tb.y && ta.z == tb.z;
 }
 
-/// Whether a match's point is this control point (a match holds a copy of its point).
-bool same_point(const ControlPoint& a, const ControlPoint& b) {
-  return a.edge == b.edge && a.pixel.x == b.pixel.x && a.pixel.y == b.pixel.y &&
-         a.point_in_model.x == b.point_in_model.x && a.point_in_model.y == b.point_in_model.y &&
-         a.point_in_model.z == b.point_in_model.z;
-}
-
 /// The step times and the converted pixels of `from` carried into `to`, measured after it.
 void carry_costs(const FrameResult& from, FrameResult& to) {
   std::copy(from.step_ns, from.step_ns + kStepCount, to.step_ns);
@@ -542,11 +535,8 @@ const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
   if (!camera_.distorted() || !same_pose(solved, solved_pixels_pose_)) return nullptr;
   remembered_pixels_.pixel.resize(matches_.size());
   remembered_pixels_.in_front.resize(matches_.size());
-  // The matches follow the visible points they came from, in order (search_moving_edges).
-  size_t v = 0;
-  for (size_t k = 0; k < matches_.size(); ++k, ++v) {
-    while (v < visible_.size() && !same_point(visible_[v], matches_[k].point)) ++v;
-    if (v == visible_.size()) return nullptr;
+  for (size_t k = 0; k < matches_.size(); ++k) {
+    const size_t v = static_cast<size_t>(matches_[k].point_index);
     remembered_pixels_.pixel[k] = solved_pixels_.pixel[v];
     remembered_pixels_.in_front[k] = solved_pixels_.in_front[v];
   }
