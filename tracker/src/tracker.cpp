@@ -70,16 +70,6 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
   return worst_numerator / worst_depth;
 }
 
-/// Whether two poses are the same, bit for bit.
-bool same_pose(const Se3& a, const Se3& b) {
-  const Mat33 &ra = a.rotation(), &rb = b.rotation();
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c)
-      if (!(ra.m[r][c] == rb.m[r][c])) return false;
-  const Vec3 &ta = a.translation(), &tb = b.translation();
-  return ta.x == tb.x && ta.y == tb.y && ta.z == tb.z;
-}
-
 /// The step times and the converted pixels of `from` carried into `to`, measured after it.
 void carry_costs(const FrameResult& from, FrameResult& to) {
   std::copy(from.step_ns, from.step_ns + kStepCount, to.step_ns);
@@ -532,7 +522,7 @@ void Tracker::State::conclude(FrameResult& result) {
 }
 
 const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
-  if (!camera_.distorted() || !same_pose(solved, solved_pixels_pose_)) return nullptr;
+  if (!camera_.distorted() || !same_bits(solved, solved_pixels_pose_)) return nullptr;
   remembered_pixels_.pixel.resize(matches_.size());
   remembered_pixels_.in_front.resize(matches_.size());
   for (size_t k = 0; k < matches_.size(); ++k) {
