@@ -104,10 +104,10 @@ bool read_frame(const char* path, int& width, int& height) {
   else if (h.colour || h.ascii || h.maxval != 255)
     std::fprintf(stderr, "tracker-firmware: %s:%d: not a binary 8-bit PGM (P5, maxval 255)\n", path, h.line);
   else if (h.width < 1 || h.height < 1 || h.width > kMaxFrameWidth || h.height > kMaxFrameHeight)
-    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d is larger than the camera buffer's %dx%d\n", path, h.line,
+    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d is larger than the camera buffer's %dx%d\n", path, h.size_line,
                  h.width, h.height, kMaxFrameWidth, kMaxFrameHeight);
   else if (width != 0 && (h.width != width || h.height != height))
-    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d, not the first frame's %dx%d\n", path, h.line, h.width,
+    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d, not the first frame's %dx%d\n", path, h.size_line, h.width,
                  h.height, width, height);
   else if (std::fread(camera_frame, 1, pixels, file) != pixels)
     std::fprintf(stderr, "tracker-firmware: %s: the pixel data is truncated (%lu bytes expected after the header)\n",

@@ -58,7 +58,7 @@ Result<NetpbmHeader> read_netpbm_header(const std::string& path, const std::vect
       edgetrack::parse_netpbm_header([&]() -> int { return next < bytes.size() ? bytes[next++] : -1; });
   if (!h.ok()) return Error{path, h.line, h.problem};
   if (!usable_image_size(h.width, h.height))
-    return Error{path, h.line, "image size " + size_text(h.width, h.height) + " is outside 1.." +
+    return Error{path, h.size_line, "image size " + size_text(h.width, h.height) + " is outside 1.." +
                                    std::to_string(kMaxImageSide) + " per side and " +
                                    std::to_string(kMaxImagePixels >> 20) + " M pixels"};
   const size_t samples = static_cast<size_t>(h.width) * h.height * (h.colour ? 3 : 1);

@@ -30,6 +30,7 @@ static void test_netpbm_header() {
   TEST("grey and binary", !grey.colour && !grey.ascii, true);
   TEST_EQUAL("the samples start after the one white space ending the header", grey.samples_at, binary.size());
   TEST_EQUAL("on the line after the header's", grey.samples_line, 5);
+  TEST_EQUAL("its size is on line 3", grey.size_line, 3);
 
   const NetpbmHeader colour = parse("P3 2#width\n1 15 0 1 2 3 4 5");
   TEST("an ASCII PPM, a comment right after a number", colour.ok() && colour.colour && colour.ascii, true);

@@ -22,6 +22,7 @@ struct NetpbmHeader {
   /// What is wrong with the header (static text), or null; `line` is the 1-based line it is on.
   const char* problem = nullptr;
   int line = 1;
+  int size_line = 1;     ///< the line of the width and height (where a caller refuses a size)
   int samples_line = 1;  ///< the line the samples start on
 
   bool ok() const { return problem == nullptr; }
@@ -93,7 +94,9 @@ NetpbmHeader parse_netpbm_header(NextByte next_byte) {
   h.colour = kind == '3' || kind == '6';
   h.ascii = kind == '2' || kind == '3';
   NetpbmNumbers<NextByte&> in(next_byte);
-  const bool numbers = in.number(h.width) && in.number(h.height) && in.number(h.maxval);
+  bool numbers = in.number(h.width) && in.number(h.height);
+  h.size_line = in.line();
+  numbers = numbers && in.number(h.maxval);
   h.line = in.line();
   h.samples_line = in.next_line();
   h.samples_at = 2 + in.consumed();
