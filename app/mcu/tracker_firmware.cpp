@@ -16,6 +16,7 @@
 #include <string>
 
 #include "edgetrack/model_io.h"
+#include "edgetrack/netpbm_header.h"
 #include "edgetrack/pose_io.h"
 #include "edgetrack/poses_csv.h"
 #include "edgetrack/tracker.h"
@@ -85,26 +86,9 @@ bool one_number(const char* pattern) {
   return conversions == 1;
 }
 
-/// Skips whitespace and # comments of a PGM header, then reads a decimal number.
-bool header_number(std::FILE* file, int& value) {
-  int c = std::fgetc(file);
-  while (c == '#' || std::isspace(c)) {
-    if (c == '#')
-      while (c != '\n' && c != EOF) c = std::fgetc(file);
-    c = std::fgetc(file);
-  }
-  if (!std::isdigit(c)) return false;
-  value = 0;
-  for (; std::isdigit(c); c = std::fgetc(file)) {
-    if (value > 100000) return false;
-    value = value * 10 + (c - '0');
-  }
-  return std::isspace(c);  // the one whitespace character after the last number ends the header
-}
-
 /// Reads a binary 8-bit PGM into camera_frame, of `width` x `height` when they are not 0 (the
-/// first frame's); false, with its line on stderr, when it cannot. Nothing here allocates: the
-/// heap is locked after the first frame.
+/// first frame's); false, with its line on stderr (as Error::text() words it), when it cannot.
+/// Nothing here allocates: the heap is locked after the first frame.
 bool read_frame(const char* path, int& width, int& height) {
   std::FILE* file = std::fopen(path, "rb");
   if (!file) {
@@ -112,26 +96,27 @@ bool read_frame(const char* path, int& width, int& height) {
     return false;
   }
   std::setvbuf(file, nullptr, _IONBF, 0);  // no stdio buffer to allocate
-  int maxval = 0, frame_width = 0, frame_height = 0;
-  const bool header = std::fgetc(file) == 'P' && std::fgetc(file) == '5' && header_number(file, frame_width) &&
-                      header_number(file, frame_height) && header_number(file, maxval);
-  const size_t pixels = static_cast<size_t>(frame_width) * static_cast<size_t>(frame_height);
+  const edgetrack::NetpbmHeader h = edgetrack::parse_netpbm_header([file] { return std::fgetc(file); });
+  const size_t pixels = static_cast<size_t>(h.width) * static_cast<size_t>(h.height);
   bool read = false;
-  if (!header || maxval != 255)
-    std::fprintf(stderr, "tracker-firmware: %s: line 1: not a binary 8-bit PGM (P5, maxval 255)\n", path);
-  else if (frame_width < 1 || frame_height < 1 || frame_width > kMaxFrameWidth || frame_height > kMaxFrameHeight)
-    std::fprintf(stderr, "tracker-firmware: %s: line 1: %dx%d is larger than the camera buffer's %dx%d\n", path,
-                 frame_width, frame_height, kMaxFrameWidth, kMaxFrameHeight);
-  else if (width != 0 && (frame_width != width || frame_height != height))
-    std::fprintf(stderr, "tracker-firmware: %s: line 1: %dx%d, not the first frame's %dx%d\n", path, frame_width,
-                 frame_height, width, height);
+  if (!h.ok())
+    std::fprintf(stderr, "tracker-firmware: %s:%d: %s\n", path, h.line, h.problem);
+  else if (h.colour || h.ascii || h.maxval != 255)
+    std::fprintf(stderr, "tracker-firmware: %s:%d: not a binary 8-bit PGM (P5, maxval 255)\n", path, h.line);
+  else if (h.width < 1 || h.height < 1 || h.width > kMaxFrameWidth || h.height > kMaxFrameHeight)
+    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d is larger than the camera buffer's %dx%d\n", path, h.size_line,
+                 h.width, h.height, kMaxFrameWidth, kMaxFrameHeight);
+  else if (width != 0 && (h.width != width || h.height != height))
+    std::fprintf(stderr, "tracker-firmware: %s:%d: %dx%d, not the first frame's %dx%d\n", path, h.size_line, h.width,
+                 h.height, width, height);
   else if (std::fread(camera_frame, 1, pixels, file) != pixels)
-    std::fprintf(stderr, "tracker-firmware: %s: the pixels end early\n", path);
+    std::fprintf(stderr, "tracker-firmware: %s: the pixel data is truncated (%lu bytes expected after the header)\n",
+                 path, (unsigned long)pixels);
   else
     read = true;
   std::fclose(file);
-  width = frame_width;
-  height = frame_height;
+  width = h.width;
+  height = h.height;
   return read;
 }
 

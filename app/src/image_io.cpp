@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "edgetrack/input_file.h"
+#include "edgetrack/netpbm_header.h"
 #include "visp3/core/vpImageConvert.h"
 
 using edgetrack::Error;
@@ -16,27 +17,6 @@ using edgetrack::Result;
 
 namespace edgetrack_app {
 namespace {
-
-/// Reads the next header number of a netpbm file, skipping white space and # comments.
-bool header_number(const std::vector<uint8_t>& bytes, size_t& at, int& value) {
-  while (at < bytes.size()) {
-    if (bytes[at] == '#') {
-      while (at < bytes.size() && bytes[at] != '\n') ++at;
-    } else if (std::isspace(bytes[at])) {
-      ++at;
-    } else {
-      break;
-    }
-  }
-  if (at >= bytes.size() || !std::isdigit(bytes[at])) return false;
-  long v = 0;
-  while (at < bytes.size() && std::isdigit(bytes[at])) {
-    v = v * 10 + (bytes[at++] - '0');
-    if (v > 1000000) return false;
-  }
-  value = static_cast<int>(v);
-  return true;
-}
 
 Result<std::vector<uint8_t>> read_bytes(const std::string& path) {
   return edgetrack::read_input_file(path, edgetrack::kMaxImageFileBytes);
@@ -70,36 +50,22 @@ std::string extension_of(const std::string& path) {
 
 namespace {
 
-/// What a netpbm header says, and where its samples start.
-struct NetpbmHeader {
-  bool colour = false;
-  bool ascii = false;
-  int width = 0, height = 0, maxval = 0;
-  size_t samples_at = 0;
-};
+using edgetrack::NetpbmHeader;
 
 Result<NetpbmHeader> read_netpbm_header(const std::string& path, const std::vector<uint8_t>& bytes) {
-  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '3' && bytes[1] != '5' && bytes[1] != '6'))
-    return Error{path, 0, "not a PGM or PPM image (no P2, P3, P5 or P6 signature)"};
-  NetpbmHeader h;
-  h.colour = bytes[1] == '3' || bytes[1] == '6';
-  h.ascii = bytes[1] == '2' || bytes[1] == '3';
-  size_t at = 2;
-  if (!header_number(bytes, at, h.width) || !header_number(bytes, at, h.height) || !header_number(bytes, at, h.maxval))
-    return Error{path, 0, "malformed PGM/PPM header"};
+  size_t next = 0;
+  const NetpbmHeader h =
+      edgetrack::parse_netpbm_header([&]() -> int { return next < bytes.size() ? bytes[next++] : -1; });
+  if (!h.ok()) return Error{path, h.line, h.problem};
   if (!usable_image_size(h.width, h.height))
-    return Error{path, 0, "image size " + size_text(h.width, h.height) + " is outside 1.." + std::to_string(kMaxImageSide) +
-                              " per side and " + std::to_string(kMaxImagePixels >> 20) + " M pixels"};
-  if (h.maxval <= 0 || h.maxval > 65535) return Error{path, 0, "maxval " + std::to_string(h.maxval) + " is out of range"};
+    return Error{path, h.size_line, "image size " + size_text(h.width, h.height) + " is outside 1.." +
+                                   std::to_string(kMaxImageSide) + " per side and " +
+                                   std::to_string(kMaxImagePixels >> 20) + " M pixels"};
   const size_t samples = static_cast<size_t>(h.width) * h.height * (h.colour ? 3 : 1);
   const size_t bytes_per_sample = h.maxval > 255 ? 2 : 1;
-  if (!h.ascii) {
-    ++at;  // the single white space after maxval
-    if (bytes.size() < at + samples * bytes_per_sample)
-      return Error{path, 0, "the pixel data is truncated (" + std::to_string(bytes.size() - std::min(at, bytes.size())) +
-                                " bytes, " + std::to_string(samples * bytes_per_sample) + " expected)"};
-  }
-  h.samples_at = at;
+  if (!h.ascii && bytes.size() < h.samples_at + samples * bytes_per_sample)
+    return Error{path, 0, "the pixel data is truncated (" + std::to_string(bytes.size() - h.samples_at) + " bytes, " +
+                              std::to_string(samples * bytes_per_sample) + " expected)"};
   return h;
 }
 
@@ -111,11 +77,13 @@ Result<std::vector<uint8_t>> decode_netpbm_samples(const std::string& path, cons
   std::vector<uint8_t> to_8bit(static_cast<size_t>(h.maxval) + 1);
   for (int v = 0; v <= h.maxval; ++v) to_8bit[v] = static_cast<uint8_t>((v * 255 + h.maxval / 2) / h.maxval);
   std::vector<uint8_t> out(samples);
-  size_t at = h.samples_at;
+  const size_t at = h.samples_at;
+  size_t next = at;
+  edgetrack::NetpbmNumbers numbers([&]() -> int { return next < bytes.size() ? bytes[next++] : -1; });
   for (size_t i = 0; i < samples; ++i) {
     int v = 0;
     if (h.ascii) {
-      if (!header_number(bytes, at, v)) return Error{path, 0, "the pixel data is truncated or not numbers"};
+      if (!numbers.number(v)) return Error{path, h.samples_line + numbers.line() - 1, "the pixel data is truncated or not numbers"};
     } else {
       v = h.maxval > 255 ? (bytes[at + 2 * i] << 8) | bytes[at + 2 * i + 1] : bytes[at + i];
     }

@@ -27,14 +27,6 @@ std::vector<Se3> true_poses(Scene scene, int frames, int subsample) {
   return poses;
 }
 
-bool bit_identical(const Se3& a, const Se3& b) {
-  bool same = a.translation().x == b.translation().x && a.translation().y == b.translation().y &&
-              a.translation().z == b.translation().z;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) same = same && a.rotation().m[r][c] == b.rotation().m[r][c];
-  return same;
-}
-
 Vec3 camera_position(const Se3& camera_from_model) { return camera_from_model.inverse().translation(); }
 
 }  // namespace edgetrack_test

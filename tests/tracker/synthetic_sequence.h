@@ -29,9 +29,6 @@ std::vector<edgetrack::Se3> true_poses(Scene scene, int frames, int subsample = 
 /// The model file of the scene, under data/models.
 std::string model_path(Scene scene);
 
-/// True when the two poses are equal to the last bit (rotation and translation).
-bool bit_identical(const edgetrack::Se3& a, const edgetrack::Se3& b);
-
 /// The camera position in the model frame, -R^T t: what the paper's accuracy figures compare.
 edgetrack::Vec3 camera_position(const edgetrack::Se3& camera_from_model);
 

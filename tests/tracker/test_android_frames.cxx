@@ -95,7 +95,7 @@ void same_poses_as_grey8(int frames) {
       const FrameView view = build_frame(cases[c], grey, camera.width, camera.height, static_cast<uint32_t>(k * 7 + c), bytes);
       const Result<FrameResult> got = trackers[c].track(view);
       if (!got.ok()) continue;
-      same[c] += bit_identical(got.value().camera_from_model, expected.camera_from_model) &&
+      same[c] += same_bits(got.value().camera_from_model, expected.camera_from_model) &&
                  got.value().points_matched == expected.points_matched;
       converted[c] += got.value().grey_pixels > 0;
     }
@@ -160,7 +160,7 @@ void broken_planes_are_refused() {
   if (!got.ok())
     TEST("and the message names the layout", got.error().message.find("YUV_420_888") != std::string::npos, true);
   TEST("the tracker is unchanged",
-       bit_identical(tracker.value().camera_from_model(), before), true);
+       same_bits(tracker.value().camera_from_model(), before), true);
 }
 
 }  // namespace

@@ -196,7 +196,7 @@ static void test_api_door() {
   if (from_frame.ok() && sized.ok()) {
     const Result<FrameResult> a = from_frame.value().track(good), b = sized.value().track(good);
     TEST("and tracks its first frame as a camera of that size",
-         a.ok() && b.ok() && bit_identical(a.value().camera_from_model, b.value().camera_from_model), true);
+         a.ok() && b.ok() && same_bits(a.value().camera_from_model, b.value().camera_from_model), true);
     FrameView smaller = good;
     smaller.width -= 2;
     TEST("then refuses a frame of another size", from_frame.value().track(smaller).ok(), false);

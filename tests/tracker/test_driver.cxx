@@ -32,6 +32,7 @@ DECLARE(test_lens);
 DECLARE(test_lens_chord_pieces);
 DECLARE(test_camera_file);
 DECLARE(test_model_text);
+DECLARE(test_netpbm_header);
 
 void register_tests() {
   REGISTER(test_se3);
@@ -64,6 +65,7 @@ void register_tests() {
   REGISTER(test_lens_chord_pieces);
   REGISTER(test_camera_file);
   REGISTER(test_model_text);
+  REGISTER(test_netpbm_header);
 }
 
 DEFINE_MAIN

@@ -80,6 +80,14 @@ static void test_edge_contrast() {
              search_moving_edges(image, points, me, range, 1, &unmatched, &strict).size(), size_t(0));
   TEST_EQUAL("a strict one an edge passes: matched as by its own",
              search_moving_edges(image, points, me, range, 1, &reference, &strict).size(), size_t(1));
+  // The same point twice, the first held to a reference no edge passes: the one match is the
+  // second's, though its point compares equal to the first's.
+  const std::vector<ControlPoint> twice = {points[0], points[0]};
+  const std::vector<real> first_unmatched = {unmatched[0], reference[0]};
+  const std::vector<unsigned char> first_strict = {1, 0};
+  const std::vector<EdgeMatch> second_only = search_moving_edges(image, twice, me, range, 1, &first_unmatched, &first_strict);
+  TEST("a match names the point it was searched for (its index), past one that found none",
+       second_only.size() == 1 && second_only[0].point_index == 1, true);
 
   // The memory: matches at the identity pose, a camera whose pixels are millimetres at 1 m.
   const PinholeCamera camera{real(1000), real(1000), real(0), real(0), 128, 48};

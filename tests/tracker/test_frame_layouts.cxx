@@ -110,7 +110,7 @@ void same_poses_in_every_layout(int frames) {
       const Result<FrameResult> got = trackers[c].track(cases[c].view);
       if (!got.ok()) continue;
       ++tracked[c];
-      same[c] += bit_identical(got.value().camera_from_model, expected.camera_from_model) &&
+      same[c] += same_bits(got.value().camera_from_model, expected.camera_from_model) &&
                  same_matches(trackers[c].matches(), reference.matches());
       converted[c] += got.value().grey_pixels > 0;
     }
@@ -128,7 +128,7 @@ void same_poses_in_every_layout(int frames) {
                             from_original = trackers[packed_grey].track(cases[packed_grey].view);
   TEST("a copy of a tracker that read frames in place tracks as the original does",
        from_copy.ok() && from_original.ok() &&
-           bit_identical(from_copy.value().camera_from_model, from_original.value().camera_from_model),
+           same_bits(from_copy.value().camera_from_model, from_original.value().camera_from_model),
        true);
   for (size_t c = 0; c < cases.size(); ++c) {
     const std::string label = cases[c].label;
@@ -149,7 +149,7 @@ void refused(Tracker& tracker, const FrameView& frame, const char* what, const c
   std::printf("  %s: %s\n", what, got.error().message.c_str());
   TEST((std::string(what) + ": the message says why").c_str(), got.error().message.find(words) != std::string::npos,
        true);
-  TEST((std::string(what) + ": the tracker is unchanged").c_str(), bit_identical(tracker.camera_from_model(), before),
+  TEST((std::string(what) + ": the tracker is unchanged").c_str(), same_bits(tracker.camera_from_model(), before),
        true);
 }
 

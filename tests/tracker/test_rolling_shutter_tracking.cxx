@@ -53,7 +53,7 @@ static void test_rolling_shutter_tracking_cube() {
               count_status(ignored, TrackingStatus::kLost), count_status(global, TrackingStatus::kLost));
   TEST_EQUAL("with the readout given no frame is lost", count_status(given, TrackingStatus::kLost), 0);
   bool same_start = true;
-  for (int k = 0; k < measured; ++k) same_start = same_start && bit_identical(given.frames[k].camera_from_model,
+  for (int k = 0; k < measured; ++k) same_start = same_start && same_bits(given.frames[k].camera_from_model,
                                                                                ignored.frames[k].camera_from_model);
   TEST("before a velocity is measured the readout changes nothing", same_start, true);
   const double shear_mm = mean_from(ignored, measured) - mean_from(global, measured);

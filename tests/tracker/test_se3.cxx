@@ -3,6 +3,7 @@
 /// and exp agrees with rotating and translating by hand.
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "edgetrack/se3.h"
 #include "testlib/testlib_test.h"
@@ -79,6 +80,15 @@ static void test_se3() {
   TEST_NEAR("retract turns on the left: a quarter turn back about z undoes the start's",
             max_abs_difference(stepped.rotation(), Mat33::identity()), 0, tol);
   TEST_NEAR("retract adds the step to the translation", stepped.translation().z, 0.033, tol);
+
+  // same_bits: a copy is the same pose; a different number, or a signed zero, is not.
+  const Se3 copy = turn;
+  TEST("same_bits holds for a copy", same_bits(copy, turn), true);
+  TEST("same_bits fails for a pose one step away", same_bits(stepped, turn), false);
+  const Se3 zero(Mat33::identity(), Vec3{real(0), real(0), real(0)});
+  const Se3 negative_zero(Mat33::identity(), Vec3{-real(0), real(0), real(0)});
+  TEST("same_bits tells signed zeros apart where real has them", same_bits(zero, negative_zero),
+       !std::is_floating_point<real>::value);
 }
 
 TESTMAIN(test_se3)

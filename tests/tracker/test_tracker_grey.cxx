@@ -53,7 +53,7 @@ void compare_grey_modes(Scene scene, int frames) {
     renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), frame);
     const FrameResult a = on_demand.value().track(rgb565_view(frame)).value();
     const FrameResult b = whole.value().track(rgb565_view(frame)).value();
-    same_poses += bit_identical(a.camera_from_model, b.camera_from_model);
+    same_poses += same_bits(a.camera_from_model, b.camera_from_model);
     same_match_lists += same_matches(on_demand.value().matches(), whole.value().matches());
     matches += static_cast<int>(on_demand.value().matches().size());
     on_demand_pixels += a.grey_pixels;

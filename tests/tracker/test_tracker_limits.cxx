@@ -4,7 +4,6 @@
 /// as those of a tracker whose buffers grow. A frame over the control-point maximum is lost with
 /// kOverLimit, allocating nothing; create refuses a model, a camera or limits that do not fit.
 #include <cstdio>
-#include <cstring>
 #include <vector>
 
 #include "allocation_counter.h"
@@ -27,12 +26,6 @@ TrackerLimits qvga_limits(int control_points) {
   limits.image_height = 240;
   limits.colour_frames = true;  // the sequence is RGB565
   return limits;
-}
-
-bool same_bits(const Se3& a, const Se3& b) {
-  const Mat33 ra = a.rotation(), rb = b.rotation();
-  const Vec3 ta = a.translation(), tb = b.translation();
-  return std::memcmp(&ra, &rb, sizeof ra) == 0 && std::memcmp(&ta, &tb, sizeof ta) == 0;
 }
 
 }  // namespace

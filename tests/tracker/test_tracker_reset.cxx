@@ -35,15 +35,15 @@ static void test_tracker_reset() {
   const Se3 before = reused.value().camera_from_model();
   const Se3 behind(Mat33::identity(), Vec3{real(0), real(0), real(-0.2)});
   TEST("a pose behind the camera is refused", reused.value().reset(behind), false);
-  TEST("and leaves the pose as it was", bit_identical(reused.value().camera_from_model(), before), true);
+  TEST("and leaves the pose as it was", same_bits(reused.value().camera_from_model(), before), true);
 
   TEST("a pose in front of the camera is taken", reused.value().reset(truth[restart]), true);
-  TEST("and is the pose from then on", bit_identical(reused.value().camera_from_model(), truth[restart]), true);
+  TEST("and is the pose from then on", same_bits(reused.value().camera_from_model(), truth[restart]), true);
   int identical = 0, matched = 0;
   for (int k = restart; k < frames; ++k) {
     const FrameResult a = fresh.value().track(rgb565_view(images[k])).value();
     const FrameResult b = reused.value().track(rgb565_view(images[k])).value();
-    identical += bit_identical(a.camera_from_model, b.camera_from_model) && a.points_matched == b.points_matched;
+    identical += same_bits(a.camera_from_model, b.camera_from_model) && a.points_matched == b.points_matched;
     matched += b.points_matched;
   }
   std::printf("%s: %d of %d frames identical after the reset, %d points matched\n", real_name(), identical,

@@ -48,7 +48,7 @@ std::vector<Se3> track_all(const Sequence& s) {
 
 int identical(const std::vector<Se3>& a, const std::vector<Se3>& b) {
   int same = 0;
-  for (size_t k = 0; k < a.size() && k < b.size(); ++k) same += bit_identical(a[k], b[k]);
+  for (size_t k = 0; k < a.size() && k < b.size(); ++k) same += same_bits(a[k], b[k]);
   return same;
 }
 

@@ -9,7 +9,7 @@
 
 #include "edgetrack/normal_mask.h"
 #include "real/vector_kernels.h"
-#include "visp3/me/vpMeResponse.h"
+#include "visp3/me/mask_response.h"
 
 namespace edgetrack {
 
@@ -23,14 +23,14 @@ constexpr int kMaxClimb = kRefinementReachAlong - 1;
 /// axis nearest to the normal, v along the other one. 0 near the border.
 class AxisLikelihood {
  public:
-  AxisLikelihood(const vpMeResponse& response, bool along_x) : response_(response), along_x_(along_x) {}
+  AxisLikelihood(const MaskResponse& response, bool along_x) : response_(response), along_x_(along_x) {}
   int at(int u, int v) const {
     const int value = along_x_ ? response_.at(v, u) : response_.at(u, v);
     return value < 0 ? -value : value;
   }
 
  private:
-  const vpMeResponse& response_;
+  const MaskResponse& response_;
   bool along_x_;
 };
 
@@ -66,7 +66,7 @@ real ridge_on_line(const AxisLikelihood& likelihood, int u, int v, int before, i
 /// on the three lines of the axis nearest to the normal around that pixel (a ridge each), and
 /// the match is where the control point's normal line crosses the polyline through those
 /// ridges: a continuous function of the control point.
-Vec2 refined_edge_point(const vpMeResponse& response, int i, int j, int conv, const ControlPoint& point) {
+Vec2 refined_edge_point(const MaskResponse& response, int i, int j, int conv, const ControlPoint& point) {
   using std::fabs;
   const bool along_x = fabs(point.normal.x) >= fabs(point.normal.y);
   const int u_site = along_x ? j : i, v_site = along_x ? i : j;
@@ -173,11 +173,11 @@ struct SiteLimits {
 };
 
 #if defined(__SSE2__)
-/// for_each_path_peak's vector path: the responses a chunk of the path at a time (vpMeResponse
+/// for_each_path_peak's vector path: the responses a chunk of the path at a time (MaskResponse
 /// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
 /// branch-free.
 template <class Visit>
-void path_peaks_in_chunks(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
   const int range = limits.range, threshold = limits.threshold;
   PathWalk walk(point, range);
   const int length = 2 * range + 1;
@@ -225,7 +225,7 @@ void path_peaks_in_chunks(const vpMeResponse& response, const SiteLimits& limits
 
 /// for_each_path_peak's scalar reference.
 template <class Visit>
-void path_peaks_one_by_one(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+void path_peaks_one_by_one(const MaskResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
   const int range = limits.range, threshold = limits.threshold;
   PathWalk walk(point, range);
   const int length = 2 * range + 1;
@@ -255,7 +255,7 @@ void path_peaks_one_by_one(const vpMeResponse& response, const SiteLimits& limit
 /// differs by rounding only. conv is the signed response of the site's mask; a path end counts as
 /// a maximum when its one neighbour is lower, as the site's search keeps an end.
 template <class Visit>
-void for_each_path_peak(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
+void for_each_path_peak(const MaskResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
 #if defined(__SSE2__)
   if (limits.vector) {
     path_peaks_in_chunks(response, limits, point, visit);
@@ -288,7 +288,7 @@ struct PathSearch {
 /// One pass over the site's path. `reference` is the oriented contrast (EdgeMatch::contrast)
 /// the same model point showed in the last trusted frame, 0 for none; `capacity` (at most
 /// kMaxHypotheses + 1) is how many maxima to keep in `peaks`, 0 for none.
-PathSearch search_path(const vpMeResponse& response, const SiteLimits& limits, const ControlPoint& point,
+PathSearch search_path(const MaskResponse& response, const SiteLimits& limits, const ControlPoint& point,
                        const real& reference, int capacity) {
   using std::fabs;
   PathSearch found;
@@ -344,7 +344,7 @@ bool choose_site(const PathSearch& found, const real& reference, bool strict, Si
 /// background texture, which the pose step would otherwise fit), and a maximum whose refined
 /// point lies within a pixel (along the normal) of one already kept is the same edge reached
 /// again.
-void add_alternatives(const vpMeResponse& response, const PathSearch& found, int hypotheses, const SitePixel& site,
+void add_alternatives(const MaskResponse& response, const PathSearch& found, int hypotheses, const SitePixel& site,
                       EdgeMatch& match) {
   using std::fabs;
   const PathPeak* peaks = found.peaks;
@@ -378,7 +378,7 @@ void contrasts_at_points(const vpImage<unsigned char>& grey, const std::vector<C
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     const NormalMask mask = normal_mask(me, point.normal);
-    const vpMeResponse response(grey, me, mask.index, mask.sign);
+    const MaskResponse response(grey, me, mask.index, mask.sign);
     out[p] = real(response.at(static_cast<int>(point.pixel.y), static_cast<int>(point.pixel.x)));
   }
 }
@@ -400,7 +400,7 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
   const SiteLimits limits(me, range);
   // The points of one straight edge share its normal, so its mask is looked up once per run.
   Vec2 mask_normal{real(0), real(0)};
-  std::optional<vpMeResponse> mask_response;
+  std::optional<MaskResponse> mask_response;
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     if (p == 0 || !(point.normal.x == mask_normal.x && point.normal.y == mask_normal.y)) {
@@ -408,7 +408,7 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
       mask_response.emplace(grey, me, mask.index, mask.sign);
       mask_normal = point.normal;
     }
-    const vpMeResponse& response = *mask_response;
+    const MaskResponse& response = *mask_response;
     const real reference = references ? (*references)[p] : real(0);
     const PathSearch found = search_path(response, limits, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);
     SitePixel site;
@@ -416,6 +416,7 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     matches.emplace_back();
     EdgeMatch& match = matches.back();
     match.point = point;
+    match.point_index = static_cast<int>(p);
     match.contrast = real(site.conv);
     match.found = refined_edge_point(response, site.i, site.j, site.conv, point);
     if (hypotheses > 1) add_alternatives(response, found, hypotheses, site, match);

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <type_traits>
 
 #include "edgetrack/millimetres.h"
@@ -552,12 +551,6 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
     outliers += matches[i].outlier;
   }
   return outliers;
-}
-
-/// Whether two poses hold the same numbers bit for bit (signed zeros told apart).
-bool same_bits(const Se3& a, const Se3& b) {
-  static_assert(std::is_trivially_copyable<Se3>::value && sizeof(Se3) == 12 * sizeof(real), "Se3 is 12 reals");
-  return std::memcmp(&a, &b, sizeof(Se3)) == 0;
 }
 
 /// The largest |after - before| over the matches: how far a round moved a match along its normal

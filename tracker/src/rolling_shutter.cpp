@@ -26,10 +26,6 @@ Vec2 image_flow(const PinholeCamera& camera, const Twist& velocity, const Vec3& 
   return real(16) * (camera.project(ahead) - at);
 }
 
-bool same_point(const ControlPoint& a, const ControlPoint& b) {
-  return a.edge == b.edge && a.pixel.x == b.pixel.x && a.pixel.y == b.pixel.y;
-}
-
 }  // namespace
 
 bool is_zero(const Twist& twist) {
@@ -79,14 +75,7 @@ void RowTimes::again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& 
                      const Se3& pose, const Twist& velocity, const real& readout) {
   moved_ = sampled_;
   move_to_row_times(moved_, camera, pose, velocity, readout);
-  // The matches come in the points' order, one per point at most.
-  size_t i = 0;
-  for (EdgeMatch& m : matches) {
-    while (i < points.size() && !same_point(points[i], m.point)) ++i;
-    if (i == points.size()) break;
-    m.point.point_in_model = moved_[i].point_in_model;
-    ++i;
-  }
+  for (EdgeMatch& m : matches) m.point.point_in_model = moved_[static_cast<size_t>(m.point_index)].point_in_model;
   for (size_t k = 0; k < points.size(); ++k) points[k].point_in_model = moved_[k].point_in_model;
 }
 

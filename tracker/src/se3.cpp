@@ -2,6 +2,9 @@
 /// Se3 on top of ports/vnl's rotation helpers (Rodrigues, thetaU and the exp-map coefficients).
 #include "edgetrack/se3.h"
 
+#include <cstring>
+#include <type_traits>
+
 #include "vnl/vnl_rotation_matrix.h"
 
 namespace edgetrack {
@@ -76,6 +79,11 @@ Se3 Se3::inverse() const {
 
 Se3 Se3::operator*(const Se3& rhs) const {
   return Se3(rotation_ * rhs.rotation_, rotation_ * rhs.translation_ + translation_);
+}
+
+bool same_bits(const Se3& a, const Se3& b) {
+  static_assert(std::is_trivially_copyable<Se3>::value && sizeof(Se3) == 12 * sizeof(real), "Se3 is 12 reals");
+  return std::memcmp(&a, &b, sizeof(Se3)) == 0;
 }
 
 }  // namespace edgetrack

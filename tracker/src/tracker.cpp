@@ -70,23 +70,6 @@ real largest_normal_shift(const std::vector<ControlPoint>& points, const Pinhole
   return worst_numerator / worst_depth;
 }
 
-/// Whether two poses are the same, bit for bit.
-bool same_pose(const Se3& a, const Se3& b) {
-  const Mat33 &ra = a.rotation(), &rb = b.rotation();
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c)
-      if (!(ra.m[r][c] == rb.m[r][c])) return false;
-  const Vec3 &ta = a.translation(), &tb = b.translation();
-  return ta.x == tb.x && ta.y == tb.y && ta.z == tb.z;
-}
-
-/// Whether a match's point is this control point (a match holds a copy of its point).
-bool same_point(const ControlPoint& a, const ControlPoint& b) {
-  return a.edge == b.edge && a.pixel.x == b.pixel.x && a.pixel.y == b.pixel.y &&
-         a.point_in_model.x == b.point_in_model.x && a.point_in_model.y == b.point_in_model.y &&
-         a.point_in_model.z == b.point_in_model.z;
-}
-
 /// The step times and the converted pixels of `from` carried into `to`, measured after it.
 void carry_costs(const FrameResult& from, FrameResult& to) {
   std::copy(from.step_ns, from.step_ns + kStepCount, to.step_ns);
@@ -537,14 +520,11 @@ void Tracker::State::conclude(FrameResult& result) {
 }
 
 const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
-  if (!camera_.distorted() || !same_pose(solved, solved_pixels_pose_)) return nullptr;
+  if (!camera_.distorted() || !same_bits(solved, solved_pixels_pose_)) return nullptr;
   remembered_pixels_.pixel.resize(matches_.size());
   remembered_pixels_.in_front.resize(matches_.size());
-  // The matches follow the visible points they came from, in order (search_moving_edges).
-  size_t v = 0;
-  for (size_t k = 0; k < matches_.size(); ++k, ++v) {
-    while (v < visible_.size() && !same_point(visible_[v], matches_[k].point)) ++v;
-    if (v == visible_.size()) return nullptr;
+  for (size_t k = 0; k < matches_.size(); ++k) {
+    const size_t v = static_cast<size_t>(matches_[k].point_index);
     remembered_pixels_.pixel[k] = solved_pixels_.pixel[v];
     remembered_pixels_.in_front[k] = solved_pixels_.in_front[v];
   }

@@ -87,7 +87,7 @@ vpMeSite* vpMeSite::getQueryList(const vpImage<unsigned char>&, const int range)
 
 void vpMeSite::initFromImage(const vpImage<unsigned char>& I, const vpMe* me, real ip, real jp, real alphap) {
   init(ip, jp, alphap);
-  const vpMeResponse mask = response(I, me);
+  const MaskResponse mask = response(I, me);
   if (mask.outside(i, j)) {
     convlt = 0;
     state = TOO_NEAR;
@@ -109,12 +109,12 @@ unsigned int vpMeSite::maskIndexFor(const vpMe* me) {
   return mask_index_;
 }
 
-vpMeResponse vpMeSite::response(const vpImage<unsigned char>& I, const vpMe* me) {
-  return vpMeResponse(I, *me, maskIndexFor(me), mask_sign);
+MaskResponse vpMeSite::response(const vpImage<unsigned char>& I, const vpMe* me) {
+  return MaskResponse(I, *me, maskIndexFor(me), mask_sign);
 }
 
 real vpMeSite::convolution(const vpImage<unsigned char>& I, const vpMe* me) {
-  const vpMeResponse mask = response(I, me);
+  const MaskResponse mask = response(I, me);
   if (mask.outside(i, j)) {
     i = 0;
     j = 0;
@@ -147,7 +147,7 @@ void vpMeSite::track(const vpImage<unsigned char>& I, const vpMe* me, bool test_
   using std::cos;
   using std::sin;
   const int range = static_cast<int>(search_range);
-  const vpMeResponse mask = response(I, me);
+  const MaskResponse mask = response(I, me);
   const real s = sin(alpha), c = cos(alpha);
 
   // Likelihood |conv + convlt| > threshold, for integer conv: conv > above or conv < below.

@@ -66,7 +66,7 @@ case $name in
       --images "$mbt/cube/image%04d.pgm" ;;
   error_unreadable_image)
     mkdir -p "$work/frames" && echo "not an image" >"$work/frames/frame0000.pgm"
-    expect_error "$work/frames/frame0000.pgm: not a PGM or PPM image" \
+    expect_error "$work/frames/frame0000.pgm:1: not a PGM or PPM image" \
       "$edgetrack" track --model "$mbt/cube.cao" --camera "$mbt/cube.xml" --init-pose "$mbt/cube.0.pos" \
       --images "$work/frames/frame%04d.pgm" ;;
   error_size_mismatch)

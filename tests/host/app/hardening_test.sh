@@ -29,9 +29,9 @@ case $name in
     expect_error "$work/zero.pgm: is not a regular file" track --images "$work/zero.pgm" ;;
   image_too_large)
     printf 'P5\n100000 100000\n255\n' >"$work/huge.pgm"
-    expect_error "$work/huge.pgm: image size 100000x100000 is outside" track --images "$work/huge.pgm"
+    expect_error "$work/huge.pgm:2: image size 100000x100000 is outside" track --images "$work/huge.pgm"
     printf 'P5\n16384 16384\n255\n' >"$work/area.pgm"
-    expect_error "$work/area.pgm: image size 16384x16384 is outside" track --images "$work/area.pgm" ;;
+    expect_error "$work/area.pgm:2: image size 16384x16384 is outside" track --images "$work/area.pgm" ;;
   size_options_bounded)
     expect_error "option --size asks for 100000x100000" "$edgetrack" edgeid --model "$mbt/cube.cao" \
       --camera "$mbt/cube.xml" --size 100000x100000 --poses "$work/none.csv"
@@ -51,15 +51,15 @@ case $name in
     mkdir -p "$work/seq"
     for i in 0 1 2; do ln -s "$mbt/cube/image000$i.pgm" "$work/seq/image000$i.pgm"; done
     echo "broken" >"$work/seq/image0003.pgm"
-    expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
+    expect_error "$work/seq/image0003.pgm:1: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
       --poses "$work/poses.csv"
     [ ! -e "$work/poses.csv" ] || fail "a failed run left poses.csv"
     [ -s "$work/poses.csv.partial" ] || fail "the rows written before the failure are not kept in poses.csv.partial"
     echo "ok: only poses.csv.partial"
-    expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
+    expect_error "$work/seq/image0003.pgm:1: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
       --video "$work/overlay.mp4"
     [ ! -e "$work/overlay.mp4" ] || fail "a failed run left overlay.mp4"
-    expect_error "$work/seq/image0003.pgm: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
+    expect_error "$work/seq/image0003.pgm:1: not a PGM or PPM image" track --images "$work/seq/image%04d.pgm" \
       --overlay "$work/frames"
     [ -e "$work/frames/INCOMPLETE" ] || fail "a failed run's overlay directory does not say it is incomplete"
     [ -s "$work/overlay.partial.mp4" ] || fail "no overlay.partial.mp4"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// vpMeResponse: every way of reading a response (at, at_each, at_each_in_box, at_block_3x3),
+/// MaskResponse: every way of reading a response (at, at_each, at_each_in_box, at_block_3x3),
 /// with each choice of kernels (real/vector_kernels.h: the widest vectors, the baseline ones,
 /// the scalar reference), gives at every pixel of a noisy image the sum this test computes from
 /// the mask's weights, for every mask and both signs: the SSE2, AVX2 and NEON kernels are
@@ -12,7 +12,7 @@
 #include "testlib/testlib_test.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
-#include "visp3/me/vpMeResponse.h"
+#include "visp3/me/mask_response.h"
 
 namespace {
 
@@ -46,7 +46,7 @@ int expected_response(const vpImage<unsigned char>& image, const vpMe& me, unsig
 /// The number of responses, read every way at every pixel with the chosen kernels, that differ
 /// from expected_response.
 int wrong_responses(const vpImage<unsigned char>& image, const vpMe& me, unsigned int index, int sign) {
-  const vpMeResponse response(image, me, index, sign);
+  const MaskResponse response(image, me, index, sign);
   const int height = static_cast<int>(image.getHeight()), width = static_cast<int>(image.getWidth());
   int wrong = 0;
   std::vector<int> rows, columns, out;

@@ -11,6 +11,9 @@ constexpr int kMaxHypotheses = 4;
 
 struct EdgeMatch {
   ControlPoint point;
+  /// Where `point` sits in the control points it was searched from (search_moving_edges), so
+  /// that the tracker pairs the match back with its visible point without comparing points.
+  int point_index = -1;
   Vec2 found;            ///< the image edge point q_i: the strongest edge along the normal, pixels
   bool outlier = false;  ///< set by the pose step when it gave the match no weight (ViSP's M_ESTIMATOR)
   /// The mask response at `found` with the mask oriented along the normal (positive: the image

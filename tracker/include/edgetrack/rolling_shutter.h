@@ -53,9 +53,9 @@ class RowTimes {
   /// velocity, nothing: again() is then not called).
   void move(std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose, const Twist& velocity,
             const real& readout);
-  /// The model points of `points` (those move() moved) and of `matches` (found for them, in
-  /// their order) moved from where they were sampled with `velocity` instead; their pixels and
-  /// normals, where the search looked, stay.
+  /// The model points of `points` (those move() moved) and of `matches` (found for them, each
+  /// at its EdgeMatch::point_index) moved from where they were sampled with `velocity` instead;
+  /// their pixels and normals, where the search looked, stay.
   void again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
              const Se3& pose, const Twist& velocity, const real& readout);
   /// The heap its buffers hold, for Tracker::memory.

@@ -55,4 +55,7 @@ class Se3 {
   Vec3 translation_;
 };
 
+/// Whether two poses hold the same numbers bit for bit (signed zeros told apart).
+bool same_bits(const Se3& a, const Se3& b);
+
 }  // namespace edgetrack

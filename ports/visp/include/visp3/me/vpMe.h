@@ -109,7 +109,7 @@ class vpMe {
   /// checked on the rounded weights, and lets a response take one product per pixel pair.
   bool masksAntisymmetric() const { return masks_antisymmetric_; }
   /// Entries per row of paddedMaskWeights: 8 on SSE2 hosts and with NEON (AArch64, ARMv7-A with
-  /// -mfpu=neon), where vpMeResponse takes a row of 8 products in vector multiply-adds, 0 (no
+  /// -mfpu=neon), where MaskResponse takes a row of 8 products in vector multiply-adds, 0 (no
   /// padded masks) elsewhere, as on ARMv5TE.
 #if defined(__SSE2__) || defined(__ARM_NEON)
   static constexpr unsigned int kPaddedRow = 8;

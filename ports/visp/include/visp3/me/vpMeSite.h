@@ -28,7 +28,7 @@
 #include "real/real.h"
 #include "visp3/core/vpImage.h"
 #include "visp3/me/vpMe.h"
-#include "visp3/me/vpMeResponse.h"
+#include "visp3/me/mask_response.h"
 
 inline namespace edgetrack_ports {
 
@@ -88,7 +88,7 @@ class vpMeSite {
   real convolution(const vpImage<unsigned char>& I, const vpMe* me);
   /// New: the response of this site's mask (alpha's mask, the site's sign) at any pixel of I,
   /// for callers reading many pixels of one site; convolution() at (i, j) is response(I, me).at(i, j).
-  vpMeResponse response(const vpImage<unsigned char>& I, const vpMe* me);
+  MaskResponse response(const vpImage<unsigned char>& I, const vpMe* me);
 
   /// Searches the 2 range + 1 candidates ifloat + k sin(alpha), jfloat + k cos(alpha), k in
   /// [-range, range] (pixel = truncation). With test_contraste, a candidate qualifies when its

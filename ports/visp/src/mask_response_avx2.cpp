@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// vpMeResponse's AVX2 kernels, built for AVX2 by the functions' attribute whatever the build's
+/// MaskResponse's AVX2 kernels, built for AVX2 by the functions' attribute whatever the build's
 /// target; called only when vector_kernels::avx2() says the CPU runs it.
-#include "visp3/me/vpMeResponse.h"
+#include "visp3/me/mask_response.h"
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -11,12 +11,12 @@
 
 inline namespace edgetrack_ports {
 
-[[gnu::target("avx2")]] void vpMeResponse::padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left,
+[[gnu::target("avx2")]] void MaskResponse::padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left,
                                                               std::ptrdiff_t stride, int sign, int* out) {
   padded_block_5(padded, top_left, stride, sign, out);
 }
 
-[[gnu::target("avx2")]] void vpMeResponse::padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap,
+[[gnu::target("avx2")]] void MaskResponse::padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap,
                                                              std::ptrdiff_t stride, int half, int sign, const int* i,
                                                              const int* j, int n, int* out) {
   static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");

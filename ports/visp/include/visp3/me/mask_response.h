@@ -21,10 +21,10 @@
 
 inline namespace edgetrack_ports {
 
-class vpMeResponse {
+class MaskResponse {
  public:
   /// The response of mask `mask_index` of `me`, times `sign` (+1 or -1), in I. I must outlive it.
-  vpMeResponse(const vpImage<unsigned char>& I, const vpMe& me, unsigned int mask_index, int sign)
+  MaskResponse(const vpImage<unsigned char>& I, const vpMe& me, unsigned int mask_index, int sign)
       : image_(I),
         weights_(me.maskWeights(mask_index)),
         padded_(me.paddedMaskWeights(mask_index)),
@@ -262,11 +262,11 @@ class vpMeResponse {
     last = _mm_add_epi32(last, _mm_shuffle_epi32(last, _MM_SHUFFLE(2, 3, 0, 1)));
     out[8] = sign * _mm_cvtsi128_si32(last);
   }
-  /// padded_block_5 built for AVX2 (vpMeResponse_avx2.cpp, whatever the build's target): the
+  /// padded_block_5 built for AVX2 (mask_response_avx2.cpp, whatever the build's target): the
   /// same operations in three-operand VEX form.
   static void padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left, std::ptrdiff_t stride, int sign,
                                   int* out);
-  /// padded_each_5<false> with AVX2 (vpMeResponse_avx2.cpp): two windows per 256-bit multiply-add
+  /// padded_each_5<false> with AVX2 (mask_response_avx2.cpp): two windows per 256-bit multiply-add
   /// and four windows' lanes summed together; every window lies inside.
   static void padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap, std::ptrdiff_t stride, int half,
                                  int sign, const int* i, const int* j, int n, int* out);
