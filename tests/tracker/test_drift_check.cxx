@@ -61,12 +61,13 @@ static void test_drift_in_clutter() {
   const SequenceRun plain = run_sequence(Scene::kCube, kFrames, false, unchecked, spec);
   TEST("both runs load", checked.loaded && plain.loaded, true);
   if (!checked.loaded || !plain.loaded) return;
-  // Each frame alone: its true pose as a one-frame sequence, tracked from that pose.
+  // Each frame alone: its true pose as a one-frame sequence, solved from that pose by the pose
+  // step alone (tracking_eval_clutter_dynamics' "alone").
   double alone = 0;
   for (int k = 0; k < kFrames; ++k) {
     SequenceSpec one = spec;
     one.poses = {checked.truth[static_cast<size_t>(k)]};
-    const SequenceRun single = run_sequence(Scene::kCube, 1, false, TrackerParams{}, one);
+    const SequenceRun single = run_sequence(Scene::kCube, 1, false, unchecked, one);
     if (!single.loaded) return;
     alone += single.position_error_mm[0] / kFrames;
   }
