@@ -42,6 +42,8 @@ static void test_drift_settings() {
   TEST("check_sigmas=4 is taken", set_thin_line_param(p, "check_sigmas", 4).empty(), true);
   TEST_NEAR("to its value", static_cast<double>(p.check_sigmas), 4.0, 1e-4);
   TEST("check_sigmas=0 is refused", set_thin_line_param(p, "check_sigmas", 0).empty(), false);
+  TEST("check_share=0.3 is taken", set_thin_line_param(p, "check_share", 0.3).empty(), true);
+  TEST("check_share=1.5 is refused", set_thin_line_param(p, "check_share", 1.5).empty(), false);
   TrackerConfig config;
   const Result<ConfigNotes> read = apply_visp_config_text(
       "<conf>\n<edgetrack><thin_lines><check>0</check></thin_lines></edgetrack>\n</conf>", "drift.xml", config);

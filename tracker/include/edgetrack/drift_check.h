@@ -4,7 +4,9 @@
 /// solved again from the same start. Where the two poses agree within what the frame's own
 /// noise leaves the pose uncertain by, the lines did not pull the pose and the first solve
 /// stands, bit for bit; where they part by more, the matches on the lines moved the pose: the
-/// tracker takes the second pose or reports the frame uncertain (ThinLineParams::check).
+/// tracker takes the second pose or reports the frame uncertain (ThinLineParams::check). Only
+/// frames where the test calls at least ThinLineParams::check_share of the matches lines are
+/// checked.
 #pragma once
 
 #include <vector>
@@ -20,7 +22,7 @@ namespace edgetrack {
 
 /// What the check found on a frame.
 struct DriftVerdict {
-  bool checked = false;  ///< the test changed matches and the second pose was solved
+  bool checked = false;  ///< the test called enough matches lines and the second pose was solved
   /// px, the largest distance between the two poses' projections of the model's overlay points
   /// (vertices, cylinder axis ends, circle centres)
   real parted_px{0};
