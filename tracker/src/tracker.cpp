@@ -502,6 +502,9 @@ bool Tracker::State::check_drift(const vpImage<unsigned char>& grey, const Se3& 
                                  PoseSolution& solution) {
   const ThinLineParams& lines = params_.thin_lines;
   if (lines.enabled || lines.check == DriftAction::kNone || !solution.solved) return false;
+  // Drift is a trusted track's: a detected start not yet confirmed, or a prediction after a
+  // loss, is the status rule's to confirm or refute (a correction could keep a wrong one alive).
+  if (status_statistics_.phase() == StatusStatistics::Phase::kUnconfirmed || motion_.lost_last_frame()) return false;
   const DriftVerdict verdict = drift_check_.check(grey, matches_, solution.camera_from_model, model_, camera_, start,
                                                   pose_params, lines, params_.status.edge_location_px, pose_workspace_);
   if (!verdict.drifted) return false;
