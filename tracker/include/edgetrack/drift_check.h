@@ -49,7 +49,8 @@ class DriftCheck {
   size_t heap_bytes() const { return matches_.capacity() * sizeof(EdgeMatch); }
 
   /// Solves `matches` less those on thin lines from `start` (pose_params, in `workspace`) and
-  /// compares with `solved`. `sigma` is the residual scale the pose uncertainty is taken with.
+  /// compares with `solved`; the second pose's uncertainty is taken with a residual scale of at
+  /// least `sigma_floor`.
   DriftVerdict check(const vpImage<unsigned char>& grey, const std::vector<EdgeMatch>& matches, const Se3& solved,
                      const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
                      const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
