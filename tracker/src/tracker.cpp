@@ -325,7 +325,7 @@ void Tracker::State::reserve_for_limits() {
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
   contrast_memory_.reserve(points);
-  drift_check_.reserve(points);
+  if (drift_check_runs(params_.thin_lines)) drift_check_.reserve(points);
   if (camera_.distorted()) {
     for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
       projected->pixel.reserve(points);
@@ -357,6 +357,8 @@ void Tracker::State::set_params(const TrackerParams& params) {
   motion_.set_params(params.motion);
   // A rolling shutter switched on after create takes its room now, not in a frame.
   if (limits_.stated() && params.readout != real(0)) row_times_.reserve(static_cast<size_t>(limits_.control_points));
+  if (limits_.stated() && drift_check_runs(params.thin_lines))
+    drift_check_.reserve(static_cast<size_t>(limits_.control_points));
 }
 
 const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
@@ -501,7 +503,7 @@ void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams&
 bool Tracker::State::check_drift(const vpImage<unsigned char>& grey, const Se3& start, const PoseParams& pose_params,
                                  PoseSolution& solution) {
   const ThinLineParams& lines = params_.thin_lines;
-  if (lines.enabled || lines.check == DriftAction::kNone || !solution.solved) return false;
+  if (!drift_check_runs(lines) || !solution.solved) return false;
   // Drift is a trusted track's: a detected start not yet confirmed, or a prediction after a
   // loss, is the status rule's to confirm or refute (a correction could keep a wrong one alive).
   if (status_statistics_.phase() == StatusStatistics::Phase::kUnconfirmed || motion_.lost_last_frame()) return false;

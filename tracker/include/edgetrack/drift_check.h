@@ -20,6 +20,9 @@
 
 namespace edgetrack {
 
+/// Whether `lines` ask for the drift check: a check, and the test not already a filter.
+inline bool drift_check_runs(const ThinLineParams& lines) { return !lines.enabled && lines.check != DriftAction::kNone; }
+
 /// What the check found on a frame.
 struct DriftVerdict {
   bool checked = false;  ///< the test called enough matches lines and the second pose was solved
