@@ -27,8 +27,9 @@ static void test_overlay_distance() {
   const Se3 moved(Mat33::identity(), Vec3{real(0.001), real(0), real(0.2)});  // 1 mm across at 200 mm: 1 px
   TEST_NEAR("the same pose parts by nothing", static_cast<double>(largest_overlay_distance_px(model, camera, at, at)),
             0.0, 1e-9);
+  // S47.16 keeps a projection of about 160 px to some 2^-16 relative: its 1 px is within 0.01.
   TEST_NEAR("1 mm across at 200 mm is 1 px at px = 200",
-            static_cast<double>(largest_overlay_distance_px(model, camera, at, moved)), 1.0, 1e-4);
+            static_cast<double>(largest_overlay_distance_px(model, camera, at, moved)), 1.0, 1e-2);
   const Se3 behind(Mat33::identity(), Vec3{real(0), real(0), real(-0.2)});
   TEST_NEAR("points behind the camera are passed over",
             static_cast<double>(largest_overlay_distance_px(model, camera, at, behind)), 0.0, 1e-9);
