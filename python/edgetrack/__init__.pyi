@@ -92,6 +92,7 @@ class Reason(Enum):
     POSE_UNDETERMINED = 13
     UNSUPPORTED = 14
     OVER_LIMIT = 15
+    DRIFT = 16
 
 def status_name(status: Status) -> str: ...
 def reason_name(reason: Reason) -> str: ...

@@ -103,7 +103,8 @@ void bind_results(py::module_& m) {
       .value("POSE_UNCONSTRAINED", StatusReason::kPoseUnconstrained)
       .value("POSE_UNDETERMINED", StatusReason::kPoseUndetermined)
       .value("UNSUPPORTED", StatusReason::kUnsupported)
-      .value("OVER_LIMIT", StatusReason::kOverLimit);
+      .value("OVER_LIMIT", StatusReason::kOverLimit)
+      .value("DRIFT", StatusReason::kDrift);
   m.def("status_name", [](TrackingStatus s) { return status_name(s); }, py::arg("status"),
         "The status as the poses CSV spells it: tracked, uncertain or lost.");
   m.def("reason_name", [](StatusReason r) { return reason_name(r); }, py::arg("reason"), "The reason in words.");

@@ -75,6 +75,23 @@ static void test_tracker_limits() {
   TEST("a copy allocates its buffers when copied, not when it tracks",
        allocation_count().allocations - before_copy_tracks.allocations, uint64_t{0});
 
+  // The drift check's second solve and its correction, forced on every frame where the thin-line
+  // test calls any match a line (drift_check.h): its matches too are reserved at create.
+  TrackerParams checking;
+  checking.thin_lines.check_share = real(0);
+  checking.thin_lines.check_sigmas = real(0.001);
+  Result<Tracker> checked = Tracker::create(model.value(), camera, truth[0], checking, qvga_limits(128));
+  TEST("a tracker with limits and the drift check forced starts", checked.ok(), true);
+  if (!checked.ok()) return;
+  uint64_t check_allocations = 0;
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(model.value(), truth[k], static_cast<uint32_t>(1000 + k), frame);
+    const AllocationCount before = allocation_count();
+    checked.value().track(rgb565_view(frame)).value();
+    check_allocations += allocation_count().allocations - before.allocations;
+  }
+  TEST("and none of its frames allocates", check_allocations, uint64_t{0});
+
   // Through a lens and a rolling shutter the tracker keeps more per point (the shared projections,
   // the points as sampled and moved); with limits they too are allocated at create.
   PinholeCamera lens_camera = camera;

@@ -142,6 +142,11 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
     return SettingProblem{"", "the thin-line test's dark_px and beyond_px must be 1 to 8 pixels"};
   if (!(lines.return_share > real(0) && lines.return_share <= real(1)))
     return SettingProblem{"", "the thin-line test's return_share must be above 0 and at most 1"};
+  if (static_cast<int>(lines.check) < 0 || static_cast<int>(lines.check) > 2 ||
+      !(lines.check_sigmas > real(0) && lines.check_sigmas <= real(100)) ||
+      !(lines.check_share >= real(0) && lines.check_share <= real(1)))
+    return SettingProblem{"", "the drift check must be 0, 1 or 2, its check_sigmas above 0 and at most 100 and its "
+                              "check_share from 0 to 1"};
   return std::nullopt;
 }
 

@@ -33,6 +33,7 @@ const char* reason_name(StatusReason reason) {
     case StatusReason::kPoseUndetermined: return "the matches leave the pose uncertain beyond the search range";
     case StatusReason::kUnsupported: return "the image gradient supports the pose's edges only at chance";
     case StatusReason::kOverLimit: return "more control points than the tracker's limit";
+    case StatusReason::kDrift: return "the matches on thin lines beside the edges moved the pose";
   }
   return "?";
 }

@@ -56,6 +56,9 @@ int main(int argc, char** argv) {
   const EdgeModel& model = sequence.model;
   TrackerParams from_truth = config.params;
   from_truth.motion.start_frames = 0;
+  // What the frame's own matches give from its true pose: the pose step alone, without the
+  // drift check's second solve (#27's reference for the tracked error).
+  from_truth.thin_lines.check = DriftAction::kNone;
   Result<Tracker> tracked = Tracker::create(model, config.camera, truth[0], config.params);
   Result<Tracker> alone = Tracker::create(model, config.camera, truth[0], from_truth);
   Result<Tracker> one_step = Tracker::create(model, config.camera, truth[0], from_truth);

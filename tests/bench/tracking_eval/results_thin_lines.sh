@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Prints the markdown section for docs/results/tracking_eval_thin_lines.md (issue 27, drift in
-# clutter): the thin-line test (tracker/include/edgetrack/thin_lines.h, off by default) switched on,
-# against the defaults, on the generated clutter sequences (the cube and the wood toy, dark lines 3,
+# clutter): the thin-line test (tracker/include/edgetrack/thin_lines.h) as the default drift check
+# (drift_check.h) and switched on as a filter, against no check, on the generated clutter sequences (the cube and the wood toy, dark lines 3,
 # 5 and 8 mm beside every edge, three seeds) in the double and S40.23 builds, how well it tells the
 # matches on the lines from those on the edges, and what it takes from ViSP's real sequences.
 set -euo pipefail
@@ -11,15 +11,17 @@ source "$here/../lib.sh"
 
 mkdir -p "$bench_build_root"
 bench_scratch thin_lines
-bench=$(bench_tree host double edgetrack tracking_eval_drift_profiles)
+bench=$(bench_tree host double edgetrack tracking_eval_drift_profiles tracking_eval_clutter_dynamics)
 edgetrack=$bench/app/edgetrack
 profiles=$bench/tests/bench/tracking_eval/tracking_eval_drift_profiles
+dynamics=$bench/tests/bench/tracking_eval/tracking_eval_clutter_dynamics
 edgetrack_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
 mbt=/usr/share/visp-images-data/ViSP-images/mbt
 castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
 castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
 models=$top/data/models
 on=(--thin-lines enabled=1)
+off=(--thin-lines check=0)
 
 # track_eval EDGETRACK SEQUENCE MODEL OUT [TRACK ARGS...]: tracks a generated sequence from its first
 # pose and evaluates it against its truth into OUT.eval; the poses in OUT.csv.
@@ -31,58 +33,79 @@ track_eval() {
   "$edgetrack" eval --poses "$out.csv" --truth "$seq/truth.csv" >"$out.eval"
 }
 
-# clutter_row MODEL MM SEED: the defaults against the test on, double and S40.23.
+# s40_apart NAME: the largest per-frame distance between the S40.23 run NAME_s40 and the double run NAME (mm).
+s40_apart() {
+  cut -d, -f1-7 "$work/$1.csv" >"$work/$1_poses.csv"
+  "$edgetrack" eval --poses "$work/$1_s40.csv" --truth "$work/$1_poses.csv" >"$work/$1_s40.eval"
+  bench_value max_distance_mm "$work/$1_s40.eval"
+}
+
+# clutter_row MODEL MM SEED: no check, the defaults (the drift check) and the test on as a filter,
+# double and S40.23; each frame alone from its true pose (tracking_eval_clutter_dynamics).
 clutter_row() {
   local model=$1 mm=$2 seed=$3 seq=$work/seq
   rm -rf "$seq"
   "$edgetrack" synth --out "$seq" --model "$models/$model.cao" --clutter "$mm" --seed "$seed" >/dev/null
+  track_eval "$edgetrack" "$seq" "$models/$model.cao" "$work/off" "${off[@]}"
   track_eval "$edgetrack" "$seq" "$models/$model.cao" "$work/defaults"
+  track_eval "$edgetrack_s40" "$seq" "$models/$model.cao" "$work/defaults_s40"
   track_eval "$edgetrack" "$seq" "$models/$model.cao" "$work/on" "${on[@]}"
   track_eval "$edgetrack_s40" "$seq" "$models/$model.cao" "$work/on_s40" "${on[@]}"
-  cut -d, -f1-7 "$work/on.csv" >"$work/on_poses.csv"
-  "$edgetrack" eval --poses "$work/on_s40.csv" --truth "$work/on_poses.csv" >"$work/s40.eval"
+  local alone
+  alone=$("$dynamics" "$models/$model.cao" "$seq" | awk '$1 == "mean" { print $3 }')
   local name="60 mm cube"
   [ "$model" = wood_toy ] && name="wood toy"
-  printf '| %s | %s | %s | %.3f | %s | %.3f | %.3f | %.3f |\n' "$name" "$mm" "$seed" \
-    "$(bench_value distance_mm "$work/defaults.eval")" "$(bench_value lost "$work/on.eval")" "$(bench_value distance_mm "$work/on.eval")" \
-    "$(bench_value max_distance_mm "$work/on.eval")" "$(bench_value max_distance_mm "$work/s40.eval")"
+  printf '| %s | %s | %s | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.3f | %s | %.3f | %.3f | %.3f |\n' "$name" "$mm" "$seed" \
+    "$alone" "$(awk -v a="$alone" 'BEGIN { print 1.5 * a }')" "$(bench_value distance_mm "$work/off.eval")" \
+    "$(bench_value lost "$work/defaults.eval")" \
+    "$(awk -F, 'NR > 1 { u += ($10 == "uncertain") } END { print u + 0 }' "$work/defaults.csv")" \
+    "$(bench_value distance_mm "$work/defaults.eval")" "$(bench_value max_distance_mm "$work/defaults.eval")" \
+    "$(s40_apart defaults)" "$(bench_value lost "$work/on.eval")" "$(bench_value distance_mm "$work/on.eval")" \
+    "$(bench_value max_distance_mm "$work/on.eval")" "$(s40_apart on)"
   [ "$seed" != 1 ] || "$profiles" "$models/$model.cao" "$seq" >"$work/profiles.$model.$mm.txt"
 }
 
-# real_row NAME MODEL CAMERA POS IMAGES [TRACK ARGS...]: points per frame and frames tracked, the
-# defaults against the test on.
+# real_row NAME MODEL CAMERA POS IMAGES [TRACK ARGS...]: points per frame and frames tracked with no
+# check, the defaults (and the frames whose pose the check changed) and the test on.
 real_row() {
   local name=$1 model=$2 camera=$3 pos=$4 images=$5
   shift 5
   local cells="" run
-  for run in defaults on; do
+  for run in off defaults on; do
     local extra=()
     [ "$run" = on ] && extra=("${on[@]}")
+    [ "$run" = off ] && extra=("${off[@]}")
     "$edgetrack" track --model "$model" --camera "$camera" --init-pose "$pos" --images "$images" \
-      --poses "$work/real.csv" --quiet "$@" "${extra[@]}" >/dev/null
+      --poses "$work/real_$run.csv" --quiet "$@" "${extra[@]}" >/dev/null
     cells+=$(awk -F, 'NR > 1 { p += $8; n++; t += ($10 == "tracked") }
-      END { printf " %.1f | %d of %d |", p / n, t, n }' "$work/real.csv")
+      END { printf " %.1f | %d of %d |", p / n, t, n }' "$work/real_$run.csv")
+    [ "$run" = defaults ] && cells+=$(paste -d, <(cut -d, -f2-7 "$work/real_off.csv") <(cut -d, -f2-7 "$work/real_defaults.csv") |
+      awk -F, 'NR > 1 { for (i = 1; i <= 6; ++i) if ($i != $(i + 6)) { n++; break } } END { printf " %d |", n }')
   done
   echo "| $name |$cells"
 }
 
 bench_heading "The thin-line test in clutter (tracking_eval_thin_lines)" "host double and S40.23 builds"
-echo "The thin-line test (\`<edgetrack><thin_lines>\`, \`track --thin-lines enabled=1\`; docs/ME.md, \"Thin lines"
-echo "beside the edges\") takes off a match whose darker side comes back within a line's width. It is off by"
-echo "default. Generated: \`edgetrack synth --clutter MM --seed S\` (QVGA, 60 frames, dark lines MM mm beside"
-echo "every model edge), tracked from the true first pose with the camera-only XML; mean and largest camera"
-echo "position error (mm), and the largest per-frame distance between the S40.23 and the double runs with"
-echo "the test on. Issue 27's target: at most 1.5 times the \"alone\" column of docs/results/tracking_eval.md."
+echo "The thin-line test (\`<edgetrack><thin_lines>\`; docs/ME.md, \"Thin lines beside the edges\") calls a match"
+echo "on a line when its darker side comes back within a line's width. By default it is a drift check (docs/ME.md,"
+echo "\"The thin-line test as a drift check\"): a frame whose matches off the lines solve to a pose more than 3"
+echo "standard deviations of its uncertainty away takes that pose; \`--thin-lines check=0\` is no check;"
+echo "\`--thin-lines enabled=1\` is the test as a filter (every line match dropped). Generated: \`edgetrack synth"
+echo "--clutter MM --seed S\` (QVGA, 60 frames, dark lines MM mm beside every model edge), tracked from the true first"
+echo "pose with the camera-only XML. \"alone\": the mean error of each frame solved alone from its true pose"
+echo "without the check (\`tracking_eval_clutter_dynamics\`), and issue 27's target, 1.5 times it, for the mean"
+echo "error; lost, uncertain, mean and largest camera position error (mm), and the largest per-frame distance"
+echo "between the S40.23 and the double runs (mm)."
 echo
-echo "| sequence | clutter mm | seed | defaults mean mm | test on: lost | mean mm | largest mm | S40.23 - double mm |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+echo "| sequence | clutter mm | seed | alone mm | target mm | no check: mean mm | defaults: lost | uncertain | mean mm | largest mm | S40.23 - double mm | filter: lost | mean mm | largest mm | S40.23 - double mm |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for model in cube60 wood_toy; do
   for mm in 3 5 8; do
     for seed in 1 2 3; do clutter_row "$model" "$mm" "$seed"; done
   done
 done
 echo
-echo "How well it tells the line from the edge (\`tracking_eval_drift_profiles\`, seed 1, the test's defaults):"
+echo "How well it tells the line from the edge (\`tracking_eval_drift_profiles\`, seed 1, the test's settings):"
 echo "the matches of the tracked run within a pixel of the true edge (\"right\") and beyond (\"wrong\"), and the"
 echo "share of each the test calls a line."
 echo
@@ -99,12 +122,17 @@ for file in "$work"/profiles.*.txt; do
 done
 echo
 echo "ViSP's real sequences from their given poses, with their files as shipped: control points in the pose"
-echo "step per frame and frames reported tracked, the defaults against the test on."
+echo "step per frame and frames reported tracked with no check, with the defaults (the drift check; \"changed\": the"
+echo "frames whose pose differs from no check's) and with the filter."
 echo
-echo "| sequence | defaults: points | tracked | test on: points | tracked |"
-echo "|---|---:|---:|---:|---:|"
+echo "| sequence | no check: points | tracked | defaults: points | tracked | changed | filter: points | tracked |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 real_row "mbt/cube 640x480, cube.xml" "$mbt/cube.cao" "$mbt/cube.xml" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm"
 real_row "mbt/cube QVGA, cube.xml" "$mbt/cube.cao" "$mbt/cube.xml" "$mbt/cube.0.pos" "$mbt/cube/image%04d.pgm" --downscale 2
+real_row "mbt/cube 640x480, cube_and_cylinder.cao" "$mbt/cube_and_cylinder.cao" "$mbt/cube.xml" "$mbt/cube.0.pos" \
+  "$mbt/cube/image%04d.pgm"
+real_row "mbt/cube QVGA, cube_and_cylinder.cao" "$mbt/cube_and_cylinder.cao" "$mbt/cube.xml" "$mbt/cube.0.pos" \
+  "$mbt/cube/image%04d.pgm" --downscale 2
 real_row "castel, chateau.xml" "$castel/chateau.cao" "$castel/chateau.xml" "$castel/chateau.0.pos" "$castel/castel/image_%04d.pgm"
 real_row "Castle-simu, chateau.xml" "$castle_simu/Models/chateau.cao" "$castle_simu/Config/chateau.xml" \
   "$castle_simu/CameraPose/Camera_001.txt" "$castle_simu/Images"

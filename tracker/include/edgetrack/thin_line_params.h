@@ -9,12 +9,32 @@
 
 namespace edgetrack {
 
+/// What the drift check (drift_check.h) does with a frame whose pose the matches on thin lines
+/// moved by more than its uncertainty allows.
+enum class DriftAction {
+  kNone = 0,    ///< no check: the tracker as without it
+  kReport = 1,  ///< the frame is reported uncertain (StatusReason::kDrift), its pose kept
+  kCorrect = 2  ///< the pose solved without the matches on thin lines is taken
+};
+
 /// The thin-line test's settings (TrackerParams::thin_lines), set by name from the XML's
-/// <edgetrack><thin_lines> block and `track --thin-lines` (set_thin_line_param). Off by
-/// default: on ViSP's real mbt/cube it also takes out true edges (a third of the matches at
-/// return_share 0.2, docs/ME.md "Thin lines beside the edges"), so it is not a rule yet.
+/// <edgetrack><thin_lines> block and `track --thin-lines` (set_thin_line_param). As a filter
+/// (`enabled`) it is off by default: on ViSP's real mbt/cube it also takes out true edges (a
+/// third of the matches at return_share 0.2, docs/ME.md "Thin lines beside the edges"). As a
+/// check (`check`) it is on: it changes a frame only where leaving those matches out moves the
+/// pose by more than the frame's own noise allows, which taking out true edges does not.
 struct ThinLineParams {
+  /// As a filter: every match on a thin line takes its next hypothesis off the line, or goes.
   bool enabled = false;
+  /// As a check (when `enabled` is off): the drift check's action.
+  DriftAction check = DriftAction::kCorrect;
+  /// The two poses part (largest overlay point distance) by more than this many times the
+  /// second pose's uncertainty (pose_uncertainty.h, a standard deviation): drift.
+  real check_sigmas{3};
+  /// The check runs only on frames where the test calls at least this share of the matches
+  /// lines (0 to 1): on the generated sequences without clutter it calls 4-7 % of them lines on
+  /// average and at most 12 % on a frame, with lines beside the edges 14-64 % (docs/ME.md).
+  real check_share{0.15};
   /// Pixels into the darker side (from the match) a line's darkest pixel may lie: its width.
   int dark_px = 2;
   /// Pixels beyond that darkest pixel where the image may come back.
@@ -25,7 +45,7 @@ struct ThinLineParams {
   real return_share{0.2};
 };
 
-/// Sets the setting `name` (enabled, dark_px, beyond_px, return_share) of `p` to `value`:
+/// Sets the setting `name` (enabled, check, check_sigmas, check_share, dark_px, beyond_px, return_share) of `p` to `value`:
 /// an empty string, or what is wrong (no such setting, a value outside its limits).
 std::string set_thin_line_param(ThinLineParams& p, const std::string& name, double value);
 

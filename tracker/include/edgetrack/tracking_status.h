@@ -29,9 +29,10 @@ enum class StatusReason {
   kPoseUnconstrained,  ///< uncertain: the matches leave the overlay's position uncertain by more than the bound
   kPoseUndetermined,   ///< lost: the matches leave it uncertain by more than the search reaches
   kUnsupported,        ///< lost: the image gradient supports the pose's edges no more than at chance
-  kOverLimit           ///< lost: the frame would sample more control points than the tracker's TrackerLimits
+  kOverLimit,          ///< lost: the frame would sample more control points than the tracker's TrackerLimits
+  kDrift               ///< uncertain: the matches on thin lines beside the edges moved the pose (drift_check.h)
 };
-constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kOverLimit) + 1;
+constexpr int kStatusReasonCount = static_cast<int>(StatusReason::kDrift) + 1;
 
 const char* status_name(TrackingStatus status);
 const char* reason_name(StatusReason reason);
