@@ -98,6 +98,12 @@ class EdgeIdBuffer {
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
   /// The nearest surface and its owner at every pixel of this frame's lines, per line.
   void find_nearest_surfaces();
+  /// Keeps at each pixel of `s` the nearest w of the occluders whose owner is not `left_out` (-1:
+  /// none left out) and, with kOwners, whose it is in `owner` (s's owners).
+  template <bool kOwners>
+  void nearest_under(const Segment& s, int left_out, int16_t* owner);
+  /// Whether every pixel of `s` passes the drawing's depth test against the depths found.
+  bool drawn_whole(const Segment& s) const;
   void draw_segments();
   template <class Pixel>
   void draw_segments_into(Pixel* image) const;
@@ -113,8 +119,9 @@ class EdgeIdBuffer {
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background (more primitives, or assign)
   /// Per pixel of each of segments_ (Segment::first_pixel on, in the line's order): the Q20 1/Z
   /// of the nearest surface there (0: none) and, for a line with an exempt owner
-  /// (Segment::first_owner on), its Occluder::owner. Only the lines' pixels need them: a few
-  /// bytes per line pixel instead of six per image pixel.
+  /// (Segment::first_owner on), its Occluder::owner; for such a line that no other surface
+  /// hides, those of the others alone (find_nearest_surfaces). Only the lines' pixels need
+  /// them: a few bytes per line pixel instead of six per image pixel.
   std::vector<int32_t> line_depth_;
   std::vector<int16_t> line_owner_;
   bool clear_all_ = false;  ///< the image holds more than segments_ drew (assign)
