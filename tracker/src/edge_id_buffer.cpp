@@ -372,13 +372,27 @@ struct StepAlong {
 
 }  // namespace
 
-void EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
+// Flattened: the walks inlined with their plots, whose captures then stay in registers.
+__attribute__((flatten)) void EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
   // No surface anywhere yet. A pixel two lines share gets the same nearest surface from each
   // (line_in_triangle gives a triangle's own depth there, whatever the line).
   const size_t pixels = static_cast<size_t>(s.line.count);
   line_depth_.assign(pixels, 0);
   // Only a line that a surface's owner may not hide reads who that surface is.
   line_owner_.assign(s.exempt_owner >= 0 ? pixels : 0, 0);
+  // A line with an exempt owner first leaves its owner's surfaces out: where the others leave
+  // it in front, it is drawn whatever its owner's are (nearer ones are its owner's, farther
+  // ones hide nothing), and the walks along a cylinder's facets beside its silhouette are
+  // most of this step. Where another surface is nearer, the owner's may be nearer still: that
+  // line is walked again through all of them, in their order.
+  nearest_under<false>(s, s.exempt_owner);
+  if (s.exempt_owner < 0 || drawn_whole(s)) return;
+  std::fill(line_depth_.begin(), line_depth_.end(), 0);
+  nearest_under<true>(s, -1);
+}
+
+template <bool kOwners>
+void EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
   // In the order a whole-surface fill would take, keeping the first of equal depths: the same
   // nearest surface at every pixel as that fill's. A triangle whose box misses the line's box has
   // none of its pixels (most of a tessellated side's facets, for each line).
@@ -388,23 +402,35 @@ void EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
   for (const Occluder& o : occluders_) {
     const PixelRect& box = o.triangle.box;
     if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
-    if (s.exempt_owner < 0) {
+    if (o.owner == left_out) continue;
+    if constexpr (!kOwners) {
       line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
         int32_t& nearest = depth[step_along(x, y)];
         if (w > nearest) nearest = w;
       });
-      continue;
+    } else {
+      int16_t* owner = line_owner_.data();
+      const int16_t id = o.owner;
+      line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
+        const int k = step_along(x, y);
+        if (w > depth[k]) {
+          depth[k] = w;
+          owner[k] = id;
+        }
+      });
     }
-    int16_t* owner = line_owner_.data();
-    const int16_t id = o.owner;
-    line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
-      const int k = step_along(x, y);
-      if (w > depth[k]) {
-        depth[k] = w;
-        owner[k] = id;
-      }
-    });
   }
+}
+
+bool EdgeIdBuffer::drawn_whole(const Segment& s) const {
+  // draw_line's w at each pixel, tested as draw_segment_into tests it.
+  const int32_t* depth = line_depth_.data();
+  int64_t w_q16 = s.line.w;
+  for (int k = 0; k < s.line.count; ++k, w_q16 += s.line.w_step) {
+    const int32_t w = static_cast<int32_t>(w_q16 >> 16);
+    if (!(w + (w >> 7) >= depth[k])) return false;
+  }
+  return true;
 }
 
 template <class Image>

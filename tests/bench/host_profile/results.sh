@@ -160,3 +160,47 @@ for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480" "generated
         'BEGIN { printf "| `%s` | %.0f | %.0f | %.1f %% |\n", n, c / f, c / f / p, 100 * c / t }'
     done
 done
+
+# work_kind FUNCTION: the kind of work a function's own instructions do (the table below).
+work_kind_awk='
+  function kind(f) {
+    if (f ~ /netlib::/) return "MINPACK (QR, norms, LM steps)"
+    if (f ~ /vpMeResponse::/) return "moving-edge mask responses"
+    if (f ~ /search_moving_edges|refined_edge_point|ridge_on_line|me_search_box|normal_mask/) return "moving-edge search and refinement"
+    if (f ~ /PointToLineProblem|solve_pose|solve_once|kth_smallest|median_of|tukey|rotation_exp|so3_|choose_nearest/) return "pose problem (residuals, Jacobian, weights, medians)"
+    if (f ~ /EdgeIdBuffer|setup_triangle|draw_line|walk_line|clip_|project_vertex|cylinder_rim_boxes|in_front_of_near_plane|contour|on_guard_band/) return "Edge-ID rendering"
+    if (f ~ /edge_support|pose_uncertainty|pixel_gradient|judge|conclude|Status/) return "status (edge support, pose uncertainty)"
+    if (f ~ /ContrastMemory/) return "contrast memory"
+    if (f ~ /sample_|keep_visible|FaceVisibility/) return "control points (sampling, visibility tests)"
+    return "other (grey scaling, prediction, the track call itself, allocation)"
+  }'
+echo
+echo "### Where the remaining instructions go, by kind of work"
+echo
+echo "The own instructions of every function inside Tracker::track (as in the tables above), summed by the"
+echo "kind of work they do, per frame and per control point, at ViSP's settings (the mbt runs' share of the"
+echo "frame in brackets). The sentence under the table is computed from the same counts."
+echo
+echo "| kind of work | mbt/cube.cao 640x480 | mbt/cube_and_cylinder.cao 640x480 |"
+echo "|---|---:|---:|"
+kinds=$work/kinds
+: >"$kinds"
+for run in "mbt/cube.cao 640x480" "mbt/cube_and_cylinder.cao 640x480"; do
+  key="working_tree.${run//[ \/]/_}"
+  callgrind_annotate --threshold=100 "$work/$key.cg" 2>/dev/null |
+    awk -v run="$run" -v f="$frames" -v p="${points[working tree.$run]}" "$work_kind_awk"'
+      /file:function/ { go = 1; next }
+      go && /^ *[0-9,]+ / { c = $1; gsub(",", "", c); name = $0; sub(/^[^:]*:/, "", name); part[kind(name)] += c; total += c }
+      END { for (k in part) printf "%s\t%s\t%.0f\t%.0f\t%.1f\n", run, k, part[k] / f, part[k] / f / p, 100 * part[k] / total }' >>"$kinds"
+done
+sort -t$'\t' -k2,2 "$kinds" | awk -F'\t' '
+  { row[$2] = row[$2] sprintf(" %s per frame, %s per point (%s %%) |", $3, $4, $5); if (!($2 in order)) order[$2] = ++n; cube[$2] += ($1 ~ /_and_/) ? $3 : 0 }
+  END { for (k in row) printf "%d\t| %s |%s\n", -cube[k], k, row[k] }' | sort -n | cut -f2
+echo
+awk -F'\t' '$1 ~ /_and_/ { print $5 "\t" $2 }' "$kinds" | sort -rn | head -n 3 | awk -F'\t' '
+  NR == 1 { largest = $1 }
+  { parts = parts (NR > 1 ? (NR == 3 ? " and " : ", ") : "") sprintf("%s (%s %%)", $2, $1) }
+  END {
+    printf "On mbt/cube_and_cylinder.cao the largest kinds are %s of the frame%s\n", parts,
+      largest < 50 ? ": no kind of work holds half of it, the rest is spread over the steps of the paper." : "."
+  }'

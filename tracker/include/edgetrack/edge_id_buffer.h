@@ -100,6 +100,12 @@ class EdgeIdBuffer {
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
   /// The nearest surface and its owner at every pixel of line `s`, into line_depth_ and line_owner_.
   void find_nearest_surfaces(const Segment& s);
+  /// Keeps at each pixel of `s` the nearest w of the occluders whose owner is not `left_out` (-1:
+  /// none left out) and, with kOwners, whose it is in line_owner_.
+  template <bool kOwners>
+  void nearest_under(const Segment& s, int left_out);
+  /// Whether every pixel of `s` passes the drawing's depth test against the depths found.
+  bool drawn_whole(const Segment& s) const;
   /// Each of this frame's lines, after its nearest surfaces.
   void draw_segments();
   /// Line `s`'s pixels where it is nearer than the surface (find_nearest_surfaces), into
@@ -120,8 +126,9 @@ class EdgeIdBuffer {
   std::vector<NarrowId> narrow_ids_;
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background (more primitives, or assign)
   /// Per pixel of the line being drawn (in the line's order): the Q20 1/Z of the nearest surface
-  /// there (0: none) and, for a line with an exempt owner, its Occluder::owner. Only a line's
-  /// pixels need them: a few bytes per pixel of the longest line, not six per image pixel.
+  /// there (0: none) and, for a line with an exempt owner, its Occluder::owner; for such a line
+  /// that no other surface hides, those of the others alone (find_nearest_surfaces). Only a
+  /// line's pixels need them: a few bytes per pixel of the longest line, not six per image pixel.
   std::vector<int32_t> line_depth_;
   std::vector<int16_t> line_owner_;
   bool clear_all_ = false;  ///< the image holds more than segments_ drew (assign)
