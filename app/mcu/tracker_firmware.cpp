@@ -148,8 +148,6 @@ std::optional<edgetrack::Tracker> start_tracker(char** argv, int width, int heig
   edgetrack::PinholeCamera camera = config.camera;
   if (camera.width == 0) camera.width = width;
   if (camera.height == 0) camera.height = height;
-  // The drift check's second set of matches (12 KB at 72 control points) is beyond the arena.
-  config.params.thin_lines.check = edgetrack::DriftAction::kNone;
   auto made = edgetrack::Tracker::create(model.value(), camera, initial.value(), config.params, kTrackerLimits);
   if (!made.ok()) return problem = made.error().text(), std::nullopt;
   return std::move(made).value();

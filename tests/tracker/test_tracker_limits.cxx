@@ -78,6 +78,7 @@ static void test_tracker_limits() {
   // The drift check's second solve and its correction, forced on every frame where the thin-line
   // test calls any match a line (drift_check.h): its matches too are reserved at create.
   TrackerParams checking;
+  checking.thin_lines.check = DriftAction::kCorrect;
   checking.thin_lines.check_share = real(0);
   checking.thin_lines.check_sigmas = real(0.001);
   Result<Tracker> checked = Tracker::create(model.value(), camera, truth[0], checking, qvga_limits(128));

@@ -21,13 +21,15 @@ enum class DriftAction {
 /// <edgetrack><thin_lines> block and `track --thin-lines` (set_thin_line_param). As a filter
 /// (`enabled`) it is off by default: on ViSP's real mbt/cube it also takes out true edges (a
 /// third of the matches at return_share 0.2, docs/ME.md "Thin lines beside the edges"). As a
-/// check (`check`) it is on: it changes a frame only where leaving those matches out moves the
-/// pose by more than the frame's own noise allows, which taking out true edges does not.
+/// check (`check`) it changes a frame only where leaving those matches out moves the pose by
+/// more than the frame's own noise allows, which taking out true edges does not; it is off by
+/// default too, for its cost: on real scenes the test calls more than check_share of the
+/// matches lines on most frames, so the second solve runs on them (docs/ME.md, "Drift check").
 struct ThinLineParams {
   /// As a filter: every match on a thin line takes its next hypothesis off the line, or goes.
   bool enabled = false;
   /// As a check (when `enabled` is off): the drift check's action.
-  DriftAction check = DriftAction::kCorrect;
+  DriftAction check = DriftAction::kNone;
   /// The two poses part (largest overlay point distance) by more than this many times the
   /// second pose's uncertainty (pose_uncertainty.h, a standard deviation): drift.
   real check_sigmas{3};
