@@ -28,8 +28,8 @@ set(CMAKE_CXX_FLAGS_INIT "${EDGETRACK_MCU_FLAGS} -D_GNU_SOURCE -fno-exceptions -
 # initialisation would append its -O3 to a *_RELEASE_INIT.
 set(CMAKE_C_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
 set(CMAKE_CXX_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
-# Our own startup (toolchains/mcu/startup.c), not newlib's crt0. nano's printf of a double
-# (the poses CSV) is linked only when asked for: -u _printf_float.
+# Our own startup (toolchains/mcu/startup.c), not newlib's crt0. nano's printf of a double (the
+# poses CSV) is linked only when asked for (its scanf's likewise: app/CMakeLists.txt).
 set(CMAKE_EXE_LINKER_FLAGS_INIT
     "-u _printf_float -nostartfiles -Wl,--gc-sections -T${CMAKE_CURRENT_LIST_DIR}/mcu/mps2-an385.ld")
 
