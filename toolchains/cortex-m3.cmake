@@ -15,7 +15,10 @@ set(CMAKE_CXX_COMPILER ${EDGETRACK_MCU_TRIPLE}-g++)
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
 # No FPU, soft-float ABI; sections per function so that the linker drops what no image calls.
-set(EDGETRACK_MCU_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -ffunction-sections -fdata-sections")
+# newlib-nano (its headers when compiling, libc_nano and libstdc++_nano when linking): its stdio and
+# allocator are a fraction of full newlib's flash; it has no 64-bit printf conversions, which
+# mcu/c99_formats.c supplies.
+set(EDGETRACK_MCU_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -ffunction-sections -fdata-sections --specs=nano.specs")
 set(CMAKE_C_FLAGS_INIT "${EDGETRACK_MCU_FLAGS}")
 # -Wno-psabi: as in cross-linux.cmake (GCC's note on 8-byte-aligned vector elements).
 # -D_GNU_SOURCE: what g++ defines on Linux; newlib hides M_PI, strnlen, ... without it under -std=c++17.
@@ -25,9 +28,10 @@ set(CMAKE_CXX_FLAGS_INIT "${EDGETRACK_MCU_FLAGS} -D_GNU_SOURCE -fno-exceptions -
 # initialisation would append its -O3 to a *_RELEASE_INIT.
 set(CMAKE_C_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
 set(CMAKE_CXX_FLAGS_RELEASE "-Os -DNDEBUG" CACHE STRING "Flags of the Release build (size)")
-# Our own startup (toolchains/mcu/startup.c), not newlib's crt0.
+# Our own startup (toolchains/mcu/startup.c), not newlib's crt0. nano's printf of a double (the
+# poses CSV) is linked only when asked for (its scanf's likewise: app/CMakeLists.txt).
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-nostartfiles -Wl,--gc-sections -T${CMAKE_CURRENT_LIST_DIR}/mcu/mps2-an385.ld")
+    "-u _printf_float -nostartfiles -Wl,--gc-sections -T${CMAKE_CURRENT_LIST_DIR}/mcu/mps2-an385.ld")
 
 set(CMAKE_FIND_ROOT_PATH /usr/lib/${EDGETRACK_MCU_TRIPLE} ${CMAKE_PREFIX_PATH})
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
