@@ -55,12 +55,11 @@ Perturbation perturbation_of(const EdgeModel& model) {
 
 /// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
 /// division per point: they are dear without a divider), `offset_mm` its offset from the
-/// model's centre in the camera frame, w in radians (scale_turns scales it by the radius);
-/// `through_lens`: camera.distorted(), asked once per call of pose_uncertainty_px.
-void pixel_gradient(const PinholeCamera& camera, bool through_lens, const Vec3& in_camera_mm, const real& inv_z,
-                    const Vec3& offset_mm, const Vec2& n, real g[kDof]) {
+/// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
+void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
+                    const Vec2& n, real g[kDof]) {
   real nu, nv;
-  if (through_lens) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
+  if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
     const Vec2 across = camera.lens_covector(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z},
                                              Vec2{n.x * camera.px, n.y * camera.py});
     nu = across.x * inv_z;
@@ -157,7 +156,7 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
     const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square
-    pixel_gradient(camera, through_lens, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
     for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
     sum.add(g);
   }
@@ -180,10 +179,10 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
     if (off_scale || in_camera.z <= real(0)) return;
     const real inv_z = real(1) / in_camera.z;
     const Vec3 offset = in_camera - centre_mm;
-    pixel_gradient(camera, through_lens, in_camera, inv_z, offset, Vec2{real(1), real(0)}, g);
+    pixel_gradient(camera, in_camera, inv_z, offset, Vec2{real(1), real(0)}, g);
     for (int k = 3; k < kDof; ++k) g[k] = inv_radius * g[k];
     const real along_u = whitened_square(information, inv_diagonal, g, cap);
-    pixel_gradient(camera, through_lens, in_camera, inv_z, offset, Vec2{real(0), real(1)}, g);
+    pixel_gradient(camera, in_camera, inv_z, offset, Vec2{real(0), real(1)}, g);
     for (int k = 3; k < kDof; ++k) g[k] = inv_radius * g[k];
     const real along_v = whitened_square(information, inv_diagonal, g, cap);
     if (along_u < real(0) || along_v < real(0)) {
