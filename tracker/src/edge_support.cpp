@@ -59,7 +59,6 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
   const int height = static_cast<int>(grey.getHeight()), width = static_cast<int>(grey.getWidth());
   const real floor_squared = gradient_floor * gradient_floor;
   real angle_sum(0);
-  const bool pinhole = !camera.distorted();  // once: the loop's stores keep the compiler from hoisting it
   for (size_t p = 0; p < points.size(); ++p) {
     const ControlPoint& point = points[p];
     // Where the edge projected with `pose` crosses the point's normal: the point's search path,
@@ -71,7 +70,7 @@ EdgeSupport edge_support(const vpImage<unsigned char>& grey, const std::vector<C
     } else {
       const Vec3 in_camera = pose * point.point_in_model;
       if (in_camera.z <= real(0)) continue;
-      at = pinhole ? camera.project_pinhole(in_camera) : camera.project_through_lens(in_camera);
+      at = camera.project(in_camera);
     }
     const real shift = dot(point.normal, at - point.pixel);
     const Vec2 pixel = point.pixel + shift * point.normal;
