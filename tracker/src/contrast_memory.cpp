@@ -39,11 +39,12 @@ real depth_in_camera(const Se3& camera_from_model, const Vec3& point) {
 }
 
 /// Whether the point p (camera frame, z > 0) projects within `within` pixels of `found` along
-/// `normal`: the distance times z, so that the projection needs no division.
-bool projects_near(const PinholeCamera& camera, const Vec3& p, const Vec2& normal, const Vec2& found,
-                   const real& within) {
+/// `normal`: the distance times z, so that the projection needs no division. `through_lens`:
+/// camera.distorted(), asked once per frame.
+bool projects_near(const PinholeCamera& camera, bool through_lens, const Vec3& p, const Vec2& normal,
+                   const Vec2& found, const real& within) {
   using std::fabs;
-  if (camera.distorted()) return fabs(dot(normal, camera.project(p) - found)) < within;
+  if (through_lens) return fabs(dot(normal, camera.project_through_lens(p) - found)) < within;
   const real along_times_z = normal.x * (camera.px * p.x + (camera.u0 - found.x) * p.z) +
                              normal.y * (camera.py * p.y + (camera.v0 - found.y) * p.z);
   return fabs(along_times_z) < within * p.z;
@@ -59,6 +60,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
   groups_.clear();
   // Sized by the matches, so that it grows only on a frame with more matches than any before.
   remembered_.reserve(matches.size());
+  const bool through_lens = camera.distorted();
   // Mean |contrast| per primitive over the kept matches (matches come grouped by primitive).
   size_t first = 0;
   while (first < matches.size()) {
@@ -79,7 +81,7 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
         if (!projected->in_front[k] || !(fabs(dot(m.point.normal, projected->pixel[k] - m.found)) < within)) continue;
       } else {
         const Vec3 p = camera_from_model * m.point.point_in_model;
-        if (p.z <= real(0) || !projects_near(camera, p, m.point.normal, m.found, within)) continue;
+        if (p.z <= real(0) || !projects_near(camera, through_lens, p, m.point.normal, m.found, within)) continue;
       }
       remembered_.push_back({m.point.point_in_model, m.contrast});
     }

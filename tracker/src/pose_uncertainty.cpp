@@ -135,6 +135,7 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   using std::fabs;
   using std::sqrt;
   const real unconstrained = real(kUnconstrainedPx);
+  const bool through_lens = camera.distorted();
   const Perturbation perturbation = perturbation_of(model);
   const real inv_radius = real(1) / perturbation.radius_mm;
   const Vec3 centre_mm = to_millimetres(pose * perturbation.centre);
@@ -149,8 +150,8 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
     const Vec3 in_camera = to_millimetres(pose * match.point.point_in_model);
     if (in_camera.z <= real(0)) continue;
     const real inv_z = real(1) / in_camera.z;
-    const Vec2 pixel = camera.distorted()
-                           ? camera.project(in_camera)
+    const Vec2 pixel = through_lens
+                           ? camera.project_through_lens(in_camera)
                            : Vec2{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
     const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
     if (u >= real(1)) continue;
