@@ -5,6 +5,7 @@
 /// typed getters read the values (or the declared defaults) and report bad ones.
 #pragma once
 
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <string>
@@ -74,5 +75,25 @@ std::vector<std::string> missing_or_conflicting(const CommandLine& line, const A
 /// here: 0 after printing `--help` to stdout; 2 after an unknown option, a missing value, or a
 /// missing or conflicting option, each one line on stderr naming it, then the synopsis.
 std::optional<int> parse_command_line(const CommandLine& line, int argc, char** argv, Args& args);
+
+/// OPTION NAME=VALUE,...: each setting through `set`, which returns what is wrong or nothing.
+template <typename Set>
+edgetrack::Result<bool> apply_named_settings(const char* option, const std::string& text, Set set) {
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    const size_t equals = item.find('=');
+    char* stop = nullptr;
+    const double value = equals == std::string::npos ? 0 : std::strtod(item.c_str() + equals + 1, &stop);
+    if (equals == std::string::npos || equals + 1 == item.size() || *stop != '\0')
+      return edgetrack::Error{"", 0, std::string(option) + " takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
+    const std::string problem = set(item.substr(0, equals), value);
+    if (!problem.empty()) return edgetrack::Error{"", 0, std::string(option) + " " + item + ": " + problem};
+    start = end + 1;
+  }
+  return true;
+}
 
 }  // namespace edgetrack_app

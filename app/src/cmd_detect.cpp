@@ -48,6 +48,7 @@ int detect_main(int argc, char** argv) {
           {"--raw-size", "WIDTHxHEIGHT", "size of a raw RGB565 image", ""},
           {"--templates", "FILE", "templates made by `edgetrack templates` for this model and camera", ""},
           {"--out", "FILE", "write the pose found as a .pos file", ""},
+          detector_option_spec(),
       },
       {"--model", "--camera", "--image"},
       {},
@@ -85,8 +86,10 @@ int detect_main(int argc, char** argv) {
     if (error.file.empty() && error.message.find("image") != std::string::npos) error.file = a.text("--image");
     return report("detect", error);
   }
+  auto detection_params = detector_params_from(a, config.value().config.detector);
+  if (!detection_params.ok()) return report("detect", detection_params.error()) + 1;
   auto detector = edgetrack::Detector::create(model.value(), camera, std::move(templates).value(),
-                                              edgetrack::DetectorParams{}, config.value().config.params);
+                                              detection_params.value(), config.value().config.params);
   if (!detector.ok()) return report("detect", detector.error());
   const auto start = std::chrono::steady_clock::now();
   edgetrack_count_begin();  // the detector's own share (QEMU counter, tests/bench/mcu)

@@ -116,26 +116,6 @@ Result<Se3> initial_pose_from_points(const std::string& init_path, const std::st
   return pose.value().camera_from_model;
 }
 
-/// OPTION NAME=VALUE,...: each setting through `set`, which returns what is wrong or nothing.
-template <typename Set>
-Result<bool> apply_named_settings(const char* option, const std::string& text, Set set) {
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.find(',', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string item = text.substr(start, end - start);
-    const size_t equals = item.find('=');
-    char* stop = nullptr;
-    const double value = equals == std::string::npos ? 0 : std::strtod(item.c_str() + equals + 1, &stop);
-    if (equals == std::string::npos || equals + 1 == item.size() || *stop != '\0')
-      return Error{"", 0, std::string(option) + " takes NAME=VALUE pairs separated by commas, not '" + item + "'"};
-    const std::string problem = set(item.substr(0, equals), value);
-    if (!problem.empty()) return Error{"", 0, std::string(option) + " " + item + ": " + problem};
-    start = end + 1;
-  }
-  return true;
-}
-
 /// --status NAME=VALUE,...: each setting over `status`, checked.
 Result<bool> apply_status_option(const std::string& text, edgetrack::StatusParams& status) {
   return apply_named_settings("--status", text, [&status](const std::string& name, double value) {
@@ -229,12 +209,14 @@ const CommandLine& track_command_line() {
           {"--thin-lines", "NAME=VALUE[,NAME=VALUE...]",
            "the thin-line test's settings over the configuration's, named as in its <edgetrack><thin_lines> block "
            "(docs/APP.md); enabled=0 turns it off", ""},
+          detector_option_spec(),
           {"--quiet", "", "no progress line", ""},
       },
       {"--model", "--camera"},
       {{"--init-pose", "--init", "--init-click", "--init-auto"}, {"--images", "--camera-device"}},
       {{"--init", "--init-points"}, {"--init-points", "--init"}, {"--save-clicks", "--init-click"},
-       {"--save-pose", "--init-click"}, {"--init-distance", "--init-auto"}, {"--templates", "--init-auto"}},
+       {"--save-pose", "--init-click"}, {"--init-distance", "--init-auto"}, {"--templates", "--init-auto"},
+       {"--detector", "--init-auto"}},
   };
   return line;
 }
@@ -353,7 +335,9 @@ std::optional<int> open_inputs(const TrackRequest& request, TrackInputs& in) {
   if (auto refused = edgetrack::check_tracked_model(in.model))
     return report("track", {a.text("--model"), 0, refused->message});
   if (request.automatic) {
-    auto made = auto_init_tracker(a, in.model, in.camera, params);
+    auto detection = detector_params_from(a, config.value().config.detector);
+    if (!detection.ok()) return report("track", detection.error()) + 1;
+    auto made = auto_init_tracker(a, in.model, in.camera, params, detection.value());
     if (!made.ok()) return report("track", made.error());
     in.auto_tracker = std::move(made).value();
     print_detection_reduction(in.camera, "track");

@@ -86,10 +86,27 @@ Result<TemplateParams> template_params_from(const Args& args) {
   return params;
 }
 
+OptionSpec detector_option_spec() {
+  return {"--detector", "NAME=VALUE[,NAME=VALUE...]",
+          "the detector's settings over the configuration's, named as in its <edgetrack><detector> block: "
+          "max_points_searched, the work budget of one detection (docs/APP.md)",
+          ""};
+}
+
+Result<edgetrack::DetectorParams> detector_params_from(const Args& args, const edgetrack::DetectorParams& configured) {
+  edgetrack::DetectorParams params = configured;
+  auto applied = apply_named_settings("--detector", args.text("--detector"), [&params](const std::string& name, double value) {
+    return edgetrack::set_detector_param(params, name, value);
+  });
+  if (!applied.ok()) return applied.error();
+  return params;
+}
+
 Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args& args,
                                                                       const edgetrack::EdgeModel& model,
                                                                       const edgetrack::PinholeCamera& camera,
-                                                                      const edgetrack::TrackerParams& tracking) {
+                                                                      const edgetrack::TrackerParams& tracking,
+                                                                      const edgetrack::DetectorParams& detection) {
   Result<edgetrack::TemplateSet> templates = Error{};
   if (args.has("--templates")) {
     if (args.has("--init-distance"))
@@ -107,7 +124,7 @@ Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args
   }
   if (!templates.ok()) return templates.error();
   auto made = edgetrack::AutoInitTracker::create(model, camera, std::move(templates).value(),
-                                                 edgetrack::DetectorParams{}, tracking);
+                                                 detection, tracking);
   if (!made.ok()) return made.error();
   return std::unique_ptr<edgetrack::AutoInitTracker>(new edgetrack::AutoInitTracker(std::move(made).value()));
 }

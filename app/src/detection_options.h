@@ -22,12 +22,17 @@ std::vector<OptionSpec> template_range_specs();
 /// The template parameters those options give (the defaults for the absent ones).
 edgetrack::Result<edgetrack::TemplateParams> template_params_from(const Args& args);
 
+/// `--detector NAME=VALUE,...` of `detect` and `track`: the detector's settings over the
+/// configuration's <edgetrack><detector> (edgetrack::set_detector_param).
+OptionSpec detector_option_spec();
+edgetrack::Result<edgetrack::DetectorParams> detector_params_from(const Args& args,
+                                                                  const edgetrack::DetectorParams& configured);
+
 /// `track --init-auto`'s tracker: the templates of `--templates FILE` (checked against the model
 /// and the camera), else the default range with `--init-distance MIN:MAX`, made now.
-edgetrack::Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(const Args& args,
-                                                                                 const edgetrack::EdgeModel& model,
-                                                                                 const edgetrack::PinholeCamera& camera,
-                                                                                 const edgetrack::TrackerParams& tracking);
+edgetrack::Result<std::unique_ptr<edgetrack::AutoInitTracker>> auto_init_tracker(
+    const Args& args, const edgetrack::EdgeModel& model, const edgetrack::PinholeCamera& camera,
+    const edgetrack::TrackerParams& tracking, const edgetrack::DetectorParams& detection);
 
 /// A line on stdout when the detector reduces frames of `camera`'s size (edgetrack::
 /// detection_reduction), naming the size it detects at (`command`: the command's name).

@@ -39,6 +39,7 @@ DECLARE(test_visp_cube_poses);
 DECLARE(test_vector_kernels);
 DECLARE(test_thin_lines);
 DECLARE(test_drift_check);
+DECLARE(test_detection_budget);
 DECLARE(test_rolling_shutter_tracking_cube);
 
 void register_tests() {
@@ -79,6 +80,7 @@ void register_tests() {
   REGISTER(test_vector_kernels);
   REGISTER(test_thin_lines);
   REGISTER(test_drift_check);
+  REGISTER(test_detection_budget);
   REGISTER(test_rolling_shutter_tracking_cube);
 }
 

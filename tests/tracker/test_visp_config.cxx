@@ -159,6 +159,18 @@ void readout_block() {
   TEST_NEAR("  and ViSP's camera beside it", config.camera.px, 300, 1e-6);
 }
 
+/// The detector's work budget, in edgetrack's block; none by default.
+void detector_block() {
+  TrackerConfig config;
+  TEST_EQUAL("no detection budget by default", config.detector.max_points_searched, 0);
+  auto read = apply_visp_config(
+      write("detector.xml", "<conf><edgetrack><detector><max_points_searched>5000</max_points_searched></detector>"
+                            "</edgetrack></conf>"),
+      config);
+  TEST("a file with <edgetrack><detector><max_points_searched> is read", read.ok(), true);
+  TEST_EQUAL("  the budget", config.detector.max_points_searched, 5000);
+}
+
 void refused(const std::string& name, const std::string& xml, int line, const std::string& element) {
   TrackerConfig config;
   const TrackerConfig before = config;
@@ -224,6 +236,12 @@ void bad_values() {
           "<status><tracked_scale>");
   refused("status_frames.xml", "<conf>\n<status>\n<learn_frames>2.5</learn_frames>\n</status>\n</conf>\n", 3,
           "<status><learn_frames>");
+  refused("budget.xml", "<conf>\n<edgetrack><detector>\n<max_points_searched>-5</max_points_searched>\n</detector></edgetrack>\n</conf>\n",
+          3, "<edgetrack><detector><max_points_searched>");
+  refused("budget_part.xml", "<conf><edgetrack><detector>\n<max_points_searched>2.5</max_points_searched></detector></edgetrack></conf>",
+          2, "<edgetrack><detector><max_points_searched>");
+  refused("budget_name.xml", "<conf><edgetrack><detector>\n\n<points>500</points></detector></edgetrack></conf>", 3,
+          "<edgetrack><detector><points>");
   refused("unclosed.xml", "<conf>\n<ecm>\n<range><tracking>5</tracking>\n</ecm>\n</conf>\n", 4, "</ecm> does not close <range>");
   TrackerConfig config;
   auto missing = apply_visp_config(std::string(EDGETRACK_TEST_OUTPUT) + "/no_such.xml", config);
@@ -259,6 +277,7 @@ static void test_visp_config() {
   precedence();
   status_block();
   readout_block();
+  detector_block();
   bad_values();
 }
 

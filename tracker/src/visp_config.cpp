@@ -227,13 +227,15 @@ class Reading {
     return true;
   }
 
-  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status>, <thin_lines> and <camera>.
+  /// edgetrack's own settings, which ViSP passes over: <edgetrack><status>, <thin_lines>, <camera>
+  /// and <detector>.
   Result<bool> edgetrack_block(const XmlElement& block) {
     for (const XmlElement& e : block.children) {
       Result<bool> read = true;
       if (e.name == "status") read = status(e, "<edgetrack><status>");
       else if (e.name == "thin_lines") read = thin_lines(e, "<edgetrack><thin_lines>");
       else if (e.name == "camera") read = camera_timing(e);
+      else if (e.name == "detector") read = detector(e);
       if (!read.ok()) return read;
     }
     return true;
@@ -247,6 +249,19 @@ class Reading {
       if (e.name != "readout") return bad(e, where, "is no camera setting of edgetrack's (readout is)");
       auto read = measure(e, where, 1, config_.params.readout);
       if (!read.ok()) return read;
+    }
+    return true;
+  }
+
+  /// The detector's settings a file may give (set_detector_param), each element named as its
+  /// field; a name that is none is refused, as in <status>.
+  Result<bool> detector(const XmlElement& block) {
+    for (const XmlElement& e : block.children) {
+      const std::string where = "<edgetrack><detector><" + e.name + ">";
+      auto got = number(e, where);
+      if (!got.ok()) return got.error();
+      const std::string problem = set_detector_param(config_.detector, e.name, got.value());
+      if (!problem.empty()) return bad(e, where, "'" + e.text + "' is refused: " + problem);
     }
     return true;
   }

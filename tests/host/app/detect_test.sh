@@ -73,6 +73,28 @@ case $name in
     read -r worst mean < <(centre_offsets "$work/found.csv" "$work/truth.csv" "0 0 0")
     echo "centre $worst mm from the truth"
     less "$worst" 2.0 || fail "the centre is 2 mm or more from the truth" ;;
+  detect_budget)
+    # The detection's work budget from the command line and from the configuration's
+    # <edgetrack><detector> block: one control point runs one frame and finds nothing (exit 3, no
+    # pose written); a bad value or name is refused with one line.
+    "$edgetrack" synth --out "$work/seq" --frames 1 >/dev/null || fail "synth failed"
+    args=(--model "$data/models/cube60.cao" --camera "$work/seq/camera.xml" --image "$work/seq/frames/frame0000.ppm"
+      --distance 0.4:0.6 --subdivisions 1 --in-plane 12)
+    "$edgetrack" detect "${args[@]}" --detector max_points_searched=1 --out "$work/none.pos" >"$work/budget.txt"
+    status=$?
+    cat "$work/budget.txt"
+    [ "$status" -eq 3 ] || fail "a budget of one point: exit status $status, not 3 (not found)"
+    grep -q "detect: found=0" "$work/budget.txt" || fail "no found=0 line"
+    [ ! -e "$work/none.pos" ] || fail "a pose was written though nothing was found"
+    printf '<conf><edgetrack><detector><max_points_searched>1</max_points_searched></detector></edgetrack></conf>\n' \
+      >"$work/budget.xml"
+    "$edgetrack" detect "${args[@]}" --config "$work/budget.xml" >"$work/budget_xml.txt"
+    status=$?
+    [ "$status" -eq 3 ] || fail "<edgetrack><detector> budget of one point: exit status $status, not 3"
+    expect_error "--detector max_points_searched=-1: max_points_searched must be a whole number" \
+      "$edgetrack" detect "${args[@]}" --detector max_points_searched=-1
+    expect_error "--detector points=10: 'points' is not a detector setting" \
+      "$edgetrack" detect "${args[@]}" --detector points=10 ;;
   detect_large_image)
     # A frame of 1280x960 (its shorter side above the detector's 480 px) is detected on a copy
     # half its size, and one of 2560x1920 on a copy a quarter its size: synth's sixth frame,

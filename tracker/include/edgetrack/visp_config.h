@@ -5,12 +5,14 @@
 /// configuration held before, so a second file overrides the first element by element.
 /// edgetrack's own status settings (StatusParams, each element named as its field) come from a
 /// <status> block, or <edgetrack><status>, which ViSP passes over; the camera's rolling-shutter
-/// readout (TrackerParams::readout) from <edgetrack><camera><readout>.
+/// readout (TrackerParams::readout) from <edgetrack><camera><readout>; the detector's work budget
+/// (DetectorParams::max_points_searched) from <edgetrack><detector><max_points_searched>.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "edgetrack/detector/detector.h"
 #include "edgetrack/pinhole_camera.h"
 #include "edgetrack/result.h"
 #include "edgetrack/tracker_params.h"
@@ -23,6 +25,7 @@ struct TrackerConfig {
   /// size is 0 until a file gives one (<width>/<height> or <image_width>/<image_height>).
   PinholeCamera camera{real(600), real(600), real(192), real(144), 0, 0};
   TrackerParams params;  ///< ViSP's defaults for the edge tracker (vpMe, vpMbTracker)
+  DetectorParams detector;  ///< for --init-auto and detect: the defaults but what <edgetrack><detector> sets
 };
 
 /// What a file held beyond the values it set.

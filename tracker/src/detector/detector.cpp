@@ -85,6 +85,14 @@ Result<bool> check_detector_params(const DetectorParams& p) {
   return true;
 }
 
+std::string set_detector_param(DetectorParams& params, const std::string& name, double value) {
+  if (name != "max_points_searched") return "'" + name + "' is not a detector setting (max_points_searched is)";
+  if (!(value >= 0 && value <= 1e9) || value != static_cast<double>(static_cast<int>(value)))
+    return "max_points_searched must be a whole number from 0 (no limit) to 1e9";
+  params.max_points_searched = static_cast<int>(value);
+  return "";
+}
+
 Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& camera, TemplateSet templates,
                                   const DetectorParams& params, const TrackerParams& tracking) {
   auto checked = check_detector_params(params);
@@ -174,6 +182,7 @@ bool Detector::run_frames(Tracker& tracker, const FrameView& frame, int iteratio
     if (!tracked.ok()) return false;
     const FrameResult& result = tracked.value();
     points_searched_ += result.measures.visible;
+    ++frames_;
     candidate.status = result.status;
     candidate.visible = result.measures.visible;
     candidate.kept = result.measures.kept;
@@ -359,6 +368,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
     return *refused;
   Detection detection;
   points_searched_ = 0;
+  frames_ = 0;
   match(frame);
   const FrameView grey = detection_frame();
   for (const TemplateMatch& m : screen(grey)) {
@@ -367,6 +377,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   }
   restart_tilted(grey, detection);
   detection.points_searched = points_searched_;
+  detection.frames = frames_;
   const RefinedCandidate* best = nullptr;
   for (const RefinedCandidate& c : detection.refined)
     if (!best || better(c, *best, params_)) best = &c;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "edgetrack/detector/gradient_orientations.h"
@@ -128,12 +129,15 @@ struct DetectorParams {
   /// 0.7 to 0.8), while a right one keeps all but the points of an edge the light leaves faint
   /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
   real confident_kept_share = real(0.8);
-  /// The most control points the screening and refining frames of one detection may search
-  /// (Detection::points_searched; 0: no limit): a detection's cost past the matching is about
-  /// proportional to them, and without a limit a frame whose matches all fail costs every
-  /// candidate's full schedule. Once spent, no further frame runs: the best candidate refined
-  /// so far is judged as usual (found or not), so the limit bounds the worst case at the price
-  /// of the frames where the right candidate would have come later.
+  /// The detection's work budget: the most control points the screening and refining frames of
+  /// one detection may search (Detection::points_searched; 0: no limit). A detection's cost past
+  /// the matching is about proportional to them (on the PXA270 about 30 k guest instructions a
+  /// point, docs/results/detection.md), and without a limit a frame whose matches all fail costs
+  /// every candidate's full schedule. No frame starts once it is spent (the last one started may
+  /// take it over by its own visible points): the best candidate refined so far is judged by
+  /// the same acceptance rule as ever, so a detection cut short is found only with a pose that
+  /// passed it, else "not found". The limit bounds the worst case at the price of the frames
+  /// where the right candidate would have come later.
   int max_points_searched = 0;
 };
 
@@ -162,6 +166,9 @@ struct Detection {
   /// Control points of every screening and refining frame: a detection's guest cost past the
   /// matching is about proportional to it (docs/results/detection.md).
   int points_searched = 0;
+  /// Screening and refining frames run: with a budget (DetectorParams::max_points_searched) at
+  /// most one past the frame that spent it.
+  int frames = 0;
 };
 
 class Detector {
@@ -243,11 +250,17 @@ class Detector {
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
   int points_searched_ = 0;  ///< this detection's, so far
+  int frames_ = 0;           ///< this detection's, so far
   /// DetectorParams::max_points_searched is spent.
   bool budget_spent() const { return params_.max_points_searched > 0 && points_searched_ >= params_.max_points_searched; }
 };
 
 /// Checks the detector's parameters; an Error names the first one out of its range.
 Result<bool> check_detector_params(const DetectorParams& params);
+
+/// Sets the detector's setting `name` that a configuration (<edgetrack><detector>) or the
+/// command line (--detector) may give: max_points_searched, the detection's work budget. An
+/// empty string when set; otherwise the problem (an unknown name, a value out of range).
+std::string set_detector_param(DetectorParams& params, const std::string& name, double value);
 
 }  // namespace edgetrack
