@@ -370,6 +370,17 @@ struct StepAlong {
   int first, dir;
 };
 
+/// Whether no pixel of `line` can fail the drawing's depth test against triangle t: t's w rises
+/// above the line's by at most the tolerance of the line's least w wherever they overlap. Such a
+/// triangle (the faces a line lies on, those behind it) changes no pixel drawn, nor which owner
+/// is nearest where one hides the line.
+bool hides_nothing(const LineWalk& line, const PixelTriangle& t) {
+  int k0 = 0, k1 = line.count - 1;
+  if (!steps_in_box(line, t.box, k0, k1)) return true;
+  const int64_t w0 = (line.w + int64_t(k0) * line.w_step) >> 16, w1 = (line.w + int64_t(k1) * line.w_step) >> 16;
+  return most_above_line(line, t, k0, k1) <= (std::min(w0, w1) >> 7);
+}
+
 }  // namespace
 
 // Flattened: the walks inlined with their plots, whose captures then stay in registers.
@@ -403,6 +414,7 @@ void EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
     const PixelRect& box = o.triangle.box;
     if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
     if (o.owner == left_out) continue;
+    if (hides_nothing(line, o.triangle)) continue;
     if constexpr (!kOwners) {
       line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
         int32_t& nearest = depth[step_along(x, y)];
