@@ -2,7 +2,10 @@
 /// Edge-ID rasterises surfaces at its lines' pixels only (raster.h, line_in_triangle): for random
 /// triangles, clip rectangles and lines (the triangles' own edges among them), it visits exactly the pixels of draw_line that
 /// fill_triangle plots, in draw_line's order, with fill_triangle's w there; and the per-pixel
-/// covers/depth_at agree with fill_triangle on the whole box, 32- and 64-bit edge functions alike.
+/// covers/depth_at agree with fill_triangle on the whole box, 32- and 64-bit edge functions alike;
+/// most_above_line (Edge-ID's test that a triangle cannot hide a line) bounds the triangle's w over
+/// the line's at each of those pixels.
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -35,6 +38,8 @@ static void test_line_in_triangle() {
   std::vector<int32_t> filled(static_cast<size_t>(kWidth) * kHeight);
   std::vector<uint8_t> plotted(filled.size());
   int triangles = 0, wide = 0, pixels_agree = 0, lines = 0, lines_agree = 0, pixels_on_lines = 0;
+  int pixels_bounded = 0, own_edges_below_tolerance = 0;
+  bool bounds_hold = true;
   for (int trial = 0; trial < 240; ++trial) {
     // Every eighth triangle reaches far off screen, where its edge functions need 64 bits.
     const int reach = trial % 8 == 0 ? 1200 : 40;
@@ -72,7 +77,22 @@ static void test_line_in_triangle() {
         const size_t i = static_cast<size_t>(y) * kWidth + x;
         if (plotted[i]) expected.push_back({x, y, filled[i]});
       });
-      line_in_triangle(walk_line(p, q), t, [&](int x, int y, int32_t w) { visited.push_back({x, y, w}); });
+      const LineWalk line = walk_line(p, q);
+      line_in_triangle(line, t, [&](int x, int y, int32_t w) { visited.push_back({x, y, w}); });
+      // most_above_line bounds the triangle's w over the line's own at every pixel they share.
+      int k0 = 0, k1 = line.count - 1;
+      if (steps_in_box(line, t.box, k0, k1)) {
+        const int64_t most = most_above_line(line, t, k0, k1);
+        size_t next = 0;  // visited is in draw_line's order
+        draw_line(line, kWidth, kHeight, [&](int x, int y, int32_t w_line) {
+          if (next == visited.size() || visited[next].x != x || visited[next].y != y) return;
+          ++pixels_bounded;
+          bounds_hold &= int64_t(visited[next++].w) - w_line <= most;
+        });
+        const int32_t w_end = static_cast<int32_t>(std::min((line.w + int64_t(k0) * line.w_step) >> 16,
+                                                            (line.w + int64_t(k1) * line.w_step) >> 16));
+        if (l >= 4) own_edges_below_tolerance += most <= (w_end >> 7);
+      }
       ++lines;
       lines_agree += visited == expected;
       pixels_on_lines += static_cast<int>(expected.size());
@@ -83,6 +103,10 @@ static void test_line_in_triangle() {
   TEST_EQUAL("covers and depth_at agree with fill_triangle at every pixel", pixels_agree, triangles);
   TEST_EQUAL("line_in_triangle visits the line's filled pixels with their w", lines_agree, lines);
   TEST("the lines cross the triangles (the comparison is not vacuous)", pixels_on_lines > 10 * lines, true);
+  TEST("most_above_line bounds the triangle's w over the line's at every shared pixel", bounds_hold, true);
+  TEST_EQUAL("the bound was checked at every pixel line_in_triangle visits", pixels_bounded, pixels_on_lines);
+  TEST("some edges lie within Edge-ID's depth tolerance of their own triangle by the bound",
+       own_edges_below_tolerance > 0, true);
 }
 
 TESTMAIN(test_line_in_triangle)

@@ -47,6 +47,14 @@ struct NibblePixels {
   }
 };
 
+/// A 4-bit image being cleared: a pixel's whole byte is set to 0, its neighbour's half too, which
+/// is either background already or a pixel of the lines being cleared.
+template <class Byte>
+struct ClearedNibblePairs {
+  Byte* image;
+  void set(size_t i, uint16_t) const { image[i >> 1] = Byte{0}; }
+};
+
 /// Sets the pixels of `lines` in `image` to 0. Each line is walked from a local copy: a byte
 /// store may alias anything but a local, so the walk's steps stay in registers.
 template <class Image, class Segments>
@@ -65,7 +73,7 @@ void EdgeIdBuffer::clear_lines() {
     std::fill(colours_.begin(), colours_.end(), uint16_t(0));
     clear_all_ = false;
   } else if (bits_ == 4) {
-    clear_line_pixels(NibblePixels<NarrowId>{narrow_ids_.data()}, segments_, camera_.width, camera_.height);
+    clear_line_pixels(ClearedNibblePairs<NarrowId>{narrow_ids_.data()}, segments_, camera_.width, camera_.height);
   } else if (bits_ == 8) {
     clear_line_pixels(WholePixels<NarrowId>{narrow_ids_.data()}, segments_, camera_.width, camera_.height);
   } else {
@@ -370,39 +378,54 @@ struct StepAlong {
   int first, dir;
 };
 
+/// Whether no pixel of `line` can fail the drawing's depth test against triangle t: t's w rises
+/// above the line's by at most the tolerance of the line's least w wherever they overlap. Such a
+/// triangle (the faces a line lies on, those behind it) changes no pixel drawn, nor which owner
+/// is nearest where one hides the line.
+bool hides_nothing(const LineWalk& line, const PixelTriangle& t) {
+  int k0 = 0, k1 = line.count - 1;
+  if (!steps_in_box(line, t.box, k0, k1)) return true;
+  const int64_t w0 = (line.w + int64_t(k0) * line.w_step) >> 16, w1 = (line.w + int64_t(k1) * line.w_step) >> 16;
+  return most_above_line(line, t, k0, k1) <= (std::min(w0, w1) >> 7);
+}
+
 }  // namespace
 
 // Flattened: the walks inlined with their plots, whose captures then stay in registers.
-__attribute__((flatten)) void EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
-  // No surface anywhere yet. A pixel two lines share gets the same nearest surface from each
-  // (line_in_triangle gives a triangle's own depth there, whatever the line).
-  const size_t pixels = static_cast<size_t>(s.line.count);
-  line_depth_.assign(pixels, 0);
-  // Only a line that a surface's owner may not hide reads who that surface is.
-  line_owner_.assign(s.exempt_owner >= 0 ? pixels : 0, 0);
+__attribute__((flatten)) EdgeIdBuffer::Cover EdgeIdBuffer::find_nearest_surfaces(const Segment& s) {
   // A line with an exempt owner first leaves its owner's surfaces out: where the others leave
   // it in front, it is drawn whatever its owner's are (nearer ones are its owner's, farther
   // ones hide nothing), and the walks along a cylinder's facets beside its silhouette are
   // most of this step. Where another surface is nearer, the owner's may be nearer still: that
-  // line is walked again through all of them, in their order.
-  nearest_under<false>(s, s.exempt_owner);
-  if (s.exempt_owner < 0 || drawn_whole(s)) return;
-  std::fill(line_depth_.begin(), line_depth_.end(), 0);
+  // line is walked again through all of them, in their order, with who is nearest.
+  if (!nearest_under<false>(s, s.exempt_owner)) return Cover::kNone;
+  if (s.exempt_owner < 0) return Cover::kDepths;
+  if (drawn_whole(s)) return Cover::kNone;
+  line_owner_.assign(static_cast<size_t>(s.line.count), 0);
   nearest_under<true>(s, -1);
+  return Cover::kDepthsAndOwners;
 }
 
 template <bool kOwners>
-void EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
+bool EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
   // In the order a whole-surface fill would take, keeping the first of equal depths: the same
   // nearest surface at every pixel as that fill's. A triangle whose box misses the line's box has
-  // none of its pixels (most of a tessellated side's facets, for each line).
-  int32_t* depth = line_depth_.data();
+  // none of its pixels (most of a tessellated side's facets, for each line). The depths start at
+  // 0 (no surface) at the first triangle that may hide a pixel. A pixel two lines share gets the
+  // same nearest surface from each (line_in_triangle gives a triangle's own depth there, whatever
+  // the line).
+  int32_t* depth = nullptr;
   const LineWalk& line = s.line;
   const StepAlong step_along(line);
   for (const Occluder& o : occluders_) {
     const PixelRect& box = o.triangle.box;
     if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
     if (o.owner == left_out) continue;
+    if (hides_nothing(line, o.triangle)) continue;
+    if (!depth) {
+      line_depth_.assign(static_cast<size_t>(line.count), 0);
+      depth = line_depth_.data();
+    }
     if constexpr (!kOwners) {
       line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
         int32_t& nearest = depth[step_along(x, y)];
@@ -420,6 +443,7 @@ void EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
       });
     }
   }
+  return depth != nullptr;
 }
 
 bool EdgeIdBuffer::drawn_whole(const Segment& s) const {
@@ -434,20 +458,26 @@ bool EdgeIdBuffer::drawn_whole(const Segment& s) const {
 }
 
 template <class Image>
-void EdgeIdBuffer::draw_segment_into(const Segment& s, const Image& image) const {
+void EdgeIdBuffer::draw_segment_into(const Segment& s, Cover cover, const Image& image) const {
   const int width = camera_.width, height = camera_.height;
   const int32_t* depth = line_depth_.data();
   const LineWalk line = s.line;  // a local copy, as in clear_line_pixels
   const StepAlong step_along(line);
   const uint16_t code = s.code;
-  const int exempt = s.exempt_owner;
-  if (exempt < 0) {  // no surface's owner is negative: only the depth decides
+  if (cover == Cover::kNone) {  // the test against no surface (depth 0)
+    draw_line(line, width, height, [image, width, code](int x, int y, int32_t w) {
+      if (w + (w >> 7) >= 0) image.set(static_cast<size_t>(y) * width + x, code);
+    });
+    return;
+  }
+  if (cover == Cover::kDepths) {  // only the depth decides
     draw_line(line, width, height, [depth, image, width, step_along, code](int x, int y, int32_t w) {
       if (w + (w >> 7) >= depth[step_along(x, y)]) image.set(static_cast<size_t>(y) * width + x, code);
     });
     return;
   }
   const int16_t* owner = line_owner_.data();
+  const int exempt = s.exempt_owner;
   draw_line(line, width, height, [depth, owner, image, width, step_along, code, exempt](int x, int y, int32_t w) {
     const int k = step_along(x, y);
     if (w + (w >> 7) >= depth[k] || owner[k] == exempt) image.set(static_cast<size_t>(y) * width + x, code);
@@ -458,10 +488,10 @@ void EdgeIdBuffer::draw_segments() {
   // Each line's nearest surfaces, then the line: a line reads only its own, so one line's room
   // serves them all.
   for (const Segment& s : segments_) {
-    find_nearest_surfaces(s);
-    if (bits_ == 4) draw_segment_into(s, NibblePixels<NarrowId>{narrow_ids_.data()});
-    else if (bits_ == 8) draw_segment_into(s, WholePixels<NarrowId>{narrow_ids_.data()});
-    else draw_segment_into(s, WholePixels<uint16_t>{colours_.data()});
+    const Cover cover = find_nearest_surfaces(s);
+    if (bits_ == 4) draw_segment_into(s, cover, NibblePixels<NarrowId>{narrow_ids_.data()});
+    else if (bits_ == 8) draw_segment_into(s, cover, WholePixels<NarrowId>{narrow_ids_.data()});
+    else draw_segment_into(s, cover, WholePixels<uint16_t>{colours_.data()});
   }
 }
 

@@ -99,9 +99,10 @@ echo
 echo "### Edge-ID's render per frame, working tree: its parts"
 echo
 echo "Inclusive instructions per frame of the calls EdgeIdBuffer::render makes (edge_id_buffer.h), and the"
-echo "render's share of Tracker::track: the surfaces under the lines (find_nearest_surfaces), the cylinders'"
-echo "facets projected (collect_cylinder_sides), the faces' triangles, the lines, drawing them and clearing"
-echo "the last frame's."
+echo "render's share of Tracker::track: the surfaces under the lines (find_nearest_surfaces, which"
+echo "draw_segments calls for each line), the cylinders' facets projected (collect_cylinder_sides), the faces'"
+echo "triangles, the lines, drawing them (draw_segments without find_nearest_surfaces) and clearing the last"
+echo "frame's."
 echo
 echo "| sequence | nearest surfaces | cylinder sides | faces | lines | draw | clear | whole render | share of the frame |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -110,11 +111,14 @@ for run in "${runs[@]}"; do
   callgrind_annotate --tree=calling --inclusive=yes "$work/$key.cg" 2>/dev/null | awk -v f="$frames" -v run="$run" '
     /\*  .*edgetrack::Tracker::track\(/ { gsub(",", "", $1); frame = $1 }
     /\*  .*edgetrack::EdgeIdBuffer::render\(/ { gsub(",", "", $1); whole = $1; go = 1; next }
-    go && /^ *$/ { go = 0 }
+    /\*  .*edgetrack::EdgeIdBuffer::draw_segments\(/ { in_draw = 1; next }
+    (go || in_draw) && /^ *$/ { go = 0; in_draw = 0 }
+    # find_nearest_surfaces is a function of its own, called by draw_segments: its inclusive count
+    # is the nearest surfaces, and comes off the draw.
+    in_draw && / >   / && /find_nearest_surfaces/ { c = $1; gsub(",", "", c); part["n"] += c; part["d"] -= c }
     go && / >   / {
       c = $1; gsub(",", "", c)
-      if ($0 ~ /find_nearest_surfaces/) part["n"] += c
-      else if ($0 ~ /collect_cylinder_sides/) part["y"] += c
+      if ($0 ~ /collect_cylinder_sides/) part["y"] += c
       else if ($0 ~ /collect_faces/) part["f"] += c
       else if ($0 ~ /collect_segments/) part["l"] += c
       else if ($0 ~ /draw_segments/) part["d"] += c

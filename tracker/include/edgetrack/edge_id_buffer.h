@@ -98,12 +98,17 @@ class EdgeIdBuffer {
   void collect_faces(const EdgeModel& model, const Se3& camera_from_model);
   /// The cylinders' sides, back facets only where they can show (cylinder_windows.h).
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
-  /// The nearest surface and its owner at every pixel of line `s`, into line_depth_ and line_owner_.
-  void find_nearest_surfaces(const Segment& s);
+  /// What the drawing of a line must test at each pixel: nothing (no surface can hide any of
+  /// it), line_depth_, or line_depth_ and line_owner_.
+  enum class Cover { kNone, kDepths, kDepthsAndOwners };
+  /// The nearest surface and its owner at every pixel of line `s` that one may hide, into
+  /// line_depth_ and line_owner_.
+  Cover find_nearest_surfaces(const Segment& s);
   /// Keeps at each pixel of `s` the nearest w of the occluders whose owner is not `left_out` (-1:
-  /// none left out) and, with kOwners, whose it is in line_owner_.
+  /// none left out) and, with kOwners, whose it is in line_owner_; false when no such occluder
+  /// can hide a pixel of `s` (line_depth_ is then left as it was).
   template <bool kOwners>
-  void nearest_under(const Segment& s, int left_out);
+  bool nearest_under(const Segment& s, int left_out);
   /// Whether every pixel of `s` passes the drawing's depth test against the depths found.
   bool drawn_whole(const Segment& s) const;
   /// Each of this frame's lines, after its nearest surfaces.
@@ -111,7 +116,7 @@ class EdgeIdBuffer {
   /// Line `s`'s pixels where it is nearer than the surface (find_nearest_surfaces), into
   /// `image` (a pixel store of edge_id_buffer.cpp).
   template <class Image>
-  void draw_segment_into(const Segment& s, const Image& image) const;
+  void draw_segment_into(const Segment& s, Cover cover, const Image& image) const;
 
   PinholeCamera camera_;
   PixelRect screen_;
@@ -126,8 +131,8 @@ class EdgeIdBuffer {
   std::vector<NarrowId> narrow_ids_;
   std::vector<uint16_t> colours_;       ///< RGB565 Edge-ID colours, 0 = background (more primitives, or assign)
   /// Per pixel of the line being drawn (in the line's order): the Q20 1/Z of the nearest surface
-  /// there (0: none) and, for a line with an exempt owner, its Occluder::owner; for such a line
-  /// that no other surface hides, those of the others alone (find_nearest_surfaces). Only a
+  /// there (0: none) and, for a line with an exempt owner that another surface hides, its
+  /// Occluder::owner; as find_nearest_surfaces's Cover says which the drawing reads. Only a
   /// line's pixels need them: a few bytes per pixel of the longest line, not six per image pixel.
   std::vector<int32_t> line_depth_;
   std::vector<int16_t> line_owner_;

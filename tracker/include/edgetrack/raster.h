@@ -276,19 +276,50 @@ void narrow_steps(const LineWalk& line, const TriangleWalk<Int>& at, const Int (
   }
 }
 
+}  // namespace raster_detail
+
+/// Narrows [k0, k1] to the steps of `line` whose major coordinate lies in `box`; false when none.
+inline bool steps_in_box(const LineWalk& line, const PixelRect& box, int& k0, int& k1) {
+  const int major_lo = line.x_major ? box.x0 : box.y0, major_hi = line.x_major ? box.x1 : box.y1;
+  int lo = (major_lo - line.first) * line.dir, hi = (major_hi - line.first) * line.dir;
+  if (lo > hi) std::swap(lo, hi);
+  k0 = std::max(k0, lo);
+  k1 = std::min(k1, hi);
+  return k0 <= k1;
+}
+
+/// A bound on how far t's w (as line_in_triangle plots it) rises above the line's own w
+/// (draw_line's) at any of the line's pixels k0..k1: both are affine along the exact line and a
+/// pixel is within half a pixel of it across, so the bound at the two ends, with t's w taken half
+/// a pixel across on its rising side, holds between them; +1 for the lines' rounding down.
+inline int64_t most_above_line(const LineWalk& line, const PixelTriangle& t, int k0, int k1) {
+  const bool xm = line.x_major;
+  const int64_t g_major = xm ? t.gx : t.gy, g_minor = xm ? t.gy : t.gx;
+  const int32_t a_major = xm ? t.a.x : t.a.y, a_minor = xm ? t.a.y : t.a.x;
+  const int64_t half_pixel = 1 << (kSubpixelBits - 1);
+  int64_t most = INT64_MIN;
+  for (const int k : {k0, k1}) {
+    const int64_t major = int64_t(line.first + k * line.dir) * (1 << kSubpixelBits);
+    const int64_t minor_q16 = line.minor + int64_t(k) * line.minor_step;  // Q4 scaled by 2^16
+    const int64_t minor = g_minor >= 0 ? ((minor_q16 + 65535) >> 16) + half_pixel : (minor_q16 >> 16) - half_pixel;
+    const int64_t acc = g_major * (major - a_major) + g_minor * (minor - a_minor);
+    const int64_t w_line = (line.w + int64_t(k) * line.w_step) >> 16;
+    most = std::max(most, t.a.w + (acc >> 8) - w_line);
+  }
+  return most + 1;
+}
+
+namespace raster_detail {
+
 /// line_in_triangle with edge functions in `Int` (wide enough on screen, as for scan_triangle).
 /// The edge functions and w's accumulator follow the line's pixels by additions: a step moves
 /// the major coordinate by one pixel, and the minor one by the pixels its rounding moves.
 template <class Int, class Plot>
 void walk_in_triangle(const LineWalk& line, const PixelTriangle& t, Plot& plot) {
   const bool xm = line.x_major;
-  const int major_lo = xm ? t.box.x0 : t.box.y0, major_hi = xm ? t.box.x1 : t.box.y1;
   const int minor_lo = xm ? t.box.y0 : t.box.x0, minor_hi = xm ? t.box.y1 : t.box.x1;
-  int k0 = (major_lo - line.first) * line.dir, k1 = (major_hi - line.first) * line.dir;
-  if (k0 > k1) std::swap(k0, k1);
-  k0 = std::max(k0, 0);
-  k1 = std::min(k1, line.count - 1);
-  if (k0 > k1) return;
+  int k0 = 0, k1 = line.count - 1;
+  if (!steps_in_box(line, t.box, k0, k1)) return;
   // The minor coordinate is monotonic along the line: its ends over [k0, k1] bound it.
   const int n0 = line.minor_at(k0), n1 = line.minor_at(k1);
   if (std::max(n0, n1) < minor_lo || std::min(n0, n1) > minor_hi) return;
