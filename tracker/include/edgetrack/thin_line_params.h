@@ -31,12 +31,10 @@ struct ThinLineParams {
   /// As a check (when `enabled` is off): the drift check's action.
   DriftAction check = DriftAction::kNone;
   /// The two poses part (largest overlay point distance) by more than this many times the
-  /// second pose's uncertainty (pose_uncertainty.h, a standard deviation): drift.
+  /// second pose's uncertainty (pose_uncertainty.h, a standard deviation): drift. The second
+  /// solve runs only where the matches off the lines would move the pose, to first order, by more
+  /// than this many standard deviations (excluded_pull_sigmas), a bound on that parting.
   real check_sigmas{3};
-  /// The check runs only on frames where the test calls at least this share of the matches
-  /// lines (0 to 1): on the generated sequences without clutter it calls 4-7 % of them lines on
-  /// average and at most 12 % on a frame, with lines beside the edges 14-64 % (docs/ME.md).
-  real check_share{0.15};
   /// Pixels into the darker side (from the match) a line's darkest pixel may lie: its width.
   int dark_px = 2;
   /// Pixels beyond that darkest pixel where the image may come back.
@@ -47,7 +45,7 @@ struct ThinLineParams {
   real return_share{0.2};
 };
 
-/// Sets the setting `name` (enabled, check, check_sigmas, check_share, dark_px, beyond_px, return_share) of `p` to `value`:
+/// Sets the setting `name` (enabled, check, check_sigmas, dark_px, beyond_px, return_share) of `p` to `value`:
 /// an empty string, or what is wrong (no such setting, a value outside its limits).
 std::string set_thin_line_param(ThinLineParams& p, const std::string& name, double value);
 
