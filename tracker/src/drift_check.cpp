@@ -42,12 +42,14 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 namespace {
 
-/// Masks out the matches whose used() hypothesis lies on a thin line; returns how many.
+/// Masks out the matches whose used() hypothesis, or strongest one (where a second solve starts),
+/// lies on a thin line; returns how many.
 int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const ThinLineParams& lines) {
   int count = 0;
   for (EdgeMatch& match : matches) {
     const bool brighter_along_normal = match.contrast < real(0);  // as reject_thin_line_matches reads it
-    match.excluded = on_thin_line(grey, match.used(), match.point.normal, brighter_along_normal, lines);
+    match.excluded = on_thin_line(grey, match.used(), match.point.normal, brighter_along_normal, lines) ||
+                     (match.chosen != 0 && on_thin_line(grey, match.found, match.point.normal, brighter_along_normal, lines));
     count += match.excluded;
   }
   return count;
