@@ -485,12 +485,14 @@ OrderWork order_work(PoseWorkspace& workspace, size_t matches) {
   return {workspace.jacobian.data(), workspace.jacobian.data() + matches};
 }
 
-/// The median of |values| (the distances may be signed), in `work` (room for as many).
-real median_of(const std::vector<real>& signed_values, const OrderWork& work) {
+/// The median of |values| (the distances may be signed) over the matches not excluded, in
+/// `work` (room for as many).
+real median_of(const std::vector<EdgeMatch>& matches, const std::vector<real>& signed_values, const OrderWork& work) {
   using std::fabs;
-  const size_t n = signed_values.size();
   real* const values = work.values;
-  for (size_t i = 0; i < n; ++i) values[i] = fabs(signed_values[i]);
+  size_t n = 0;
+  for (size_t i = 0; i < signed_values.size(); ++i)
+    if (!matches[i].excluded) values[n++] = fabs(signed_values[i]);
   const size_t mid = n / 2;
   // The same number either way: floating point without a branch per comparison (a host CPU
   // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
@@ -537,14 +539,20 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 
 /// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
 /// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
+/// An excluded match weighs 0 and is no outlier.
 int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
                   const OrderWork& work, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(kMadToSigma) * median_of(distances, work);
+  real c = params.tukey_c * real(kMadToSigma) * median_of(matches, distances, work);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
   for (size_t i = 0; i < matches.size(); ++i) {
+    if (matches[i].excluded) {
+      matches[i].outlier = false;
+      weights[i] = real(0);
+      continue;
+    }
     const real u = fabs(distances[i]) * inv_c;
     matches[i].outlier = u >= real(1);
     weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
@@ -579,7 +587,10 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   PoseSolution solution;
   solution.camera_from_model = start;
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
-  if (matches.size() < needed) return solution;
+  size_t excluded = 0;
+  for (const EdgeMatch& m : matches) excluded += m.excluded;
+  const size_t taken = matches.size() - excluded;
+  if (taken < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   PointToLineProblem::prepare_matches(matches, camera, true, workspace);
   const OrderWork order = order_work(workspace, matches.size());
@@ -595,6 +606,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     weights.resize(matches.size());
     tukey_weights(matches, distances, params, order, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
+  } else if (excluded > 0) {
+    weights.resize(matches.size());
+    for (size_t i = 0; i < matches.size(); ++i) weights[i] = matches[i].excluded ? real(0) : real(1);
   }
   const SolveResult first = solve_once(matches, camera, start, params, params.max_evaluations, true, workspace);
   add_counts(first, solution);
@@ -603,7 +617,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(kMadToSigma) * median_of(distances, order);
+    solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
     return solution;
   }
 
@@ -617,7 +631,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     if (!moved && !rechosen && distances == workspace.before_round) break;
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
     solution.outliers = tukey_weights(matches, distances, params, order, weights);
-    if (matches.size() - static_cast<size_t>(solution.outliers) < needed) break;
+    if (taken - static_cast<size_t>(solution.outliers) < needed) break;
     workspace.before_round = distances;
     const SolveResult robust_solve =
         solve_once(matches, camera, solution.camera_from_model, params, params.robust_evaluations, false, workspace);
@@ -633,7 +647,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(kMadToSigma) * median_of(distances, order);
+  solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
   return solution;
 }
 

@@ -128,50 +128,97 @@ real whitened_square(const real l[kDof][kDof], const real inv_diagonal[kDof], co
   return sum;
 }
 
-}  // namespace
-
-real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
-                         const Se3& pose, const real& sigma, const real& tukey_c, const real& tukey_floor) {
+/// Sums the lower triangle of the information matrix over `matches` at `pose` (each row of
+/// W^(1/2) J with Tukey's weights cut at `cut` px; excluded matches left out), and with `pull`
+/// the gradient J^T W delta of their squared distances there, delta to each match's used()
+/// hypothesis (outliers left out), or with `strongest` to its `found` (outliers counted: a solve
+/// from `pose` as its start). Turns in radians.
+void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& pose,
+                     const Vec3& centre_mm, const real& cut, real (&information)[kDof][kDof], real* pull,
+                     bool strongest = false) {
   using std::fabs;
-  using std::sqrt;
-  const real unconstrained = real(kUnconstrainedPx);
   const bool through_lens = camera.distorted();
-  const Perturbation perturbation = perturbation_of(model);
-  const real inv_radius = real(1) / perturbation.radius_mm;
-  const Vec3 centre_mm = to_millimetres(pose * perturbation.centre);
-  real cut = tukey_c * sigma;
-  if (cut < tukey_floor) cut = tukey_floor;
   const real inv_cut = real(1) / cut;
-  real information[kDof][kDof] = {};
   InformationSum sum(information);
   real g[kDof];
   for (const EdgeMatch& match : matches) {
-    if (match.outlier) continue;
+    if (match.excluded || (match.outlier && !strongest)) continue;
     const Vec3 in_camera = to_millimetres(pose * match.point.point_in_model);
     if (in_camera.z <= real(0)) continue;
     const real inv_z = real(1) / in_camera.z;
     const Vec2 pixel = through_lens
                            ? camera.project_through_lens(in_camera)
                            : Vec2{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
-    const real u = fabs(dot(match.point.normal, pixel - match.used())) * inv_cut;
+    const real delta = dot(match.point.normal, pixel - (strongest ? match.found : match.used()));
+    const real u = fabs(delta) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square
     pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
     for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
     sum.add(g);
+    if (pull) {
+      const real weighted = root_weight * delta;
+      for (int k = 0; k < kDof; ++k) pull[k] += weighted * g[k];
+    }
   }
   sum.flush();
-  scale_turns(information, inv_radius);
+}
+
+/// Cholesky of the information matrix (turns already scaled) in place, and 1 / its diagonal:
+/// false where a direction is one the matches do not see.
+bool factor_information(real (&information)[kDof][kDof], real (&inv_diagonal)[kDof]) {
   real largest(0);
   for (int k = 0; k < kDof; ++k)
     if (information[k][k] > largest) largest = information[k][k];
   // A pivot below a millionth of the largest is a direction the matches do not see.
-  if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return unconstrained;
-  real inv_diagonal[kDof];
+  if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return false;
   for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
-  // A whitened component beyond this is a direction no match sees; it also keeps the squares
-  // within S40.23's range.
-  const real cap = real(1e4);
+  return true;
+}
+
+/// A whitened component beyond this is a direction no match sees; it also keeps the squares
+/// within S40.23's range.
+const real kWhitenedCap = real(1e4);
+
+/// The information matrix of matches at a pose, factored, in the perturbation's coordinates.
+struct FactoredInformation {
+  Perturbation perturbation;
+  real inv_radius{1};
+  Vec3 centre_mm;  ///< the model's centre in the camera frame at the pose, mm
+  real l[kDof][kDof] = {};  ///< L of L L^T, turns scaled by the radius
+  real inv_diagonal[kDof] = {};
+};
+
+/// `matches`' information at `pose` (sum_information's, with `pull` and `strongest` as there;
+/// `pull` then scaled as the turns are): false where a direction is one they do not see.
+bool factor_at(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
+               const Se3& pose, const real& cut, real* pull, bool strongest, FactoredInformation& f) {
+  f.perturbation = perturbation_of(model);
+  f.inv_radius = real(1) / f.perturbation.radius_mm;
+  f.centre_mm = to_millimetres(pose * f.perturbation.centre);
+  sum_information(matches, camera, pose, f.centre_mm, cut, f.l, pull, strongest);
+  scale_turns(f.l, f.inv_radius);
+  if (pull)
+    for (int k = 3; k < kDof; ++k) pull[k] = f.inv_radius * pull[k];
+  return factor_information(f.l, f.inv_diagonal);
+}
+
+}  // namespace
+
+real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
+                         const Se3& pose, const real& sigma, const real& tukey_c, const real& tukey_floor) {
+  using std::sqrt;
+  const real unconstrained = real(kUnconstrainedPx);
+  real cut = tukey_c * sigma;
+  if (cut < tukey_floor) cut = tukey_floor;
+  FactoredInformation f;
+  if (!factor_at(matches, model, camera, pose, cut, nullptr, false, f)) return unconstrained;
+  const real(&information)[kDof][kDof] = f.l;
+  const real(&inv_diagonal)[kDof] = f.inv_diagonal;
+  const real& inv_radius = f.inv_radius;
+  const Vec3& centre_mm = f.centre_mm;
+  const real& cap = kWhitenedCap;
+  real g[kDof];
   real worst(0);  // the largest |L^-1 g_u|^2 + |L^-1 g_v|^2
   bool off_scale = false;
   for_each_overlay_point(model, [&](const Vec3& v) {
@@ -194,6 +241,39 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   if (off_scale) return unconstrained;
   const real deviation = sigma * sqrt(worst);
   return deviation > unconstrained ? unconstrained : deviation;
+}
+
+real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
+                          const Se3& start, const Se3& solved, const real& sigma, const real& cut) {
+  using std::sqrt;
+  const real unconstrained = real(kUnconstrainedPx);
+  real pull[kDof] = {};
+  FactoredInformation f;
+  if (!factor_at(matches, model, camera, start, cut, pull, true, f)) return unconstrained;
+  const real(&information)[kDof][kDof] = f.l;
+  const Perturbation& perturbation = f.perturbation;
+  // The first solve's move from the start in the same coordinates: the model centre's
+  // displacement (mm) and the turn about it times the radius.
+  const Vec3 moved = to_millimetres(solved * perturbation.centre) - f.centre_mm;
+  const Vec3 turn = perturbation.radius_mm * rotation_log(solved.rotation() * start.rotation().transpose());
+  const real first[kDof] = {moved.x, moved.y, moved.z, turn.x, turn.y, turn.z};
+  // |L^T (Delta_2 - Delta_1)| with L L^T Delta_2 = -g: |L^-1 g + L^T Delta_1|.
+  real z[kDof];
+  real square(0);
+  for (int k = 0; k < kDof; ++k) {
+    real s = pull[k];
+    for (int j = 0; j < k; ++j) s -= information[k][j] * z[j];
+    z[k] = s * f.inv_diagonal[k];
+  }
+  for (int j = 0; j < kDof; ++j) {
+    real y(0);
+    for (int k = j; k < kDof; ++k) y += information[k][j] * first[k];
+    const real component = z[j] + y;
+    if (!(component < kWhitenedCap && component > -kWhitenedCap)) return unconstrained;
+    square += component * component;
+  }
+  const real sigmas = sqrt(square) / sigma;
+  return sigmas > unconstrained ? unconstrained : sigmas;
 }
 
 }  // namespace edgetrack

@@ -46,9 +46,6 @@ std::string set_thin_line_param(ThinLineParams& p, const std::string& name, doub
   } else if (name == "check_sigmas") {
     if (!(value > 0 && value <= 100)) return "check_sigmas must be above 0 and at most 100";
     p.check_sigmas = real(value);  // set-up time conversion
-  } else if (name == "check_share") {
-    if (!(value >= 0 && value <= 1)) return "check_share must be from 0 to 1";
-    p.check_share = real(value);  // set-up time conversion
   } else if (name == "dark_px" || name == "beyond_px") {
     if (!whole || value < 1 || value > 8) return name + " must be a whole number of pixels from 1 to 8";
     (name == "dark_px" ? p.dark_px : p.beyond_px) = static_cast<int>(value);
@@ -56,7 +53,7 @@ std::string set_thin_line_param(ThinLineParams& p, const std::string& name, doub
     if (!(value > 0 && value <= 1)) return "return_share must be above 0 and at most 1";
     p.return_share = real(value);  // set-up time conversion
   } else {
-    return "'" + name + "' is not a thin-line setting (enabled, check, check_sigmas, check_share, dark_px, beyond_px, return_share)";
+    return "'" + name + "' is not a thin-line setting (enabled, check, check_sigmas, dark_px, beyond_px, return_share)";
   }
   return "";
 }

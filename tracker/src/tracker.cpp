@@ -127,7 +127,6 @@ class Tracker::State {
   ProjectedPoints solved_pixels_;  ///< through a lens, where the solved pose projects the visible points (judge)
   Se3 solved_pixels_pose_;  ///< the pose solved_pixels_ were projected with
   ProjectedPoints remembered_pixels_;  ///< solved_pixels_ per match, for the contrast memory (conclude)
-  DriftCheck drift_check_;  ///< the second solve without the matches on thin lines (drift_check.h)
 
  private:
   /// The grey step: converts what the moving edges will read (read_boxes_) and returns the image
@@ -161,8 +160,8 @@ class Tracker::State {
   void resolve_at_own_velocity(const Se3& start, const PoseParams& pose_params, PoseSolution& solution);
   /// The drift check (drift_check.h) of the frame's solution: taken or reported as its setting says.
   /// Returns whether the frame is to be reported drifted.
-  bool check_drift(const vpImage<unsigned char>& grey, const Se3& start, const PoseParams& pose_params,
-                   PoseSolution& solution);
+  bool check_for_drift(const vpImage<unsigned char>& grey, const Se3& start, const PoseParams& pose_params,
+                       PoseSolution& solution);
   /// The motion model and the contrast memory take the frame's result; the next frame's start.
   void conclude(FrameResult& result);
   /// Through a lens, solved_pixels_ per match when judge projected the matches' points with
@@ -274,7 +273,7 @@ TrackerMemory Tracker::memory() const {
                      capacity_bytes(s.solved_pixels_.pixel) + capacity_bytes(s.solved_pixels_.in_front) +
                      capacity_bytes(s.remembered_pixels_.pixel) + capacity_bytes(s.remembered_pixels_.in_front);
   m.matches = capacity_bytes(s.matches_);
-  m.pose_workspace = s.pose_workspace_.heap_bytes() + s.row_times_.heap_bytes() + s.drift_check_.heap_bytes();
+  m.pose_workspace = s.pose_workspace_.heap_bytes() + s.row_times_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
   return m;
 }
@@ -306,7 +305,6 @@ void Tracker::State::reserve_for_limits() {
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
   contrast_memory_.reserve(points, static_cast<size_t>(limits_.primitives));
-  if (drift_check_runs(params_.thin_lines)) drift_check_.reserve(points);
   if (camera_.distorted()) {
     for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
       projected->pixel.reserve(points);
@@ -338,8 +336,6 @@ void Tracker::State::set_params(const TrackerParams& params) {
   motion_.set_params(params.motion);
   // A rolling shutter switched on after create takes its room now, not in a frame.
   if (limits_.stated() && params.readout != real(0)) row_times_.reserve(static_cast<size_t>(limits_.control_points));
-  if (limits_.stated() && drift_check_runs(params.thin_lines))
-    drift_check_.reserve(static_cast<size_t>(limits_.control_points));
 }
 
 const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
@@ -458,7 +454,7 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   pose_params.weigh_at_start = !guessing || (start_is_guess_ && !started_ && !motion_.lost_last_frame());
   result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   resolve_at_own_velocity(start, pose_params, result.pose);
-  const bool drifted = check_drift(grey, start, pose_params, result.pose);
+  const bool drifted = check_for_drift(grey, start, pose_params, result.pose);
   end(Step::kPose);
   clock.lap(Step::kPose, result);
   result.points_sampled = static_cast<int>(visible_.size());
@@ -481,22 +477,22 @@ void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams&
   if (second.solved) solution = second;  // else the first solve's pose stands
 }
 
-bool Tracker::State::check_drift(const vpImage<unsigned char>& grey, const Se3& start, const PoseParams& pose_params,
-                                 PoseSolution& solution) {
+bool Tracker::State::check_for_drift(const vpImage<unsigned char>& grey, const Se3& start, const PoseParams& pose_params,
+                                     PoseSolution& solution) {
   const ThinLineParams& lines = params_.thin_lines;
   if (!drift_check_runs(lines) || !solution.solved) return false;
   // Drift is a trusted track's: a detected start not yet confirmed, or a prediction after a
   // loss, is the status rule's to confirm or refute (a correction could keep a wrong one alive).
   if (status_statistics_.phase() == StatusStatistics::Phase::kUnconfirmed || motion_.lost_last_frame()) return false;
-  const DriftVerdict verdict = drift_check_.check(grey, matches_, solution.camera_from_model, model_, camera_, start,
-                                                  pose_params, lines, params_.status.edge_location_px, pose_workspace_);
+  const DriftVerdict verdict = check_drift(grey, matches_, solution, model_, camera_, start, pose_params, lines,
+                                           params_.status.edge_location_px, pose_workspace_);
   if (!verdict.drifted) return false;
   if (lines.check == DriftAction::kReport) return true;
   // Corrected: the second solve's pose is the frame's; its matches stay all the moving edges
   // found, counted at that pose.
-  const PoseSolution& second = drift_check_.solution();
-  const int evaluations = solution.evaluations + second.evaluations, iterations = solution.iterations + second.iterations;
-  solution = second;
+  const int evaluations = solution.evaluations + verdict.second.evaluations;
+  const int iterations = solution.iterations + verdict.second.iterations;
+  solution = verdict.second;
   solution.evaluations = evaluations;
   solution.iterations = iterations;
   solution.outliers = mark_outliers_at(matches_, camera_, solution.camera_from_model, solution.residual_scale, pose_params);

@@ -143,10 +143,8 @@ std::optional<SettingProblem> check_tracker_params(const TrackerParams& params) 
   if (!(lines.return_share > real(0) && lines.return_share <= real(1)))
     return SettingProblem{"", "the thin-line test's return_share must be above 0 and at most 1"};
   if (static_cast<int>(lines.check) < 0 || static_cast<int>(lines.check) > 2 ||
-      !(lines.check_sigmas > real(0) && lines.check_sigmas <= real(100)) ||
-      !(lines.check_share >= real(0) && lines.check_share <= real(1)))
-    return SettingProblem{"", "the drift check must be 0, 1 or 2, its check_sigmas above 0 and at most 100 and its "
-                              "check_share from 0 to 1"};
+      !(lines.check_sigmas > real(0) && lines.check_sigmas <= real(100)))
+    return SettingProblem{"", "the drift check must be 0, 1 or 2 and its check_sigmas above 0 and at most 100"};
   return std::nullopt;
 }
 

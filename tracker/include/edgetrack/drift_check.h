@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Drift in clutter (issue #27): the thin-line test (thin_lines.h) used as a check rather than a
-/// filter. The frame is solved as ever; then its matches without those on thin dark lines are
-/// solved again from the same start. Where the two poses agree within what the frame's own
-/// noise leaves the pose uncertain by, the lines did not pull the pose and the first solve
-/// stands, bit for bit; where they part by more, the matches on the lines moved the pose: the
-/// tracker takes the second pose or reports the frame uncertain (ThinLineParams::check). Only
-/// frames where the test calls at least ThinLineParams::check_share of the matches lines are
-/// checked.
+/// filter. The frame is solved as ever; then the matches whose hypothesis the solve used lies on
+/// a thin dark line are masked out (EdgeMatch::excluded) and what the rest alone would do to the
+/// pose is bounded to first order (excluded_pull_sigmas): where that move is within
+/// ThinLineParams::check_sigmas of the pose's uncertainty, the lines did not pull the pose, no
+/// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
+/// are solved again from the same start; where the two poses' overlays part by more than the
+/// check allows, the lines moved the pose: the tracker takes the second pose or reports the
+/// frame uncertain (ThinLineParams::check).
 #pragma once
 
 #include <vector>
@@ -25,12 +26,17 @@ inline bool drift_check_runs(const ThinLineParams& lines) { return !lines.enable
 
 /// What the check found on a frame.
 struct DriftVerdict {
-  bool checked = false;  ///< the test called enough matches lines and the second pose was solved
+  int lines = 0;  ///< matches whose used hypothesis the test called a line
+  /// How far the other matches alone would move the pose, to first order, in standard
+  /// deviations (excluded_pull_sigmas); 0 when no match was called a line.
+  real pull_sigmas{0};
+  bool checked = false;  ///< pull_sigmas above check_sigmas, and the second pose was solved
   /// px, the largest distance between the two poses' projections of the model's overlay points
   /// (vertices, cylinder axis ends, circle centres)
   real parted_px{0};
   real allowed_px{0};    ///< px, ThinLineParams::check_sigmas times the second pose's uncertainty
   bool drifted = false;  ///< parted_px above allowed_px
+  PoseSolution second;   ///< the second pose, when checked
 };
 
 /// The largest distance between the projections of the model's overlay points with `a` and with
@@ -44,27 +50,15 @@ real largest_overlay_distance_px(const EdgeModel& model, const PinholeCamera& ca
 int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& pose, const real& sigma,
                      const PoseParams& pose_params);
 
-/// The second solve's matches and pose, kept between frames so that a frame allocates nothing.
-class DriftCheck {
- public:
-  /// Room for `matches` matches: check then allocates nothing for up to that many.
-  void reserve(size_t matches) { matches_.reserve(matches); }
-  size_t heap_bytes() const { return matches_.capacity() * sizeof(EdgeMatch); }
-
-  /// Solves `matches` less those on thin lines from `start` (pose_params, in `workspace`) and
-  /// compares with `solved`; the second pose's uncertainty is taken with a residual scale of at
-  /// least `sigma_floor`.
-  DriftVerdict check(const vpImage<unsigned char>& grey, const std::vector<EdgeMatch>& matches, const Se3& solved,
-                     const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
-                     const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
-                     PoseWorkspace& workspace);
-
-  /// The last check's second pose.
-  const PoseSolution& solution() const { return solution_; }
-
- private:
-  std::vector<EdgeMatch> matches_;
-  PoseSolution solution_;
-};
+/// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
+/// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
+/// pose by more than `lines.check_sigmas` standard deviations (the residual scale taken at least
+/// `sigma_floor`), they are solved again from `start` (pose_params, in `workspace`) and the two
+/// poses compared. `matches` come back as they came, the first solve's marks included; nothing
+/// is allocated.
+DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
+                         const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
+                         const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
+                         PoseWorkspace& workspace);
 
 }  // namespace edgetrack
