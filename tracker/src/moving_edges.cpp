@@ -76,9 +76,13 @@ Vec2 refined_edge_point(const MaskResponse& response, int i, int j, int conv, co
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
   // The 3 x 3 pixels around the site's in one batch (image rows, then columns; the centre is
   // the site's own response, conv), in axis order: block[3 (v - v_site + 1) + u - u_site + 1].
-  int image_block[9], block[9];
+  int image_block[9], transposed[9];
   response.at_block_3x3(i, j, conv, image_block);
-  for (int k = 0; k < 9; ++k) block[k] = along_x ? image_block[k] : image_block[3 * (k % 3) + k / 3];
+  const int* block = image_block;
+  if (!along_x) {
+    for (int k = 0; k < 9; ++k) transposed[k] = image_block[3 * (k % 3) + k / 3];
+    block = transposed;
+  }
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
   for (int k = 0; k < 3; ++k) {
@@ -173,6 +177,21 @@ struct SiteLimits {
 };
 
 #if defined(__SSE2__)
+/// PathWalk's pixels k0 .. k0 + n - 1 of the path (k0 = -range first) into i[] and j[], two at a
+/// time: each lane the scalar walk's product and sum, truncated alike. Writes i[n] and j[n] when n
+/// is odd. Floating point only (fixed point steps, PathWalk).
+void path_pixels_in_pairs(const ControlPoint& point, int k0, int n, int* i, int* j) {
+  static_assert(std::is_same<real, double>::value, "two doubles per SSE2 register");
+  const __m128d y = _mm_set1_pd(point.pixel.y), x = _mm_set1_pd(point.pixel.x);
+  const __m128d ny = _mm_set1_pd(point.normal.y), nx = _mm_set1_pd(point.normal.x);
+  const __m128d two = _mm_set1_pd(2.0);
+  __m128d k = _mm_set_pd(double(k0 + 1), double(k0));  // small integers: exact steps of 2
+  for (int t = 0; t < n; t += 2, k = _mm_add_pd(k, two)) {
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(i + t), _mm_cvttpd_epi32(_mm_add_pd(y, _mm_mul_pd(k, ny))));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(j + t), _mm_cvttpd_epi32(_mm_add_pd(x, _mm_mul_pd(k, nx))));
+  }
+}
+
 /// for_each_path_peak's vector path: the responses a chunk of the path at a time (MaskResponse
 /// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
 /// branch-free.
@@ -185,14 +204,33 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
   // (likelihood -1 before the path); the tests reach a vector past the chunk.
   constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
   static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
-  int likelihood[kSlots], conv[kSlots], path_i[kSlots], path_j[kSlots];
+  static_assert(kChunk <= MaskResponse::kMaxPathEach && kLead + kChunk + 3 <= kSlots, "a chunk in one path_each_5_avx2");
+  int likelihood[kSlots], conv[kSlots] = {}, path_i[kSlots], path_j[kSlots];
   for (int t = 0; t < kSlots; ++t) likelihood[t] = -1;
   const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
   for (int start = 0; start < length; start += kChunk) {
     const int n = length - start < kChunk ? length - start : kChunk;
-    for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
-    response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
-    for (int k = 0; k < n; ++k) likelihood[kLead + k] = conv[kLead + k] < 0 ? -2 * conv[kLead + k] : 2 * conv[kLead + k];
+    if constexpr (std::is_same<real, double>::value) {
+      if (response.runs_avx2()) {
+        if (!response.path_each_5_avx2(point.pixel.y, point.pixel.x, point.normal.y, point.normal.x, start - range, n,
+                                       path_i + kLead, path_j + kLead, conv + kLead))
+          response.at_each(path_i + kLead, path_j + kLead, n, conv + kLead);
+      } else {
+        path_pixels_in_pairs(point, start - range, n, path_i + kLead, path_j + kLead);
+        response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
+      }
+    } else {
+      for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
+      response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
+    }
+    // |2 conv|, four at a time; the lanes past the chunk's last pixel are overwritten or masked
+    // out below.
+    for (int k = 0; k < n; k += 4) {
+      const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(conv + kLead + k));
+      const __m128i sign = _mm_srai_epi32(c, 31);
+      const __m128i magnitude = _mm_sub_epi32(_mm_xor_si128(c, sign), sign);
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(likelihood + kLead + k), _mm_add_epi32(magnitude, magnitude));
+    }
     // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
     // before the path), and at the path's far end its last pixel, with no pixel after it.
     const bool far_end = start + n == length;
