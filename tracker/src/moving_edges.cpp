@@ -76,13 +76,9 @@ Vec2 refined_edge_point(const MaskResponse& response, int i, int j, int conv, co
   static_assert(kRefinementReachAcross == 1, "three lines: the site's and one either side");
   // The 3 x 3 pixels around the site's in one batch (image rows, then columns; the centre is
   // the site's own response, conv), in axis order: block[3 (v - v_site + 1) + u - u_site + 1].
-  int image_block[9], transposed[9];
+  int image_block[9], block[9];
   response.at_block_3x3(i, j, conv, image_block);
-  const int* block = image_block;
-  if (!along_x) {
-    for (int k = 0; k < 9; ++k) transposed[k] = image_block[3 * (k % 3) + k / 3];
-    block = transposed;
-  }
+  for (int k = 0; k < 9; ++k) block[k] = along_x ? image_block[k] : image_block[3 * (k % 3) + k / 3];
   real ridge[3], side[3];  // side: (edge point - control point) . edge direction, 0 on the normal line
   int peak[3];
   for (int k = 0; k < 3; ++k) {
