@@ -201,7 +201,7 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
   constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
   static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
   static_assert(kChunk <= MaskResponse::kMaxPathEach && kLead + kChunk + 3 <= kSlots, "a chunk in one path_each_5_avx2");
-  int likelihood[kSlots], conv[kSlots] = {}, path_i[kSlots], path_j[kSlots];
+  int likelihood[kSlots], conv[kSlots], path_i[kSlots], path_j[kSlots];
   for (int t = 0; t < kSlots; ++t) likelihood[t] = -1;
   const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
   for (int start = 0; start < length; start += kChunk) {
@@ -219,8 +219,9 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
       for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
       response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
     }
-    // |2 conv|, four at a time; the lanes past the chunk's last pixel are overwritten or masked
-    // out below.
+    // |2 conv|, four at a time; the lanes past the chunk's last pixel (their conv set, not read)
+    // are overwritten or masked out below.
+    for (int k = n; k % 4 != 0; ++k) conv[kLead + k] = 0;
     for (int k = 0; k < n; k += 4) {
       const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(conv + kLead + k));
       const __m128i sign = _mm_srai_epi32(c, 31);
@@ -247,6 +248,7 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
       const int t = __builtin_ctz(candidates);
       visit(conv[t], path_i[t], path_j[t]);
     }
+    if (far_end) break;
     for (int t = 0; t < kLead; ++t) {
       likelihood[t] = likelihood[n + t];
       conv[t] = conv[n + t];
