@@ -173,6 +173,41 @@ struct SiteLimits {
 };
 
 #if defined(__SSE2__)
+/// PathWalk's pixels k0 .. k0 + n - 1 of the path (k0 = -range first) into i[] and j[], two at a
+/// time: each lane the scalar walk's product and sum, truncated alike. Writes i[n] and j[n] when n
+/// is odd.
+void path_pixels_in_pairs(double y, double x, double dy, double dx, int k0, int n, int* i, int* j) {
+  const __m128d start_y = _mm_set1_pd(y), start_x = _mm_set1_pd(x);
+  const __m128d step_y = _mm_set1_pd(dy), step_x = _mm_set1_pd(dx);
+  const __m128d two = _mm_set1_pd(2.0);
+  __m128d k = _mm_set_pd(double(k0 + 1), double(k0));  // small integers: exact steps of 2
+  for (int t = 0; t < n; t += 2, k = _mm_add_pd(k, two)) {
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(i + t), _mm_cvttpd_epi32(_mm_add_pd(start_y, _mm_mul_pd(k, step_y))));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(j + t), _mm_cvttpd_epi32(_mm_add_pd(start_x, _mm_mul_pd(k, step_x))));
+  }
+}
+
+/// A chunk of a site's path in double builds, the walk's pixels (i[], j[], rounded up to a
+/// multiple of 4) and their responses (conv[], likewise) computed in vectors: in one AVX2 pass
+/// where the mask runs it, else the pixels two at a time and the responses in one batch. True.
+[[maybe_unused]] bool path_chunk_in_vectors(const MaskResponse& response, const double& y, const double& x,
+                                            const double& dy, const double& dx, int k0, int n, int* i, int* j, int* conv) {
+  if (response.runs_avx2()) {
+    if (!response.path_each_5_avx2(y, x, dy, dx, k0, n, i, j, conv)) response.at_each(i, j, n, conv);
+    return true;
+  }
+  path_pixels_in_pairs(y, x, dy, dx, k0, n, i, j);
+  response.at_each_in_box(i, j, n, conv);
+  return true;
+}
+
+/// The other reals: false, the caller steps (PathWalk).
+template <class Real>
+bool path_chunk_in_vectors(const MaskResponse&, const Real&, const Real&, const Real&, const Real&, int, int, int*, int*,
+                           int*) {
+  return false;
+}
+
 /// for_each_path_peak's vector path: the responses a chunk of the path at a time (MaskResponse
 /// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
 /// branch-free.
@@ -185,14 +220,26 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
   // (likelihood -1 before the path); the tests reach a vector past the chunk.
   constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
   static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
+  static_assert(kChunk <= MaskResponse::kMaxPathEach && kLead + kChunk + 3 <= kSlots, "a chunk in one path_each_5_avx2");
   int likelihood[kSlots], conv[kSlots], path_i[kSlots], path_j[kSlots];
   for (int t = 0; t < kSlots; ++t) likelihood[t] = -1;
   const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
   for (int start = 0; start < length; start += kChunk) {
     const int n = length - start < kChunk ? length - start : kChunk;
-    for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
-    response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
-    for (int k = 0; k < n; ++k) likelihood[kLead + k] = conv[kLead + k] < 0 ? -2 * conv[kLead + k] : 2 * conv[kLead + k];
+    if (!path_chunk_in_vectors(response, point.pixel.y, point.pixel.x, point.normal.y, point.normal.x, start - range, n,
+                               path_i + kLead, path_j + kLead, conv + kLead)) {
+      for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
+      response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
+    }
+    // |2 conv|, four at a time; the lanes past the chunk's last pixel (their conv set, not read)
+    // are overwritten or masked out below.
+    for (int k = n; k % 4 != 0; ++k) conv[kLead + k] = 0;
+    for (int k = 0; k < n; k += 4) {
+      const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(conv + kLead + k));
+      const __m128i sign = _mm_srai_epi32(c, 31);
+      const __m128i magnitude = _mm_sub_epi32(_mm_xor_si128(c, sign), sign);
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(likelihood + kLead + k), _mm_add_epi32(magnitude, magnitude));
+    }
     // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
     // before the path), and at the path's far end its last pixel, with no pixel after it.
     const bool far_end = start + n == length;
@@ -213,6 +260,7 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
       const int t = __builtin_ctz(candidates);
       visit(conv[t], path_i[t], path_j[t]);
     }
+    if (far_end) break;
     for (int t = 0; t < kLead; ++t) {
       likelihood[t] = likelihood[n + t];
       conv[t] = conv[n + t];

@@ -16,9 +16,13 @@ inline namespace edgetrack_ports {
   padded_block_5(padded, top_left, stride, sign, out);
 }
 
-[[gnu::target("avx2")]] void MaskResponse::padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap,
-                                                             std::ptrdiff_t stride, int half, int sign, const int* i,
-                                                             const int* j, int n, int* out) {
+namespace {
+
+/// The padded 5 x 5 responses, times `sign`, of the windows whose top-left pixels are at
+/// bitmap + offset[k], k < n, into out[k]: two windows per 256-bit multiply-add and four windows'
+/// lanes summed together; every window lies inside.
+[[gnu::target("avx2")]] void padded_windows_5_avx2(const int16_t* padded, const unsigned char* bitmap,
+                                                   std::ptrdiff_t stride, int sign, const int* offset, int n, int* out) {
   static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
   // Each mask row in both 128-bit halves: one half meets one window's pixels, the other another's.
   __m256i weights[5];
@@ -27,17 +31,17 @@ inline namespace edgetrack_ports {
   int k = 0;
   for (; k + 4 <= n; k += 4) {
     const unsigned char* window[4];
-    for (int w = 0; w < 4; ++w) window[w] = bitmap + (i[k + w] - half) * stride + (j[k + w] - half);
+    for (int w = 0; w < 4; ++w) window[w] = bitmap + offset[k + w];
     // Windows 0 and 1 side by side, 2 and 3 side by side: the 8 pixels of each row, widened.
     __m256i first = _mm256_setzero_si256(), second = _mm256_setzero_si256();
     for (int a = 0; a < 5; ++a) {
-      const std::ptrdiff_t offset = a * stride;
+      const std::ptrdiff_t row = a * stride;
       const __m128i pair_01 = _mm_castpd_si128(_mm_loadh_pd(
-          _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(window[0] + offset))),
-          reinterpret_cast<const double*>(window[1] + offset)));
+          _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(window[0] + row))),
+          reinterpret_cast<const double*>(window[1] + row)));
       const __m128i pair_23 = _mm_castpd_si128(_mm_loadh_pd(
-          _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(window[2] + offset))),
-          reinterpret_cast<const double*>(window[3] + offset)));
+          _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(window[2] + row))),
+          reinterpret_cast<const double*>(window[3] + row)));
       first = _mm256_add_epi32(first, _mm256_madd_epi16(_mm256_cvtepu8_epi16(pair_01), weights[a]));
       second = _mm256_add_epi32(second, _mm256_madd_epi16(_mm256_cvtepu8_epi16(pair_23), weights[a]));
     }
@@ -48,11 +52,71 @@ inline namespace edgetrack_ports {
     if (sign < 0) in_order = _mm_sub_epi32(_mm_setzero_si128(), in_order);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), in_order);
   }
-  if (k < n) {
-    __m128i rows[5];
-    for (int a = 0; a < 5; ++a) rows[a] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded + a * 8));
-    for (; k < n; ++k) out[k] = sign * padded_sum_5(rows, bitmap + (i[k] - half) * stride + (j[k] - half), stride);
+  for (; k < n; ++k) {
+    // The last windows one by one: the 8 pixels of each row against the mask row, summed.
+    __m128i total = _mm_setzero_si128();
+    for (int a = 0; a < 5; ++a) {
+      const __m128i pixels = _mm_cvtepu8_epi16(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bitmap + offset[k] + a * stride)));
+      total = _mm_add_epi32(total, _mm_madd_epi16(pixels, _mm256_castsi256_si128(weights[a])));
+    }
+    total = _mm_hadd_epi32(total, total);
+    total = _mm_hadd_epi32(total, total);
+    out[k] = sign * _mm_cvtsi128_si32(total);
   }
+}
+
+/// offset[k] = (i[k] - half) stride + (j[k] - half) for k < n, four at a time.
+[[gnu::target("avx2")]] void window_offsets_avx2(const int* i, const int* j, int n, int half, std::ptrdiff_t stride,
+                                                 int* offset) {
+  const __m128i halves = _mm_set1_epi32(half), rows = _mm_set1_epi32(static_cast<int>(stride));
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const __m128i top = _mm_sub_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(i + k)), halves);
+    const __m128i left = _mm_sub_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(j + k)), halves);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(offset + k), _mm_add_epi32(_mm_mullo_epi32(top, rows), left));
+  }
+  for (; k < n; ++k) offset[k] = (i[k] - half) * static_cast<int>(stride) + (j[k] - half);
+}
+
+}  // namespace
+
+[[gnu::target("avx2")]] void MaskResponse::padded_each_5_avx2(const int16_t* padded, const unsigned char* bitmap,
+                                                             std::ptrdiff_t stride, int half, int sign, const int* i,
+                                                             const int* j, int n, int* out) {
+  constexpr int kBatch = 32;
+  int offset[kBatch];
+  for (int start = 0; start < n; start += kBatch) {
+    const int count = n - start < kBatch ? n - start : kBatch;
+    window_offsets_avx2(i + start, j + start, count, half, stride, offset);
+    padded_windows_5_avx2(padded, bitmap, stride, sign, offset, count, out + start);
+  }
+}
+
+[[gnu::target("avx2")]] bool MaskResponse::path_each_5_avx2(double y, double x, double dy, double dx, int k0, int n,
+                                                           int* i, int* j, int* out) const {
+  if (n <= 0 || n > kMaxPathEach) return false;
+  const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(image_.getWidth());
+  const __m256d start_y = _mm256_set1_pd(y), start_x = _mm256_set1_pd(x);
+  const __m256d step_y = _mm256_set1_pd(dy), step_x = _mm256_set1_pd(dx), four = _mm256_set1_pd(4.0);
+  const __m128i halves = _mm_set1_epi32(half_), rows = _mm_set1_epi32(static_cast<int>(stride));
+  int offset[kMaxPathEach];
+  // k0 + t, small integers: exact in double, and so are their steps of 4.
+  __m256d k = _mm256_setr_pd(double(k0), double(k0 + 1), double(k0 + 2), double(k0 + 3));
+  for (int t = 0; t < n; t += 4, k = _mm256_add_pd(k, four)) {
+    // Each lane the scalar walk's product, then sum, truncated towards zero.
+    const __m128i row = _mm256_cvttpd_epi32(_mm256_add_pd(start_y, _mm256_mul_pd(k, step_y)));
+    const __m128i column = _mm256_cvttpd_epi32(_mm256_add_pd(start_x, _mm256_mul_pd(k, step_x)));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(i + t), row);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(j + t), column);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(offset + t),
+                     _mm_add_epi32(_mm_mullo_epi32(_mm_sub_epi32(row, halves), rows), _mm_sub_epi32(column, halves)));
+  }
+  if (outside(i[0], j[0]) || outside(i[n - 1], j[n - 1])) return false;
+  // Past the path, the last window again (inside, unlike the path's continuation).
+  const int whole = (n + 3) & ~3;
+  for (int t = n; t < whole; ++t) offset[t] = offset[n - 1];
+  padded_windows_5_avx2(padded_, image_.bitmap, stride, sign_, offset, whole, out);
+  return true;
 }
 
 }  // inline namespace edgetrack_ports

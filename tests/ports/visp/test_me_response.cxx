@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// MaskResponse: every way of reading a response (at, at_each, at_each_in_box, at_block_3x3),
+/// MaskResponse: every way of reading a response (at, at_each, at_each_in_box, at_block_3x3 and,
+/// on x86-64 with AVX2, path_each_5_avx2),
 /// with each choice of kernels (real/vector_kernels.h: the widest vectors, the baseline ones,
 /// the scalar reference), gives at every pixel of a noisy image the sum this test computes from
 /// the mask's weights, for every mask and both signs: the SSE2, AVX2 and NEON kernels are
@@ -43,6 +44,44 @@ int expected_response(const vpImage<unsigned char>& image, const vpMe& me, unsig
   return sign * total;
 }
 
+#if defined(__SSE2__)
+/// With the AVX2 kernels chosen and run: straight paths through every pixel in several directions
+/// and of several lengths, read by path_each_5_avx2. Counts the pixels that differ from a scalar
+/// walk's (each the product, then the sum, in double, truncated), the paths whose verdict (both
+/// ends' windows inside) is wrong, and the responses of the paths inside that differ from
+/// expected_response.
+int wrong_path_responses(const vpImage<unsigned char>& image, const vpMe& me, const MaskResponse& response,
+                         unsigned int index, int sign) {
+  if (!response.runs_avx2()) return 0;
+  const int height = static_cast<int>(image.getHeight()), width = static_cast<int>(image.getWidth());
+  const int margin = static_cast<int>(me.getMaskSize() / 2) + me.getStrip();
+  const auto inside = [&](int i, int j) {
+    return i >= margin + 1 && j >= margin + 1 && i <= height - margin - 3 && j <= width - margin - 3;
+  };
+  const double directions[][2] = {{1, 0}, {0, 1}, {0.6, 0.8}, {-0.8, 0.6}, {0.7071067811865476, -0.7071067811865475},
+                                  {-0.28, -0.96}};
+  const int lengths[] = {5, 15, 16};
+  int wrong = 0;
+  for (int i = 0; i < height; ++i)
+    for (int j = 0; j < width; ++j)
+      for (const auto& direction : directions)
+        for (int n : lengths) {
+          const double y = i + 0.37, x = j + 0.61, dy = direction[0], dx = direction[1];
+          const int k0 = -(n / 2);
+          int rows[20], columns[20], out[20];
+          const bool read = response.path_each_5_avx2(y, x, dy, dx, k0, n, rows, columns, out);
+          for (int t = 0; t < n; ++t) {
+            wrong += rows[t] != static_cast<int>(y + double(k0 + t) * dy);
+            wrong += columns[t] != static_cast<int>(x + double(k0 + t) * dx);
+          }
+          wrong += read != (inside(rows[0], columns[0]) && inside(rows[n - 1], columns[n - 1]));
+          if (read)
+            for (int t = 0; t < n; ++t) wrong += out[t] != expected_response(image, me, index, sign, rows[t], columns[t]);
+        }
+  return wrong;
+}
+#endif
+
 /// The number of responses, read every way at every pixel with the chosen kernels, that differ
 /// from expected_response.
 int wrong_responses(const vpImage<unsigned char>& image, const vpMe& me, unsigned int index, int sign) {
@@ -82,6 +121,9 @@ int wrong_responses(const vpImage<unsigned char>& image, const vpMe& me, unsigne
       response.at_block_3x3(i, j, expected_response(image, me, index, sign, i, j), block);
       for (int k = 0; k < 9; ++k) wrong += block[k] != expected_response(image, me, index, sign, i + k / 3 - 1, j + k % 3 - 1);
     }
+#if defined(__SSE2__)
+  wrong += wrong_path_responses(image, me, response, index, sign);
+#endif
   return wrong;
 }
 

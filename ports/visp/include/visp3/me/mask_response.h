@@ -84,6 +84,19 @@ class MaskResponse {
     at_each(i, j, n, out);
   }
 
+#if defined(__SSE2__)
+  /// True when this response runs the AVX2 kernels (a 5 x 5 mask with padded rows, AVX2 chosen).
+  bool runs_avx2() const { return avx2_; }
+  /// With the AVX2 kernels (runs_avx2()), a straight path in one pass: its pixels, i[t] and j[t]
+  /// the truncated y + (k0 + t) dy and x + (k0 + t) dx for t < n (each lane the product, then the
+  /// sum, in double: a scalar walk's values), into i[] and j[]; then, when the windows of the
+  /// first and the last pixel lie inside, at() of each into out[] and true, else false (out[]
+  /// left to the caller). n is at most kMaxPathEach (else false, nothing written), and i[], j[] and
+  /// out[] hold n rounded up to a multiple of 4.
+  static constexpr int kMaxPathEach = 32;
+  bool path_each_5_avx2(double y, double x, double dy, double dx, int k0, int n, int* i, int* j, int* out) const;
+#endif
+
   /// The responses at the 3 x 3 pixels around (i, j), row by row: out[3 (di + 1) + dj + 1] is
   /// at(i + di, j + dj), for di and dj in -1..1; `centre` is at(i, j), which the caller read
   /// already. With the vector path, when the block lies inside, the windows share their pixels'
