@@ -20,8 +20,28 @@ set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_
 # over 2.0 M instructions (2002243 a frame, the 20 generated frames).
 set(EDGETRACK_MCU_FAST_OPTIONS -O2 -DFIXEDPOINT_FORCE_INLINE
     CACHE STRING "Compile options of the bare-metal sources built for speed")
+# Link-time optimisation of libtracker in the tracker firmwares (docs/MCU.md, "Flash"): the
+# tracker firmware 286.8 KB without it, 255.4 KB with it, the pose solver then built as the frames'
+# other sources (-O2 took 5.5 KB more for 6.9 K fewer instructions a frame: over the 256 KB). One
+# partition: 0.5 KB less than GCC's default partitions.
+option(EDGETRACK_MCU_LTO "Link-time optimisation of libtracker in the tracker firmwares" ON)
+if(EDGETRACK_MCU_LTO)
+  set_property(TARGET tracker tracker_firmware tracker_firmware_cube_xml PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+  set_property(TARGET tracker_firmware tracker_firmware_cube_xml APPEND PROPERTY LINK_OPTIONS -flto-partition=none)
+  # GCC 12.2's link-time modref analysis: with it, edge_model.cpp at -Os put circles and cylinder
+  # outlines in the wrong place (tracker_test_contours: no circle points sampled); without it, or
+  # without link-time constant propagation (-fno-ipa-cp), or at -O2, right. Not reduced further.
+  target_compile_options(tracker PRIVATE -fno-ipa-modref -ffat-lto-objects)
+  # The other images (the command line, the tests) link libtracker's machine code, as without
+  # link-time optimisation: optimised at the link, the command line's frames called fixed64's
+  # conversion from double (soft float) where its constants were folded before.
+  target_link_options(tracker INTERFACE $<$<NOT:$<BOOL:$<TARGET_PROPERTY:INTERPROCEDURAL_OPTIMIZATION>>>:-fno-lto>)
+  set(edgetrack_pose_solver_options ${EDGETRACK_MCU_FRAME_OPTIONS})
+else()
+  set(edgetrack_pose_solver_options ${EDGETRACK_MCU_FAST_OPTIONS})
+endif()
 set_source_files_properties(${PROJECT_SOURCE_DIR}/tracker/src/pose_solver.cpp DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
-                            PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FAST_OPTIONS}")
+                            PROPERTIES COMPILE_OPTIONS "${edgetrack_pose_solver_options}")
 # The pose's Levenberg-Marquardt (MINPACK, and through vnl for the command line), instantiated on `real`.
 set_source_files_properties(${PROJECT_SOURCE_DIR}/ports/netlib/instances/minpack+real-.cxx
                             DIRECTORY ${PROJECT_SOURCE_DIR}/ports/netlib

@@ -3,12 +3,15 @@
 # library (or object) linked in, the bytes it puts in flash (code, constants, unwinding tables,
 # the initial values of .data) and in static RAM (.data, .bss): "<library> <flash> <ram>". With
 # -v by=object, per object instead ("libtracker.a(pose_solver.cpp.obj)" as "pose_solver.cpp.obj").
+# The code compiled at link time (EDGETRACK_MCU_LTO) is one entry, "link-time-optimised".
 function hex(s,   v, i) {
   v = 0; s = tolower(substr(s, 3))
   for (i = 1; i <= length(s); ++i) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1
   return v
 }
 function library(path,   n, parts) {
+  # GCC's temporary objects of a link-time optimised link (/tmp/ccX.lto.o, /tmp/ccX.ltrans0.ltrans.o).
+  if (path ~ /\.(lto|ltrans[0-9]+\.ltrans)\.o$/) return "link-time-optimised"
   if (by == "object" && path ~ /\(.*\)$/) { sub(/^.*\(/, "", path); sub(/\)$/, "", path) }
   sub(/\(.*$/, "", path)
   n = split(path, parts, "/")

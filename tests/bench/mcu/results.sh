@@ -141,9 +141,11 @@ built_for() {
     f && /FLAGS =/ { print (index($0, hot) ? "frame" : index($0, fast) ? "speed" : "size"); exit }' "$mcu_dir/build.ninja"
 }
 awk -v by=object -f "$here/flash_and_ram.awk" "$mcu_dir/app/mcu/tracker_firmware.map" | sort -k2,2nr |
-  awk '$1 ~ /\.(cpp|cxx|c)\.obj$/ { print $1, $2 }' >objects.txt
+  awk '$1 ~ /\.(cpp|cxx|c)\.obj$/ || $1 == "link-time-optimised" { print $1, $2 }' >objects.txt
 loop_bytes=0 loop_objects=0 speed_bytes=0 speed_objects=0 size_bytes=0
+lto_bytes=0
 while read -r object bytes; do
+  [ "$object" = link-time-optimised ] && { lto_bytes=$bytes; continue; }
   case $(built_for "$object") in
     frame) loop_bytes=$((loop_bytes + bytes)) loop_objects=$((loop_objects + 1)) ;;
     speed) speed_bytes=$((speed_bytes + bytes)) speed_objects=$((speed_objects + 1)) ;;
@@ -151,6 +153,11 @@ while read -r object bytes; do
   esac
 done <objects.txt
 echo
+if [ "$lto_bytes" -gt 0 ]; then
+  echo "libtracker.a and the firmware's own source are compiled at link time (\`EDGETRACK_MCU_LTO\`, docs/MCU.md): $(kb "$lto_bytes") KB,"
+  echo "one object in the link map (\`link-time-optimised\` below), each function built with its source's options."
+  echo "Of the objects compiled before the link:"
+fi
 echo "The tree's own code in it (toolchains/mcu/hot_sources.cmake): $(kb "$loop_bytes") KB in the $loop_objects sources where the frames"
 echo "spend their instructions, built for size with fixed64's arithmetic and geometry.h's vector operations forced inline"
 echo "(\`$hot_flags\`: \`frame\` below), $(kb "$speed_bytes") KB in the $speed_objects built for speed (\`$fast_flags\`), and"
@@ -159,7 +166,8 @@ echo
 echo "| object | built for | flash (KB) |"
 echo "|---|---|---:|"
 head -n 15 objects.txt | while read -r object bytes; do
-  echo "| $object | $(built_for "$object") | $(kb "$bytes") |"
+  if [ "$object" = link-time-optimised ]; then built="link time"; else built=$(built_for "$object"); fi
+  echo "| $object | $built | $(kb "$bytes") |"
 done
 echo
 echo "### The tracker's heap per buffer at QVGA (Cortex-M3, after the 20 frames)"
