@@ -26,7 +26,9 @@ set(EDGETRACK_MCU_FAST_OPTIONS -O2 -DFIXEDPOINT_FORCE_INLINE
 # partition: 0.5 KB less than GCC's default partitions.
 option(EDGETRACK_MCU_LTO "Link-time optimisation of libtracker in the tracker firmwares" ON)
 if(EDGETRACK_MCU_LTO)
-  set_property(TARGET tracker tracker_firmware tracker_firmware_cube_xml PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+  # The tracker's unit tests too, so that they run the link-time code the firmwares ship.
+  set_property(TARGET tracker tracker_firmware tracker_firmware_cube_xml tracker_test_all
+               PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
   set_property(TARGET tracker_firmware tracker_firmware_cube_xml APPEND PROPERTY LINK_OPTIONS -flto-partition=none)
   # GCC 12.2's link-time modref analysis: with it, edge_model.cpp at -Os put circles and cylinder
   # outlines in the wrong place (tracker_test_contours: no circle points sampled); without it, or
