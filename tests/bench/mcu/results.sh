@@ -142,26 +142,34 @@ built_for() {
 }
 awk -v by=object -f "$here/flash_and_ram.awk" "$mcu_dir/app/mcu/tracker_firmware.map" | sort -k2,2nr |
   awk '$1 ~ /\.(cpp|cxx|c)\.obj$/ || $1 == "link-time-optimised" { print $1, $2 }' >objects.txt
-loop_bytes=0 loop_objects=0 speed_bytes=0 speed_objects=0 size_bytes=0
+loop_bytes=0 loop_objects=0 speed_bytes=0 speed_objects=0 size_bytes=0 size_objects=0
 lto_bytes=0
 while read -r object bytes; do
   [ "$object" = link-time-optimised ] && { lto_bytes=$bytes; continue; }
   case $(built_for "$object") in
     frame) loop_bytes=$((loop_bytes + bytes)) loop_objects=$((loop_objects + 1)) ;;
     speed) speed_bytes=$((speed_bytes + bytes)) speed_objects=$((speed_objects + 1)) ;;
-    *) size_bytes=$((size_bytes + bytes)) ;;
+    *) size_bytes=$((size_bytes + bytes)) size_objects=$((size_objects + 1)) ;;
   esac
 done <objects.txt
 echo
 if [ "$lto_bytes" -gt 0 ]; then
   echo "libtracker.a and the firmware's own source are compiled at link time (\`EDGETRACK_MCU_LTO\`, docs/MCU.md): $(kb "$lto_bytes") KB,"
   echo "one object in the link map (\`link-time-optimised\` below), each function built with its source's options."
-  echo "Of the objects compiled before the link:"
+  echo "The next table counts only the objects compiled before the link."
 fi
-echo "The tree's own code in it (toolchains/mcu/hot_sources.cmake): $(kb "$loop_bytes") KB in the $loop_objects sources where the frames"
-echo "spend their instructions, built for size with fixed64's arithmetic and geometry.h's vector operations forced inline"
-echo "(\`$hot_flags\`: \`frame\` below), $(kb "$speed_bytes") KB in the $speed_objects built for speed (\`$fast_flags\`), and"
-echo "$(kb "$size_bytes") KB in the others, built for size (-Os), where that arithmetic is calls. Its largest objects:"
+echo "The tree's own code in the image by how it is compiled (toolchains/mcu/hot_sources.cmake): \`frame\`, the sources where the"
+echo "frames spend their instructions, built for size with fixed64's arithmetic and geometry.h's vector operations forced inline"
+echo "(\`$hot_flags\`); \`speed\`, built for speed (\`$fast_flags\`); \`size\`, the others, built for size (-Os), where"
+echo "that arithmetic is calls."
+echo
+echo "| built for | objects | flash (KB) |"
+echo "|---|---:|---:|"
+echo "| frame | $loop_objects | $(kb "$loop_bytes") |"
+echo "| speed | $speed_objects | $(kb "$speed_bytes") |"
+echo "| size | $size_objects | $(kb "$size_bytes") |"
+echo
+echo "Its largest objects:"
 echo
 echo "| object | built for | flash (KB) |"
 echo "|---|---|---:|"
