@@ -121,7 +121,9 @@ void EdgeIdBuffer::reserve_for(const EdgeModel& model) {
   // At most one line per primitive; a clipped polygon fans into kMaxClippedVertices - 2
   // triangles, a windowed back facet (never clipped) into one per rim box.
   segments_.reserve(primitives);
-  occluders_.reserve((model.triangles.size() + 2 * model.cylinder_surface.size()) * (kMaxClippedVertices - 2));
+  const size_t most_occluders = (model.triangles.size() + 2 * model.cylinder_surface.size()) * (kMaxClippedVertices - 2);
+  occluders_.reserve(most_occluders);
+  occluder_runs_.reserve((most_occluders + kOccluderRun - 1) / kOccluderRun);
   // One line at a time (draw_segments): a line clipped to the screen has at most one pixel per
   // column or row, and one more for rounding. Owners only under the lines a side may not hide:
   // cylinder silhouettes and circles.
@@ -359,12 +361,45 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
     const ProjectedFacet& f = facets_[k];
     const RimBoxes& r = rim_boxes_[static_cast<size_t>(t.cylinder)];
     const int16_t owner = static_cast<int16_t>(t.cylinder + 1);
-    if (!r.valid || r.front_sign == 0 || f.sign == r.front_sign) {
-      add_occluders(f.polygon, f.count, screen_, owner);
-      continue;
+    if (!r.valid || r.front_sign == 0 || f.sign == r.front_sign) add_occluders(f.polygon, f.count, screen_, owner);
+    else add_windowed_occluders(f.polygon, r.boxes, owner);  // valid boxes: every facet a triangle
+  }
+}
+
+void EdgeIdBuffer::add_windowed_occluders(const ScreenVertex (&corners)[kMaxClippedVertices],
+                                          const PixelRect (&windows)[2], int16_t owner) {
+  // A non-empty rim box lies on the screen (cylinder_rim_boxes clamps it there), so the
+  // triangle's box on the screen cut to the window is the box setup_triangle gives with the
+  // window, and the rest of the setup does not depend on the clip.
+  Occluder o;
+  o.owner = owner;
+  if (!setup_triangle(corners[0], corners[1], corners[2], screen_, o.triangle)) return;
+  const PixelRect on_screen = o.triangle.box;
+  for (const PixelRect& window : windows) {
+    if (window.x0 > window.x1 || window.y0 > window.y1) continue;
+    PixelRect& box = o.triangle.box;
+    box.x0 = std::max(on_screen.x0, window.x0);
+    box.y0 = std::max(on_screen.y0, window.y0);
+    box.x1 = std::min(on_screen.x1, window.x1);
+    box.y1 = std::min(on_screen.y1, window.y1);
+    if (box.x0 <= box.x1 && box.y0 <= box.y1) occluders_.push_back(o);
+  }
+}
+
+void EdgeIdBuffer::gather_occluder_runs() {
+  occluder_runs_.clear();
+  for (size_t first = 0; first < occluders_.size(); first += kOccluderRun) {
+    const size_t end = std::min(occluders_.size(), first + kOccluderRun);
+    OccluderRun run{occluders_[first].triangle.box, occluders_[first].owner};
+    for (size_t k = first + 1; k < end; ++k) {
+      const PixelRect& box = occluders_[k].triangle.box;
+      run.box.x0 = std::min(run.box.x0, box.x0);
+      run.box.y0 = std::min(run.box.y0, box.y0);
+      run.box.x1 = std::max(run.box.x1, box.x1);
+      run.box.y1 = std::max(run.box.y1, box.y1);
+      if (occluders_[k].owner != run.owner) run.owner = kMixedOwners;
     }
-    for (const PixelRect& window : r.boxes)
-      if (window.x0 <= window.x1 && window.y0 <= window.y1) add_occluders(f.polygon, f.count, window, owner);
+    occluder_runs_.push_back(run);
   }
 }
 
@@ -382,6 +417,11 @@ struct StepAlong {
 /// above the line's by at most the tolerance of the line's least w wherever they overlap. Such a
 /// triangle (the faces a line lies on, those behind it) changes no pixel drawn, nor which owner
 /// is nearest where one hides the line.
+/// Whether boxes a and b share a pixel.
+bool boxes_meet(const PixelRect& a, const PixelRect& b) {
+  return !(a.x1 < b.x0 || a.x0 > b.x1 || a.y1 < b.y0 || a.y0 > b.y1);
+}
+
 bool hides_nothing(const LineWalk& line, const PixelTriangle& t) {
   int k0 = 0, k1 = line.count - 1;
   if (!steps_in_box(line, t.box, k0, k1)) return true;
@@ -417,30 +457,39 @@ bool EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
   int32_t* depth = nullptr;
   const LineWalk& line = s.line;
   const StepAlong step_along(line);
-  for (const Occluder& o : occluders_) {
-    const PixelRect& box = o.triangle.box;
-    if (box.x1 < s.box.x0 || box.x0 > s.box.x1 || box.y1 < s.box.y0 || box.y0 > s.box.y1) continue;
-    if (o.owner == left_out) continue;
-    if (hides_nothing(line, o.triangle)) continue;
-    if (!depth) {
-      line_depth_.assign(static_cast<size_t>(line.count), 0);
-      depth = line_depth_.data();
+  // With more than one run, a run whose box misses the line's, or whose occluders are all left
+  // out, is skipped whole.
+  const Occluder* const all = occluders_.data();
+  const size_t n = occluders_.size();
+  for (size_t first = 0; first < n; first += kOccluderRun) {
+    if (n > kOccluderRun) {
+      const OccluderRun& run = occluder_runs_[first / kOccluderRun];
+      if (!boxes_meet(run.box, s.box) || run.owner == left_out) continue;
     }
-    if constexpr (!kOwners) {
-      line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
-        int32_t& nearest = depth[step_along(x, y)];
-        if (w > nearest) nearest = w;
-      });
-    } else {
-      int16_t* owner = line_owner_.data();
-      const int16_t id = o.owner;
-      line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
-        const int k = step_along(x, y);
-        if (w > depth[k]) {
-          depth[k] = w;
-          owner[k] = id;
-        }
-      });
+    for (const Occluder* o_at = all + first; o_at != all + std::min(n, first + kOccluderRun); ++o_at) {
+      const Occluder& o = *o_at;
+      if (!boxes_meet(o.triangle.box, s.box) || o.owner == left_out) continue;
+      if (hides_nothing(line, o.triangle)) continue;
+      if (!depth) {
+        line_depth_.assign(static_cast<size_t>(line.count), 0);
+        depth = line_depth_.data();
+      }
+      if constexpr (!kOwners) {
+        line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
+          int32_t& nearest = depth[step_along(x, y)];
+          if (w > nearest) nearest = w;
+        });
+      } else {
+        int16_t* owner = line_owner_.data();
+        const int16_t id = o.owner;
+        line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
+          const int k = step_along(x, y);
+          if (w > depth[k]) {
+            depth[k] = w;
+            owner[k] = id;
+          }
+        });
+      }
     }
   }
   return depth != nullptr;
@@ -487,6 +536,7 @@ void EdgeIdBuffer::draw_segment_into(const Segment& s, Cover cover, const Image&
 void EdgeIdBuffer::draw_segments() {
   // Each line's nearest surfaces, then the line: a line reads only its own, so one line's room
   // serves them all.
+  if (occluders_.size() > kOccluderRun) gather_occluder_runs();
   for (const Segment& s : segments_) {
     const Cover cover = find_nearest_surfaces(s);
     if (bits_ == 4) draw_segment_into(s, cover, NibblePixels<NarrowId>{narrow_ids_.data()});
@@ -512,7 +562,7 @@ size_t EdgeIdBuffer::line_bytes() const {
   return capacity_bytes(line_depth_) + capacity_bytes(line_owner_) + capacity_bytes(points_in_camera_) +
          capacity_bytes(edge_colours_) + capacity_bytes(curved_) + capacity_bytes(front_) + capacity_bytes(segments_) +
          capacity_bytes(occluders_) + capacity_bytes(rim_boxes_) + capacity_bytes(facets_) +
-         capacity_bytes(cylinder_points_);
+         capacity_bytes(cylinder_points_) + capacity_bytes(occluder_runs_);
 }
 
 int EdgeIdBuffer::edge_at(int x, int y) const {

@@ -98,6 +98,12 @@ class EdgeIdBuffer {
   void collect_faces(const EdgeModel& model, const Se3& camera_from_model);
   /// The cylinders' sides, back facets only where they can show (cylinder_windows.h).
   void collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model);
+  /// A back facet (a triangle) as one occluder per non-empty rim box: one setup for all, since
+  /// only the box changes with the window.
+  void add_windowed_occluders(const ScreenVertex (&corners)[kMaxClippedVertices], const PixelRect (&windows)[2],
+                              int16_t owner);
+  /// occluder_runs_ for this frame's occluders.
+  void gather_occluder_runs();
   /// What the drawing of a line must test at each pixel: nothing (no surface can hide any of
   /// it), line_depth_, or line_depth_ and line_owner_.
   enum class Cover { kNone, kDepths, kDepthsAndOwners };
@@ -143,6 +149,16 @@ class EdgeIdBuffer {
   std::vector<uint8_t> front_;          ///< per face: drawn this frame (front-facing or not closed)
   std::vector<Segment> segments_;       ///< this frame's lines (the last frame's until render clears them)
   std::vector<Occluder> occluders_;     ///< this frame's surface triangles, faces first
+  /// occluders_ in runs of kOccluderRun (a cylinder's neighbouring facets, a face's triangles),
+  /// each with the box around its occluders' boxes and their owner (kMixedOwners when they
+  /// differ), so that a line skips the runs it cannot meet; gathered when there is more than one.
+  struct OccluderRun {
+    PixelRect box;
+    int owner = 0;
+  };
+  static constexpr size_t kOccluderRun = 8;
+  static constexpr int kMixedOwners = -2;
+  std::vector<OccluderRun> occluder_runs_;
   /// Per cylinder, this frame: its rim boxes, whether they apply, and the projected orientation
   /// of its front facets (+1 or -1; that of the facet facing the camera most).
   struct RimBoxes {
