@@ -8,6 +8,7 @@
 #include "edgetrack/contours.h"
 #include "edgetrack/cylinder_windows.h"
 #include "edgetrack/edge_id.h"
+#include "edgetrack/floor_to_int.h"
 #include "edgetrack/raster.h"
 #include "edgetrack/tracker_memory.h"
 
@@ -578,9 +579,8 @@ int EdgeIdBuffer::edge_at(int x, int y) const {
 
 bool EdgeIdBuffer::shows(int edge, const Vec2& pixel, const Vec2& along) const {
   using std::fabs;
-  using std::floor;
   const real half = real(0.5);
-  const int x = static_cast<int>(floor(pixel.x + half)), y = static_cast<int>(floor(pixel.y + half));
+  const int x = floor_to_int(pixel.x + half), y = floor_to_int(pixel.y + half);
   const bool x_major = fabs(along.x) >= fabs(along.y);
   const int dx = x_major ? 0 : 1, dy = x_major ? 1 : 0;
   return edge_at(x, y) == edge || edge_at(x - dx, y - dy) == edge || edge_at(x + dx, y + dy) == edge;

@@ -13,6 +13,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "edgetrack/floor_to_int.h"
 #include "edgetrack/pinhole_camera.h"
 
 namespace edgetrack {
@@ -64,12 +65,10 @@ inline bool on_guard_band(const PinholeCamera& camera, const ProjectedVertex& p)
 }
 /// `p` rounded to the rasteriser's integers (Q4 pixels, Q20 1/Z).
 inline ScreenVertex to_screen(const ProjectedVertex& p) {
-  using std::floor;
   const real half = real(0.5);
   const real sub = real(1 << kSubpixelBits);
   const real wscale = real(1 << kInverseDepthBits);
-  return {static_cast<int32_t>(floor(p.x * sub + half)), static_cast<int32_t>(floor(p.y * sub + half)),
-          static_cast<int32_t>(floor(p.w * wscale + half))};
+  return {floor_to_int(p.x * sub + half), floor_to_int(p.y * sub + half), floor_to_int(p.w * wscale + half)};
 }
 /// clip_and_project_segment for a segment wholly in front of the near plane, already projected.
 bool clip_projected_segment(const PinholeCamera& camera, const ProjectedVertex& pa, const ProjectedVertex& pb,
