@@ -13,7 +13,47 @@ inline namespace edgetrack_ports {
 
 [[gnu::target("avx2")]] void MaskResponse::padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left,
                                                               std::ptrdiff_t stride, int sign, int* out) {
-  padded_block_5(padded, top_left, stride, sign, out);
+  static_assert(vpMe::kPaddedRow == 8, "one 128-bit register of 16-bit weights per row");
+  // shifted[a + 1][s]: mask row a moved s pixels right, for the windows s - 1 columns off; rows
+  // -1 and 5 are zero, so that a window pair whose other window has no row there adds nothing.
+  const __m128i zero = _mm_setzero_si128();
+  __m128i shifted[7][3];
+  for (int s = 0; s < 3; ++s) shifted[0][s] = shifted[6][s] = zero;
+  for (int a = 0; a < 5; ++a) {
+    const __m128i row = _mm_loadu_si128(reinterpret_cast<const __m128i*>(padded + a * 8));
+    shifted[a + 1][0] = row;
+    shifted[a + 1][1] = _mm_slli_si128(row, 2);
+    shifted[a + 1][2] = _mm_slli_si128(row, 4);
+  }
+  // Window (di, s) is block row di, column s. Two windows per 256-bit multiply-add: (di, 0) and
+  // (di, 1) side by side for each di, (0, 2) beside (1, 2); (2, 2) alone in 128 bits.
+  __m256i left_pairs[3] = {_mm256_setzero_si256(), _mm256_setzero_si256(), _mm256_setzero_si256()};
+  __m256i right_pair = _mm256_setzero_si256();
+  __m128i last = zero;
+#pragma GCC unroll 7
+  for (int r = 0; r < 7; ++r) {
+    const __m128i pixels = _mm_cvtepu8_epi16(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(top_left + r * stride)));
+    const __m256i both = _mm256_broadcastsi128_si256(pixels);
+#pragma GCC unroll 3
+    for (int di = 0; di < 3; ++di) {
+      const int a = r - di;  // the row of window row di's mask that image row r meets
+      if (a < 0 || a > 4) continue;
+      left_pairs[di] = _mm256_add_epi32(
+          left_pairs[di], _mm256_madd_epi16(both, _mm256_set_m128i(shifted[a + 1][1], shifted[a + 1][0])));
+    }
+    if (r <= 5)  // rows r and r - 1 of the mask, for windows (0, 2) and (1, 2)
+      right_pair = _mm256_add_epi32(right_pair, _mm256_madd_epi16(both, _mm256_set_m128i(shifted[r][2], shifted[r + 1][2])));
+    if (r >= 2) last = _mm_add_epi32(last, _mm_madd_epi16(pixels, shifted[r - 1][2]));
+  }
+  // Each window's four lanes summed: two pairwise passes leave {w0 w2 w3 w6 | w1 w5 w4 w7}.
+  const __m256i sums = _mm256_hadd_epi32(_mm256_hadd_epi32(left_pairs[0], right_pair),
+                                         _mm256_hadd_epi32(left_pairs[1], left_pairs[2]));
+  __m256i in_order = _mm256_permutevar8x32_epi32(sums, _mm256_setr_epi32(0, 4, 1, 2, 6, 5, 3, 7));
+  if (sign < 0) in_order = _mm256_sub_epi32(_mm256_setzero_si256(), in_order);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), in_order);
+  last = _mm_hadd_epi32(last, last);
+  last = _mm_hadd_epi32(last, last);
+  out[8] = sign * _mm_cvtsi128_si32(last);
 }
 
 namespace {

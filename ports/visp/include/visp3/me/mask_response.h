@@ -275,8 +275,8 @@ class MaskResponse {
     last = _mm_add_epi32(last, _mm_shuffle_epi32(last, _MM_SHUFFLE(2, 3, 0, 1)));
     out[8] = sign * _mm_cvtsi128_si32(last);
   }
-  /// padded_block_5 built for AVX2 (mask_response_avx2.cpp, whatever the build's target): the
-  /// same operations in three-operand VEX form.
+  /// padded_block_5 with AVX2 (mask_response_avx2.cpp, whatever the build's target): the same
+  /// products, two windows per 256-bit multiply-add.
   static void padded_block_5_avx2(const int16_t* padded, const unsigned char* top_left, std::ptrdiff_t stride, int sign,
                                   int* out);
   /// padded_each_5<false> with AVX2 (mask_response_avx2.cpp): two windows per 256-bit multiply-add
