@@ -458,40 +458,40 @@ bool EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
   int32_t* depth = nullptr;
   const LineWalk& line = s.line;
   const StepAlong step_along(line);
-  // With more than one run, a run whose box misses the line's, or whose occluders are all left
-  // out, is skipped whole.
-  const Occluder* const all = occluders_.data();
+  const auto walk = [&](const Occluder& o) {
+    if (!boxes_meet(o.triangle.box, s.box) || o.owner == left_out || hides_nothing(line, o.triangle)) return;
+    if (!depth) {
+      line_depth_.assign(static_cast<size_t>(line.count), 0);
+      depth = line_depth_.data();
+    }
+    if constexpr (!kOwners) {
+      line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
+        int32_t& nearest = depth[step_along(x, y)];
+        if (w > nearest) nearest = w;
+      });
+    } else {
+      int16_t* owner = line_owner_.data();
+      const int16_t id = o.owner;
+      line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
+        const int k = step_along(x, y);
+        if (w > depth[k]) {
+          depth[k] = w;
+          owner[k] = id;
+        }
+      });
+    }
+  };
   const size_t n = occluders_.size();
+  if (n <= kOccluderRun) {
+    for (const Occluder& o : occluders_) walk(o);
+    return depth != nullptr;
+  }
+  // A run whose box misses the line's, or whose occluders are all left out, is skipped whole.
   for (size_t first = 0; first < n; first += kOccluderRun) {
-    if (n > kOccluderRun) {
-      const OccluderRun& run = occluder_runs_[first / kOccluderRun];
-      if (!boxes_meet(run.box, s.box) || run.owner == left_out) continue;
-    }
-    for (const Occluder* o_at = all + first; o_at != all + std::min(n, first + kOccluderRun); ++o_at) {
-      const Occluder& o = *o_at;
-      if (!boxes_meet(o.triangle.box, s.box) || o.owner == left_out) continue;
-      if (hides_nothing(line, o.triangle)) continue;
-      if (!depth) {
-        line_depth_.assign(static_cast<size_t>(line.count), 0);
-        depth = line_depth_.data();
-      }
-      if constexpr (!kOwners) {
-        line_in_triangle(line, o.triangle, [depth, step_along](int x, int y, int32_t w) {
-          int32_t& nearest = depth[step_along(x, y)];
-          if (w > nearest) nearest = w;
-        });
-      } else {
-        int16_t* owner = line_owner_.data();
-        const int16_t id = o.owner;
-        line_in_triangle(line, o.triangle, [depth, owner, step_along, id](int x, int y, int32_t w) {
-          const int k = step_along(x, y);
-          if (w > depth[k]) {
-            depth[k] = w;
-            owner[k] = id;
-          }
-        });
-      }
-    }
+    const OccluderRun& run = occluder_runs_[first / kOccluderRun];
+    if (!boxes_meet(run.box, s.box) || run.owner == left_out) continue;
+    const Occluder* const end = occluders_.data() + std::min(n, first + kOccluderRun);
+    for (const Occluder* o = occluders_.data() + first; o != end; ++o) walk(*o);
   }
   return depth != nullptr;
 }

@@ -113,8 +113,9 @@ struct LineWalk {
 
 LineWalk walk_line(const ScreenVertex& a, const ScreenVertex& b);
 
-/// The box of the pixels draw_line visits for `line` (off the screen too).
-inline PixelRect line_box(const LineWalk& line) {
+/// The box of the pixels draw_line visits for `line` (off the screen too). Always inlined: a
+/// call per line drawn costs the PXA270 more than the few instructions it holds.
+[[gnu::always_inline]] inline PixelRect line_box(const LineWalk& line) {
   const int m0 = line.first, m1 = line.first + (line.count - 1) * line.dir;
   const int n0 = line.minor_at(0), n1 = line.minor_at(line.count - 1);  // monotonic along the line
   const int major_lo = std::min(m0, m1), major_hi = std::max(m0, m1);
