@@ -275,10 +275,11 @@ void EdgeIdBuffer::collect_segments(const EdgeModel& model, const Se3& camera_fr
 }
 
 void EdgeIdBuffer::add_occluders(const ScreenVertex* polygon, int count, const PixelRect& clip, int16_t owner) {
+  // Set up in place (reserve_for made room): a triangle kept is not copied.
   for (int i = 1; i + 1 < count; ++i) {
-    Occluder o;
+    Occluder& o = occluders_.emplace_back();
     o.owner = owner;
-    if (setup_triangle(polygon[0], polygon[i], polygon[i + 1], clip, o.triangle)) occluders_.push_back(o);
+    if (!setup_triangle(polygon[0], polygon[i], polygon[i + 1], clip, o.triangle)) occluders_.pop_back();
   }
 }
 
