@@ -111,11 +111,11 @@ void ContrastMemory::add_group(int edge, size_t first) {
   groups_.push_back(g);
 }
 
-size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, const Group& g,
-                                               size_t from) const {
+size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, size_t from,
+                                               const real& bound) const {
   size_t k = from;
-  while (k > g.first && !before(g, remembered[k - 1].point_in_model)) --k;
-  while (k < g.end && before(g, remembered[k].point_in_model)) ++k;
+  while (k > g_.first && !before(remembered[k - 1].point_in_model, bound)) --k;
+  while (k < g_.end && before(remembered[k].point_in_model, bound)) ++k;
   return k;
 }
 
@@ -151,11 +151,14 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
     const real depth = depth_in_camera(camera_from_model, point.point_in_model);
     if (depth <= real(0)) continue;
     real nearest = bound_per_metre * depth;
-    const Window window(*g, point.point_in_model, nearest);
-    from = window.first_candidate(remembered_, *g, from);
-    for (size_t k = from; k < g->end && !window.after(*g, remembered_[k].point_in_model); ++k) {
-      if (taxicab_below(remembered_[k].point_in_model, point.point_in_model, nearest, nearest))
+    const Window window(*g, point.point_in_model);
+    from = window.first_candidate(remembered_, from, nearest);
+    for (size_t k = from; k < g->end; ++k) {
+      const Vec3& candidate = remembered_[k].point_in_model;
+      if (taxicab_below(candidate, point.point_in_model, nearest, nearest))
         out[p] = remembered_[k].contrast;
+      else if (window.after(candidate, nearest))
+        break;  // nearest only shrinks: the points after this one fail it too
     }
     if (out[p] == real(0) && primitive != real(0)) {
       out[p] = primitive;

@@ -4,6 +4,7 @@
 /// test, whose sites live from frame to frame, for control points sampled afresh every frame.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "edgetrack/control_points.h"
@@ -72,28 +73,34 @@ class ContrastMemory {
   };
   /// Groups remembered_[first, end) as primitive `edge`'s points.
   void add_group(int edge, size_t first);
-  /// Along a monotonic group's axis, the coordinates that can lie within `bound` (taxicab) of a
-  /// point: within twice the bound, so that a point left out fails the bound whatever the
-  /// rounding of the differences.
+  /// Along a monotonic group's axis, which remembered points fail a taxicab bound on that axis
+  /// alone: |their coordinate - the point's|, computed as taxicab_below computes that term, is
+  /// at least the bound (the rounded sum of the terms is never below one of them).
   class Window {
    public:
-    Window(const Group& g, const Vec3& point, const real& bound)
-        : below_(coordinate(point, g.axis) - real(2) * bound), above_(coordinate(point, g.axis) + real(2) * bound) {}
-    /// Whether a point of `g` lies before the window in g's order (never when g is not monotonic).
-    bool before(const Group& g, const Vec3& p) const {
-      return g.order > 0 ? !(coordinate(p, g.axis) > below_) : g.order < 0 && !(coordinate(p, g.axis) < above_);
-    }
-    /// Whether a point of `g` lies after the window in g's order (never when g is not monotonic).
-    bool after(const Group& g, const Vec3& p) const {
-      return g.order > 0 ? !(coordinate(p, g.axis) < above_) : g.order < 0 && !(coordinate(p, g.axis) > below_);
-    }
-    /// The first point of `g` not before the window, walked to from `from` (the previous point's
-    /// first candidate, or g.first): before() holds for a prefix of a monotonic group, and never
-    /// in another, whose points are all candidates.
-    size_t first_candidate(const std::vector<Remembered>& remembered, const Group& g, size_t from) const;
+    Window(const Group& g, const Vec3& point) : g_(g), centre_(coordinate(point, g.axis)) {}
+    /// Whether p lies before the point in g's order, `bound` or more away on the axis (never
+    /// when g is not monotonic).
+    bool before(const Vec3& p, const real& bound) const { return beyond(p, -g_.order, bound); }
+    /// Whether p lies after the point in g's order, `bound` or more away on the axis (never
+    /// when g is not monotonic): so do all of g's points after p.
+    bool after(const Vec3& p, const real& bound) const { return beyond(p, g_.order, bound); }
+    /// The first point of g not before() within `bound`, walked to from `from` (the previous
+    /// point's first candidate, or g.first): before() holds for a prefix of a monotonic group,
+    /// and never in another, whose points are all candidates.
+    size_t first_candidate(const std::vector<Remembered>& remembered, size_t from, const real& bound) const;
 
    private:
-    real below_, above_;
+    /// Whether p's coordinate lies on the `side` (+1 above, -1 below, 0 none) of the point's,
+    /// `bound` or more away.
+    bool beyond(const Vec3& p, int side, const real& bound) const {
+      using std::fabs;
+      const real& c = coordinate(p, g_.axis);
+      const bool on_side = side > 0 ? c > centre_ : side < 0 && c < centre_;
+      return on_side && !(fabs(c - centre_) < bound);
+    }
+    const Group& g_;
+    real centre_;
   };
   static const real& coordinate(const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
   std::vector<Remembered> remembered_;
