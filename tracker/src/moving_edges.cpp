@@ -6,6 +6,9 @@
 #include <cmath>
 #include <optional>
 #include <type_traits>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "edgetrack/normal_mask.h"
 #include "real/vector_kernels.h"
@@ -165,11 +168,13 @@ struct SiteLimits {
         threshold(likelihood_floor(me.getThreshold())),
         least(real(1) - me.getMu1()),
         most(real(1) + me.getMu2()),
-        vector(vector_kernels::chosen() != vector_kernels::Choice::kScalar) {}
+        vector(vector_kernels::chosen() != vector_kernels::Choice::kScalar),
+        avx2(vector_kernels::avx2()) {}
   int range;      ///< candidates pixel + k normal, |k| <= range
   int threshold;  ///< maxima of likelihood above it
   real least, most;  ///< the contrast test's bounds, times |reference|
   bool vector;       ///< the vector kernels, else the scalar reference (vector_kernels.h)
+  bool avx2;         ///< the vector kernels built for AVX2
 };
 
 #if defined(__SSE2__)
@@ -208,6 +213,75 @@ bool path_chunk_in_vectors(const MaskResponse&, const Real&, const Real&, const 
   return false;
 }
 
+/// path_peaks_in_chunks' slots: slot kLead + k holds a chunk's k-th pixel, slots 0 and 1 the
+/// previous chunk's last two (likelihood -1 before the path); the tests reach a vector past the
+/// chunk.
+constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 8;
+static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
+static_assert(kChunk <= MaskResponse::kMaxPathEach && kLead + kChunk + 8 <= kSlots, "a chunk in one path_each_5_avx2, 8 slots past it");
+
+/// The candidates of a chunk whose n responses are in conv[kLead..]: the pixels whose neighbour
+/// after them the chunk read (slots 1..n; none before the path, so from `first`), and at the
+/// path's far end its last pixel, with no pixel after it (last: n + 1, else n).
+struct ChunkCandidates {
+  int n, first, last;
+  bool far_end;
+};
+
+/// Fills likelihood[kLead..] with |2 conv| and returns the chunk's local maxima of the likelihood
+/// above `threshold`, bit t for slot t: at > before, at >= after, branch-free four at a time.
+/// conv's slots past the n-th (to a multiple of 4) are set to 0.
+unsigned chunk_peaks_sse2(int* likelihood, int* conv, const ChunkCandidates& c, int threshold) {
+  for (int k = c.n; k % 4 != 0; ++k) conv[kLead + k] = 0;
+  for (int k = 0; k < c.n; k += 4) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(conv + kLead + k));
+    const __m128i sign = _mm_srai_epi32(v, 31);
+    const __m128i magnitude = _mm_sub_epi32(_mm_xor_si128(v, sign), sign);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(likelihood + kLead + k), _mm_add_epi32(magnitude, magnitude));
+  }
+  if (c.far_end) likelihood[kLead + c.n] = -1;
+  const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
+  unsigned candidates = 0;
+  for (int t = 1; t <= c.last; t += 4) {
+    const __m128i at = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t));
+    const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t - 1));
+    const __m128i after = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t + 1));
+    // at > before, at >= after (not after > at), and at above the threshold.
+    const __m128i peak = _mm_andnot_si128(_mm_cmpgt_epi32(after, at),
+                                          _mm_and_si128(_mm_cmpgt_epi32(at, before), _mm_cmpgt_epi32(at, floor_of_peaks)));
+    candidates |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(peak))) << t;
+  }
+  return candidates & ((2u << c.last) - 1) & ~((1u << c.first) - 1);
+}
+
+#if defined(__x86_64__)
+/// chunk_peaks_sse2 eight at a time; the far end's slot kChunk + 1, past the two vectors, alone.
+/// conv's 8 slots past the n-th are set to 0.
+[[gnu::target("avx2")]] unsigned chunk_peaks_avx2(int* likelihood, int* conv, ChunkCandidates c, int threshold) {
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(conv + kLead + c.n), _mm256_setzero_si256());
+  for (int k = 0; k < c.n; k += 8) {
+    const __m256i magnitude = _mm256_abs_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(conv + kLead + k)));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(likelihood + kLead + k), _mm256_add_epi32(magnitude, magnitude));
+  }
+  if (c.far_end) likelihood[kLead + c.n] = -1;
+  const __m256i floor_of_peaks = _mm256_set1_epi32(threshold);
+  unsigned candidates = 0;
+  for (int t = 1; t <= c.last && t <= kChunk; t += 8) {
+    const __m256i at = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(likelihood + t));
+    const __m256i before = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(likelihood + t - 1));
+    const __m256i after = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(likelihood + t + 1));
+    const __m256i peak = _mm256_andnot_si256(
+        _mm256_cmpgt_epi32(after, at), _mm256_and_si256(_mm256_cmpgt_epi32(at, before), _mm256_cmpgt_epi32(at, floor_of_peaks)));
+    candidates |= static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(peak))) << t;
+  }
+  if (c.last > kChunk) {
+    const int* at = likelihood + kChunk + 1;
+    candidates |= static_cast<unsigned>(at[0] > at[-1] && at[0] >= at[1] && at[0] > threshold) << (kChunk + 1);
+  }
+  return candidates & ((2u << c.last) - 1) & ~((1u << c.first) - 1);
+}
+#endif
+
 /// for_each_path_peak's vector path: the responses a chunk of the path at a time (MaskResponse
 /// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
 /// branch-free.
@@ -216,14 +290,8 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
   const int range = limits.range, threshold = limits.threshold;
   PathWalk walk(point, range);
   const int length = 2 * range + 1;
-  // Slot kLead + k holds the chunk's k-th pixel, slots 0 and 1 the previous chunk's last two
-  // (likelihood -1 before the path); the tests reach a vector past the chunk.
-  constexpr int kChunk = 16, kLead = 2, kSlots = kLead + kChunk + 6;
-  static_assert(kChunk + 2 <= 32, "one bit per candidate slot");
-  static_assert(kChunk <= MaskResponse::kMaxPathEach && kLead + kChunk + 3 <= kSlots, "a chunk in one path_each_5_avx2");
   int likelihood[kSlots], conv[kSlots], path_i[kSlots], path_j[kSlots];
   for (int t = 0; t < kSlots; ++t) likelihood[t] = -1;
-  const __m128i floor_of_peaks = _mm_set1_epi32(threshold);
   for (int start = 0; start < length; start += kChunk) {
     const int n = length - start < kChunk ? length - start : kChunk;
     if (!path_chunk_in_vectors(response, point.pixel.y, point.pixel.x, point.normal.y, point.normal.x, start - range, n,
@@ -231,31 +299,14 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
       for (int k = 0; k < n; ++k) walk.next(path_i[kLead + k], path_j[kLead + k]);
       response.at_each_in_box(path_i + kLead, path_j + kLead, n, conv + kLead);
     }
-    // |2 conv|, four at a time; the lanes past the chunk's last pixel (their conv set, not read)
-    // are overwritten or masked out below.
-    for (int k = n; k % 4 != 0; ++k) conv[kLead + k] = 0;
-    for (int k = 0; k < n; k += 4) {
-      const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(conv + kLead + k));
-      const __m128i sign = _mm_srai_epi32(c, 31);
-      const __m128i magnitude = _mm_sub_epi32(_mm_xor_si128(c, sign), sign);
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(likelihood + kLead + k), _mm_add_epi32(magnitude, magnitude));
-    }
-    // The candidates: the pixels whose neighbour after them this chunk read (slots 1..n; none
-    // before the path), and at the path's far end its last pixel, with no pixel after it.
     const bool far_end = start + n == length;
-    if (far_end) likelihood[kLead + n] = -1;
-    const int first = start == 0 ? kLead : 1, last = far_end ? n + 1 : n;
-    unsigned candidates = 0;
-    for (int t = 1; t <= last; t += 4) {
-      const __m128i at = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t));
-      const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t - 1));
-      const __m128i after = _mm_loadu_si128(reinterpret_cast<const __m128i*>(likelihood + t + 1));
-      // at > before, at >= after (not after > at), and at above the threshold.
-      const __m128i peak = _mm_andnot_si128(_mm_cmpgt_epi32(after, at),
-                                            _mm_and_si128(_mm_cmpgt_epi32(at, before), _mm_cmpgt_epi32(at, floor_of_peaks)));
-      candidates |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(peak))) << t;
-    }
-    candidates &= ((2u << last) - 1) & ~((1u << first) - 1);
+    const ChunkCandidates chunk{n, start == 0 ? kLead : 1, far_end ? n + 1 : n, far_end};
+#if defined(__x86_64__)
+    unsigned candidates = limits.avx2 ? chunk_peaks_avx2(likelihood, conv, chunk, threshold)
+                                      : chunk_peaks_sse2(likelihood, conv, chunk, threshold);
+#else
+    unsigned candidates = chunk_peaks_sse2(likelihood, conv, chunk, threshold);
+#endif
     for (; candidates != 0; candidates &= candidates - 1) {
       const int t = __builtin_ctz(candidates);
       visit(conv[t], path_i[t], path_j[t]);
