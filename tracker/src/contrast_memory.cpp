@@ -111,14 +111,6 @@ void ContrastMemory::add_group(int edge, size_t first) {
   groups_.push_back(g);
 }
 
-size_t ContrastMemory::Window::first_candidate(const std::vector<Remembered>& remembered, size_t from,
-                                               const real& bound) const {
-  size_t k = from;
-  while (k > g_.first && !before(remembered[k - 1].point_in_model, bound)) --k;
-  while (k < g_.end && before(remembered[k].point_in_model, bound)) ++k;
-  return k;
-}
-
 void ContrastMemory::references(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
                                 const Se3& camera_from_model, const real& reach, std::vector<real>& out,
                                 std::vector<unsigned char>& borrowed) const {
@@ -135,7 +127,8 @@ void ContrastMemory::references(const std::vector<ControlPoint>& points, const P
   // `reach` pixels at depth 1 m, in metres, doubled: the bound is on the taxicab distance, 1 to
   // sqrt(3) times the straight one, so every point within reach passes it.
   const real bound_per_metre = real(2) * reach / camera.px;
-  for (size_t p = 0; p < points.size(); ++p) {
+  const size_t count = points.size();  // in a local: the stores to out[] could alias the vector's size
+  for (size_t p = 0; p < count; ++p) {
     const ControlPoint& point = points[p];
     if (point.edge != edge) {
       edge = point.edge;

@@ -500,7 +500,8 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
   // The points of one straight edge share its normal, so its mask is looked up once per run.
   Vec2 mask_normal{real(0), real(0)};
   std::optional<MaskResponse> mask_response;
-  for (size_t p = 0; p < points.size(); ++p) {
+  const size_t count = points.size();  // in a local: the stores to matches could alias the vector's size
+  for (size_t p = 0; p < count; ++p) {
     const ControlPoint& point = points[p];
     if (p == 0 || !(point.normal.x == mask_normal.x && point.normal.y == mask_normal.y)) {
       const NormalMask mask = normal_mask(me, point.normal);

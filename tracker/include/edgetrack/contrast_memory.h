@@ -88,7 +88,12 @@ class ContrastMemory {
     /// The first point of g not before() within `bound`, walked to from `from` (the previous
     /// point's first candidate, or g.first): before() holds for a prefix of a monotonic group,
     /// and never in another, whose points are all candidates.
-    size_t first_candidate(const std::vector<Remembered>& remembered, size_t from, const real& bound) const;
+    size_t first_candidate(const std::vector<Remembered>& remembered, size_t from, const real& bound) const {
+      size_t k = from;
+      while (k > g_.first && !before(remembered[k - 1].point_in_model, bound)) --k;
+      while (k < g_.end && before(remembered[k].point_in_model, bound)) ++k;
+      return k;
+    }
 
    private:
     /// Whether p's coordinate lies on the `side` (+1 above, -1 below, 0 none) of the point's,
