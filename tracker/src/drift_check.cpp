@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgetrack/order_statistic.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/thin_lines.h"
+#include "edgetrack/tracker_memory.h"
 
 namespace edgetrack {
 
@@ -57,32 +59,30 @@ int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch
 
 /// The Tukey cut the pose step's first solve weighs the matches not excluded with at the start
 /// (solve_pose, PoseParams::weigh_at_start): max(tukey_c * 1.4826 * median |delta|, tukey_floor)
-/// px over their distances at the start, in `scratch` (the pose workspace's, which means nothing
-/// between solves).
-real start_cut(const std::vector<EdgeMatch>& matches, const PoseParams& params, std::vector<real>& scratch) {
+/// px over their distances at the start, in the pose workspace's distances and weights (which
+/// mean nothing between solves).
+real start_cut(const std::vector<EdgeMatch>& matches, const PoseParams& params, PoseWorkspace& scratch) {
   using std::fabs;
-  scratch.resize(matches.size());
+  scratch.distances.resize(matches.size());
+  scratch.weights.resize(matches.size());
   size_t n = 0;
   for (const EdgeMatch& match : matches)
-    if (!match.excluded) scratch[n++] = fabs(dot(match.point.normal, match.point.pixel - match.found));
+    if (!match.excluded) scratch.distances[n++] = fabs(dot(match.point.normal, match.point.pixel - match.found));
   if (n == 0) return params.tukey_floor;
-  std::nth_element(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(n / 2),
-                   scratch.begin() + static_cast<std::ptrdiff_t>(n));
-  return std::max(params.tukey_c * real(kMadToSigma) * scratch[n / 2], params.tukey_floor);
+  const real median = median_of_values(scratch.distances.data(), scratch.weights.data(), n);
+  return std::max(params.tukey_c * real(kMadToSigma) * median, params.tukey_floor);
 }
 
 /// The first solve's marks, held while the second solve overwrites them, and given back.
-void hold_marks(std::vector<EdgeMatch>& matches) {
-  for (EdgeMatch& match : matches) {
-    match.held_outlier = match.outlier;
-    match.held_chosen = static_cast<signed char>(match.chosen);
-  }
+void hold_marks(const std::vector<EdgeMatch>& matches, std::vector<DriftWorkspace::HeldMarks>& held) {
+  held.resize(matches.size());
+  for (size_t i = 0; i < matches.size(); ++i) held[i] = {matches[i].outlier, static_cast<signed char>(matches[i].chosen)};
 }
-void give_back_marks(std::vector<EdgeMatch>& matches) {
-  for (EdgeMatch& match : matches) {
-    match.outlier = match.held_outlier;
-    match.chosen = match.held_chosen;
-    match.excluded = false;
+void give_back_marks(const std::vector<DriftWorkspace::HeldMarks>& held, std::vector<EdgeMatch>& matches) {
+  for (size_t i = 0; i < matches.size(); ++i) {
+    matches[i].outlier = held[i].outlier;
+    matches[i].chosen = held[i].chosen;
+    matches[i].excluded = false;
   }
 }
 
@@ -91,8 +91,11 @@ void give_back_marks(std::vector<EdgeMatch>& matches) {
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
                          const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
-                         PoseWorkspace& workspace) {
+                         PoseWorkspace& workspace, DriftWorkspace& drift_workspace) {
   DriftVerdict verdict;
+  // Room for the held marks on every frame, not only where a second solve runs: the buffer
+  // grows with the largest frame seen, as the tracker's others do.
+  drift_workspace.reserve(matches.size());
   verdict.lines = exclude_thin_lines(grey, matches, lines);
   if (verdict.lines == 0) return verdict;
   // Matches on the object's own edges that the test calls lines (texture, a real scene's
@@ -101,12 +104,12 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // second solve run.
   const real first_sigma = std::max(solved.residual_scale, sigma_floor);
   verdict.pull_sigmas = excluded_pull_sigmas(matches, model, camera, start, solved.camera_from_model, first_sigma,
-                                             start_cut(matches, pose_params, workspace.distances));
+                                             start_cut(matches, pose_params, workspace));
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;
   }
-  hold_marks(matches);
+  hold_marks(matches, drift_workspace.held);
   // The 6 x 6 normal equations' LM: lmder's poses within the golden tolerances
   // (test_normal_equations.cxx) in fewer instructions; a check needs no more.
   PoseParams second = pose_params;
@@ -119,10 +122,19 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
     const real sigma = std::max(verdict.second.residual_scale, sigma_floor);
     verdict.allowed_px = lines.check_sigmas * pose_uncertainty_px(matches, model, camera, verdict.second.camera_from_model,
                                                                   sigma, pose_params.tukey_c, pose_params.tukey_floor);
-    verdict.drifted = verdict.parted_px > verdict.allowed_px;
+    // Leaving out matches that pulled the pose off the rest lets the rest fit their own pose
+    // more closely than all of them fitted the first; leaving out matches that agreed with the
+    // rest (true edges the test calls lines) does not, and a pose the rest then fit no better
+    // is no correction.
+    verdict.fits_closer = !(verdict.second.residual_scale > solved.residual_scale);
+    verdict.drifted = verdict.parted_px > verdict.allowed_px && verdict.fits_closer;
   }
-  give_back_marks(matches);
+  give_back_marks(drift_workspace.held, matches);
   return verdict;
 }
+
+void DriftWorkspace::reserve(size_t matches) { held.reserve(matches); }
+
+size_t DriftWorkspace::heap_bytes() const { return capacity_bytes(held); }
 
 }  // namespace edgetrack

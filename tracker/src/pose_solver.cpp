@@ -485,23 +485,22 @@ OrderWork order_work(PoseWorkspace& workspace, size_t matches) {
   return {workspace.jacobian.data(), workspace.jacobian.data() + matches};
 }
 
-/// The median of |values| (the distances may be signed) over the matches not excluded, in
-/// `work` (room for as many).
-real median_of(const std::vector<EdgeMatch>& matches, const std::vector<real>& signed_values, const OrderWork& work) {
+/// The median of |values| (the distances may be signed), over the matches not excluded where
+/// `masked` (some are: solve_pose counted them), in `work` (room for as many).
+real median_of(const std::vector<EdgeMatch>& matches, bool masked, const std::vector<real>& signed_values,
+               const OrderWork& work) {
   using std::fabs;
   real* const values = work.values;
   size_t n = 0;
-  for (size_t i = 0; i < signed_values.size(); ++i)
-    if (!matches[i].excluded) values[n++] = fabs(signed_values[i]);
-  const size_t mid = n / 2;
-  // The same number either way: floating point without a branch per comparison (a host CPU
-  // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
-  if constexpr (std::is_floating_point<real>::value) {
-    if (n == 0) return real(0);
-    return kth_smallest(values, work.other, n, mid);
+  if (masked) {
+    for (size_t i = 0; i < signed_values.size(); ++i)
+      if (!matches[i].excluded) values[n++] = fabs(signed_values[i]);
+  } else {
+    n = signed_values.size();
+    for (size_t i = 0; i < n; ++i) values[i] = fabs(signed_values[i]);
   }
-  std::nth_element(values, values + mid, values + n);
-  return values[mid];
+  if (n == 0) return real(0);
+  return median_of_values(values, work.other, n);
 }
 
 /// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
@@ -539,16 +538,16 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 
 /// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
 /// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
-/// An excluded match weighs 0 and is no outlier.
-int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
-                  const OrderWork& work, std::vector<real>& weights) {
+/// Where `masked`, an excluded match weighs 0 and is no outlier.
+int tukey_weights(std::vector<EdgeMatch>& matches, bool masked, const std::vector<real>& distances,
+                  const PoseParams& params, const OrderWork& work, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(kMadToSigma) * median_of(matches, distances, work);
+  real c = params.tukey_c * real(kMadToSigma) * median_of(matches, masked, distances, work);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
   for (size_t i = 0; i < matches.size(); ++i) {
-    if (matches[i].excluded) {
+    if (masked && matches[i].excluded) {
       matches[i].outlier = false;
       weights[i] = real(0);
       continue;
@@ -591,6 +590,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   for (const EdgeMatch& m : matches) excluded += m.excluded;
   const size_t taken = matches.size() - excluded;
   if (taken < needed) return solution;
+  const bool masked = excluded > 0;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   PointToLineProblem::prepare_matches(matches, camera, true, workspace);
   const OrderWork order = order_work(workspace, matches.size());
@@ -604,9 +604,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     for (size_t i = 0; i < matches.size(); ++i)
       distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
     weights.resize(matches.size());
-    tukey_weights(matches, distances, params, order, weights);
+    tukey_weights(matches, masked, distances, params, order, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
-  } else if (excluded > 0) {
+  } else if (masked) {
     weights.resize(matches.size());
     for (size_t i = 0; i < matches.size(); ++i) weights[i] = matches[i].excluded ? real(0) : real(1);
   }
@@ -617,7 +617,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
+    solution.residual_scale = real(kMadToSigma) * median_of(matches, masked, distances, order);
     return solution;
   }
 
@@ -630,7 +630,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     // round after it.
     if (!moved && !rechosen && distances == workspace.before_round) break;
     PointToLineProblem::prepare_matches(matches, camera, false, workspace);
-    solution.outliers = tukey_weights(matches, distances, params, order, weights);
+    solution.outliers = tukey_weights(matches, masked, distances, params, order, weights);
     if (taken - static_cast<size_t>(solution.outliers) < needed) break;
     workspace.before_round = distances;
     const SolveResult robust_solve =
@@ -647,7 +647,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
   to_strongest(matches, distances);
-  solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
+  solution.residual_scale = real(kMadToSigma) * median_of(matches, masked, distances, order);
   return solution;
 }
 

@@ -5,7 +5,9 @@
 /// comparison in two on residuals; this loop has no data-dependent branch.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <type_traits>
 
 namespace edgetrack {
 
@@ -55,6 +57,21 @@ T kth_smallest(T* values, T* other, size_t n, size_t k) {
     in[j] = v;
   }
   return in[k];
+}
+
+/// The median of values[0..n), n > 0, as std::nth_element places it at n / 2 (the upper middle
+/// one for an even n); `values` and `other` (n entries each) are work. The same number either
+/// way: floating point by kth_smallest (a host CPU mispredicts nth_element's comparisons), fixed
+/// point (ARMv5TE, no such cost) by std::nth_element in place.
+template <class T>
+T median_of_values(T* values, T* other, size_t n) {
+  const size_t mid = n / 2;
+  if constexpr (std::is_floating_point<T>::value) {
+    return kth_smallest(values, other, n, mid);
+  } else {
+    std::nth_element(values, values + mid, values + n);
+    return values[mid];
+  }
 }
 
 }  // namespace edgetrack
