@@ -44,6 +44,11 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 namespace {
 
+/// The relative standard deviation of a median absolute deviation of n normal residuals, times
+/// sqrt(n), for large n: the MAD's efficiency against the standard deviation is 0.37, so
+/// 1 / sqrt(2 * 0.37) (Rousseeuw and Croux, 1993).
+constexpr double kMadRelativeError = 1.16;
+
 /// Masks out the matches whose used() hypothesis, or strongest one (where a second solve starts),
 /// lies on a thin line; returns how many.
 int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const ThinLineParams& lines) {
@@ -124,10 +129,15 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
                                                                   sigma, pose_params.tukey_c, pose_params.tukey_floor);
     // Leaving out matches that pulled the pose off the rest lets the rest fit their own pose
     // more closely than all of them fitted the first; leaving out matches that agreed with the
-    // rest (true edges the test calls lines) does not, and a pose the rest then fit no better
-    // is no correction.
-    verdict.fits_closer = !(verdict.second.residual_scale > solved.residual_scale);
-    verdict.drifted = verdict.parted_px > verdict.allowed_px && verdict.fits_closer;
+    // rest (true edges the test calls lines) does not, and a pose the rest then fit worse is no
+    // correction. Worse: beyond two standard errors of the second scale, a median absolute
+    // deviation of the n matches off the lines (kMadRelativeError / sqrt(n) of it, for normal
+    // residuals).
+    using std::sqrt;
+    const size_t kept = matches.size() - static_cast<size_t>(verdict.lines);
+    const real noise = real(2 * kMadRelativeError) / sqrt(real(static_cast<int>(kept)));
+    verdict.fits_as_closely = !(verdict.second.residual_scale > (real(1) + noise) * solved.residual_scale);
+    verdict.drifted = verdict.parted_px > verdict.allowed_px && verdict.fits_as_closely;
   }
   give_back_marks(drift_workspace.held, matches);
   return verdict;

@@ -6,8 +6,8 @@
 /// ThinLineParams::check_sigmas of the pose's uncertainty, the lines did not pull the pose, no
 /// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
 /// are solved again from the same start; where the two poses' overlays part by more than the
-/// check allows and the rest fit the second pose more closely than all the matches fit the
-/// first, the lines moved the pose: the tracker takes the second pose or reports the frame
+/// check allows and the rest fit the second pose as closely as all the matches fit the first
+/// (within the noise of a robust scale), the lines moved the pose: the tracker takes the second pose or reports the frame
 /// uncertain (ThinLineParams::check).
 #pragma once
 
@@ -54,10 +54,11 @@ struct DriftVerdict {
   real parted_px{0};
   real allowed_px{0};    ///< px, ThinLineParams::check_sigmas times the second pose's uncertainty
   /// The second pose's residual scale (over the matches not called lines) at most the first's
-  /// (over all of them): the matches off the lines agree with one another better without those
-  /// on them, as they do where the lines pulled the pose, not where true edges were left out.
-  bool fits_closer = false;
-  bool drifted = false;  ///< parted_px above allowed_px, and fits_closer
+  /// (over all of them), within two standard errors of the second: the matches off the lines
+  /// agree with one another as well without those on them, as they do where the lines pulled the
+  /// pose, not where true edges were left out.
+  bool fits_as_closely = false;
+  bool drifted = false;  ///< parted_px above allowed_px, and fits_as_closely
   PoseSolution second;   ///< the second pose, when checked
 };
 
