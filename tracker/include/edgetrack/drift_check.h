@@ -7,8 +7,8 @@
 /// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
 /// are solved again from the same start; where the two poses' overlays part by more than the
 /// check allows and the rest fit the second pose as closely as all the matches fit the first
-/// (within the noise of a robust scale), the lines moved the pose: the tracker takes the second pose or reports the frame
-/// uncertain (ThinLineParams::check).
+/// (within the noise of a robust scale), the lines moved the pose: the tracker takes the second
+/// pose or reports the frame uncertain (ThinLineParams::check).
 #pragma once
 
 #include <vector>
