@@ -114,6 +114,20 @@ void divide_each(int n, T* x, const T& d) {
   });
 }
 
+/// Swaps x[i] and y[i] for i < n (the pivot's column exchange), each in a lane (in_chosen_vectors).
+template <class T>
+void swap_each(int n, T* x, T* y) {
+  T* __restrict p = x;
+  T* __restrict q = y;
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
+    for (int i = 0; i < n; ++i) {
+      const T swap = p[i];
+      p[i] = q[i];
+      q[i] = swap;
+    }
+  });
+}
+
 /// Floating point: C sums of products of `a` with the columns b[0], ..., b[C - 1], each summed in
 /// sum_of_products' order in an accumulator of its own, side by side, so that each addition waits
 /// for another column's instead of its own previous one. The same sums bit for bit.
@@ -296,12 +310,7 @@ void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag
         if (rdiag[k] > rdiag[kmax]) kmax = k;
       }
       if (kmax != j) {
-        T* const akmax = a + kmax * lda;
-        for (int i = 0; i < m; ++i) {
-          const T swap = aj[i];
-          aj[i] = akmax[i];
-          akmax[i] = swap;
-        }
+        minpack_detail::swap_each(m, aj, a + kmax * lda);
         rdiag[kmax] = rdiag[j];
         wa[kmax] = wa[j];
         const int swap = ipvt[j];
