@@ -25,9 +25,9 @@ template <class T>
 int disagreements(const std::vector<T>& input) {
   int bad = 0;
   for (size_t k = 0; k < input.size(); ++k) {
-    std::vector<T> expected = input, values = input, other(input.size());
+    std::vector<T> expected = input, values = input;
     std::nth_element(expected.begin(), expected.begin() + static_cast<std::ptrdiff_t>(k), expected.end());
-    bad += kth_smallest(values.data(), other.data(), values.size(), k) != expected[k];
+    bad += kth_smallest(values.data(), values.size(), k) != expected[k];
   }
   return bad;
 }

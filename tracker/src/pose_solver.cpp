@@ -475,14 +475,13 @@ void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
 }
 
 /// Room for median_of's work between solves: the Jacobian's memory, which LM only uses within
-/// a solve (2 x matches of its 6 x matches).
+/// a solve (matches of its 6 x matches).
 struct OrderWork {
   real* values;
-  real* other;
 };
 OrderWork order_work(PoseWorkspace& workspace, size_t matches) {
   workspace.jacobian.resize(matches * 6);
-  return {workspace.jacobian.data(), workspace.jacobian.data() + matches};
+  return {workspace.jacobian.data()};
 }
 
 /// The median of |values| (the distances may be signed) over the matches not excluded
@@ -504,7 +503,7 @@ real median_of(const std::vector<EdgeMatch>& matches, const std::vector<real>& s
   // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
   if constexpr (std::is_floating_point<real>::value) {
     if (n == 0) return real(0);
-    return kth_smallest(values, work.other, n, mid);
+    return kth_smallest(values, n, mid);
   }
   std::nth_element(values, values + mid, values + n);
   return values[mid];
@@ -544,14 +543,18 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
 }
 
 /// weight_i = 1 - u^2 with u = |d_i| / c (`inv_c` = 1 / c), 0 where u >= 1, as restrict parameters
-/// (see turn_points).
+/// (see turn_points). In floating point 1 - u^2 is below 0 or +0 exactly where u >= 1 (below 1 it
+/// is at least the scalar's resolution), so the weight is chosen by its own sign: no operation
+/// sits on one path of a condition, which would keep the compiler from taking several matches
+/// per instruction.
 __attribute__((always_inline)) inline void weigh_by_tukey(size_t n, const real* __restrict distances, const real& inv_c,
                                                           real* __restrict weights) {
   using std::fabs;
   const real scale = inv_c;
   for (size_t i = 0; i < n; ++i) {
     const real u = fabs(distances[i]) * scale;
-    weights[i] = u >= real(1) ? real(0) : real(1) - u * u;
+    const real weight = real(1) - u * u;
+    weights[i] = weight < real(0) ? real(0) : weight;
   }
 }
 
@@ -566,8 +569,7 @@ int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& dist
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
   if constexpr (std::is_floating_point<real>::value) {
-    // The weights lane by lane, then the outliers from them: below 1, 1 - u^2 is at least the
-    // scalar's resolution, so a weight is 0 exactly where u >= 1.
+    // The weights lane by lane, then the outliers from them: a weight is 0 exactly where u >= 1.
     vector_kernels::run([&]() __attribute__((always_inline)) {
       weigh_by_tukey(matches.size(), distances.data(), inv_c, weights.data());
     });
