@@ -75,16 +75,27 @@ bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
   });
 }
 
-/// Floating point: the squares of x[0..n) added plainly, in order, built for the chosen vectors
-/// (each square in a lane, the additions one after another as written).
+/// Floating point: all_plain(n, x, rdwarf, agiant), and in the same pass `sum`, the squares of
+/// x[0..n) added plainly, in order, built for the chosen vectors (each square and test in a lane,
+/// the additions one after another as written).
 template <class T>
-T plain_sum_of_squares(int n, const T* x) {
+bool plain_sum_of_squares(int n, const T* x, const T& rdwarf, const T& agiant, T& sum) {
   const T* __restrict in = x;
-  return in_chosen_vectors([&]() __attribute__((always_inline)) {
-    T sum(0);
-    for (int i = 0; i < n; ++i) sum += in[i] * in[i];
-    return sum;
+  const T small = rdwarf, large = agiant;
+  T squares(0);
+  const bool plain = in_chosen_vectors([&]() __attribute__((always_inline)) {
+    T s(0);
+    long long outside = 0;
+    for (int i = 0; i < n; ++i) {
+      const T xabs = abs_of(in[i]);
+      outside |= static_cast<long long>(((xabs <= small) & (xabs != T(0))) | !(xabs < large));
+      s += in[i] * in[i];
+    }
+    squares = s;
+    return outside == 0;
   });
+  sum = squares;
+  return plain;
 }
 
 /// y[i] += s x[i]: MINPACK's loop for floating point, each element's product and sum in a lane
@@ -206,7 +217,8 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   const T agiant = machine.rgiant / T(n);
   // All plain (residuals and Jacobians in pixels always are): the three sums below reduce to
   // sqrt(s2), s2 the squares added in order.
-  if (minpack_detail::all_plain(n, x, machine.rdwarf, agiant)) return sqrt(minpack_detail::plain_sum_of_squares(n, x));
+  T squares(0);
+  if (minpack_detail::plain_sum_of_squares(n, x, machine.rdwarf, agiant, squares)) return sqrt(squares);
   // Three sums: small components scaled by the largest small one (x3max), large ones by the
   // largest large one (x1max), the rest plainly.
   T s1(0), s2(0), s3(0), x1max(0), x3max(0);
