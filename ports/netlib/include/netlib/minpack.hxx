@@ -271,8 +271,11 @@ void side_by_side_norms(int m, const T* a, int lda, T* norms, const minpack_mach
       for (int c = 0; c < C; ++c) sum[c] += a[c * lda + i] * a[c * lda + i];
     for (int c = 0; c < C; ++c) s[c] = sum[c];
   });
+  // Columns stored one after another (lda == m) are tested in one pass; a column is tested alone
+  // only when some component of them is outside the plain range.
+  const bool all = lda == m && all_plain(C * m, a, machine.rdwarf, agiant);
   for (int c = 0; c < C; ++c)
-    norms[c] = all_plain(m, a + c * lda, machine.rdwarf, agiant) ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
+    norms[c] = all || all_plain(m, a + c * lda, machine.rdwarf, agiant) ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
 }
 
 /// The norms of the n columns of a (m rows, leading dimension lda), as enorm gives each.
