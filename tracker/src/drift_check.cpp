@@ -74,7 +74,7 @@ real start_cut(const std::vector<EdgeMatch>& matches, const PoseParams& params, 
   for (const EdgeMatch& match : matches)
     if (!match.excluded) scratch.distances[n++] = fabs(dot(match.point.normal, match.point.pixel - match.found));
   if (n == 0) return params.tukey_floor;
-  const real median = median_of_values(scratch.distances.data(), scratch.weights.data(), n);
+  const real median = median_of_values(scratch.distances.data(), n);
   return std::max(params.tukey_c * real(kMadToSigma) * median, params.tukey_floor);
 }
 
