@@ -112,21 +112,34 @@ static void test_pull_gate() {
   all = cube_matches(model.value(), camera, start, pulled, real(2), sigma);
   PoseParams plain;  // least squares: every match pulls
   plain.tukey_c = real(0);
-  const PoseSolution solved = solve_pose(all, camera, start, plain);
+  StartRows rows;  // the first solve's rows at the start, which the gate sums
+  PoseWorkspace workspace;
+  workspace.start_rows = &rows;
+  const PoseSolution solved = solve_pose(all, camera, start, plain, workspace);
   TEST("the pulled pose solves", solved.solved, true);
+  TEST("and keeps its rows at the start", rows.kept && rows.residuals.size() == all.size(), true);
   if (!solved.solved) return;
   const Se3& pose = solved.camera_from_model;
+  const StartRows all_rows = rows;
   for (EdgeMatch& m : all) m.excluded = m.point.edge == pulled;
-  const real pulled_out = excluded_pull_sigmas(all, model.value(), camera, start, pose, sigma, wide);
-  const PoseSolution back = solve_pose(all, camera, start, plain);
+  const real pulled_out = excluded_pull_sigmas(all, rows, model.value(), start, pose, sigma);
+  workspace.start_rows = nullptr;
+  const PoseSolution back = solve_pose(all, camera, start, plain, workspace);
   const real uncertainty = pose_uncertainty_px(all, model.value(), camera, back.camera_from_model, sigma, c, wide);
   const real parted = largest_overlay_distance_px(model.value(), camera, pose, back.camera_from_model);
   for (EdgeMatch& m : all) m.excluded = false;
-  const real none_out = excluded_pull_sigmas(all, model.value(), camera, start, pose, sigma, wide);
+  rows = all_rows;
+  const real none_out = excluded_pull_sigmas(all, rows, model.value(), start, pose, sigma);
   std::vector<EdgeMatch> unpulled = cube_matches(model.value(), camera, start, -1, real(0), sigma);
-  const PoseSolution noisy = solve_pose(unpulled, camera, start, plain);
+  workspace.start_rows = &rows;
+  const PoseSolution noisy = solve_pose(unpulled, camera, start, plain, workspace);
   for (EdgeMatch& m : unpulled) m.excluded = m.point.edge == kept;
-  const real true_out = excluded_pull_sigmas(unpulled, model.value(), camera, start, noisy.camera_from_model, sigma, wide);
+  const real true_out = excluded_pull_sigmas(unpulled, rows, model.value(), start, noisy.camera_from_model, sigma);
+  rows.kept = false;
+  TEST("without the first solve's rows the gate sends every frame to the second solve",
+       excluded_pull_sigmas(unpulled, rows, model.value(), start, noisy.camera_from_model, sigma) ==
+           real(kUnconstrainedPx),
+       true);
   std::printf("%s: pull without the pulled edge %.2f sigmas (overlay parted %.3f px, uncertainty %.3f px), with every "
               "match %.3f; without an edge of a frame with none pulled %.2f\n",
               real_name(), static_cast<double>(pulled_out), static_cast<double>(parted),

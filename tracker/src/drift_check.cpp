@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "edgetrack/order_statistic.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/thin_lines.h"
 #include "edgetrack/tracker_memory.h"
@@ -62,22 +61,6 @@ int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch
   return count;
 }
 
-/// The Tukey cut the pose step's first solve weighs the matches not excluded with at the start
-/// (solve_pose, PoseParams::weigh_at_start): max(tukey_c * 1.4826 * median |delta|, tukey_floor)
-/// px over their distances at the start, in the pose workspace's distances and weights (which
-/// mean nothing between solves).
-real start_cut(const std::vector<EdgeMatch>& matches, const PoseParams& params, PoseWorkspace& scratch) {
-  using std::fabs;
-  scratch.distances.resize(matches.size());
-  scratch.weights.resize(matches.size());
-  size_t n = 0;
-  for (const EdgeMatch& match : matches)
-    if (!match.excluded) scratch.distances[n++] = fabs(dot(match.point.normal, match.point.pixel - match.found));
-  if (n == 0) return params.tukey_floor;
-  const real median = median_of_values(scratch.distances.data(), n);
-  return std::max(params.tukey_c * real(kMadToSigma) * median, params.tukey_floor);
-}
-
 /// The first solve's marks, held while the second solve overwrites them, and given back.
 void hold_marks(const std::vector<EdgeMatch>& matches, std::vector<DriftWorkspace::HeldMarks>& held) {
   held.resize(matches.size());
@@ -108,8 +91,8 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // only where their step from the start would end as far away as the check could report is the
   // second solve run.
   const real first_sigma = std::max(solved.residual_scale, sigma_floor);
-  verdict.pull_sigmas = excluded_pull_sigmas(matches, model, camera, start, solved.camera_from_model, first_sigma,
-                                             start_cut(matches, pose_params, workspace));
+  verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
+                                             solved.camera_from_model, first_sigma);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;
@@ -119,7 +102,10 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // (test_normal_equations.cxx) in fewer instructions; a check needs no more.
   PoseParams second = pose_params;
   second.solver = PoseSolver::kNormalEquations;
+  StartRows* const first_rows = workspace.start_rows;  // the first solve's, which the gate has read
+  workspace.start_rows = nullptr;
   verdict.second = solve_pose(matches, camera, start, second, workspace);
+  workspace.start_rows = first_rows;
   if (verdict.second.solved) {
     verdict.checked = true;
     verdict.parted_px = largest_overlay_distance_px(model, camera, solved.camera_from_model,
@@ -143,8 +129,14 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   return verdict;
 }
 
-void DriftWorkspace::reserve(size_t matches) { held.reserve(matches); }
+void DriftWorkspace::reserve(size_t matches) {
+  held.reserve(matches);
+  start_rows.jacobian.reserve(matches * 6);
+  start_rows.residuals.reserve(matches);
+}
 
-size_t DriftWorkspace::heap_bytes() const { return capacity_bytes(held); }
+size_t DriftWorkspace::heap_bytes() const {
+  return capacity_bytes(held) + capacity_bytes(start_rows.jacobian) + capacity_bytes(start_rows.residuals);
+}
 
 }  // namespace edgetrack

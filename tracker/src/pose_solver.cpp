@@ -258,11 +258,16 @@ class PointToLineProblem {
       ++problem->evaluations_;
       if (!problem->f(x, fx)) return -1;
       if (problem->evaluations_ == 1 && problem->measure_start_) problem->start_rms_ = rms(fx, problem->count_);
+      if (problem->evaluations_ == 1 && problem->keep_) problem->keep_->residuals.assign(fx, fx + problem->count_);
     } else if (iflag == 2) {
       if (!problem->gradf(x, fjac, static_cast<size_t>(ldfjac))) return -1;
+      if (problem->keep_ && !problem->keep_->kept && is_start(x)) problem->keep_start_jacobian(fjac, ldfjac);
     }
     return iflag;
   }
+
+  /// Keeps the solve's weighted residuals and Jacobian at its start in `rows` (StartRows).
+  void keep_start_rows(StartRows* rows) { keep_ = rows; }
 
   /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
   bool signed_distances(const real* x, std::vector<real>& out) {
@@ -379,6 +384,20 @@ class PointToLineProblem {
     return true;
   }
 
+  static bool is_start(const real* x) {
+    for (unsigned c = 0; c < 6; ++c)
+      if (!(x[c] == real(0))) return false;
+    return true;
+  }
+
+  void keep_start_jacobian(const real* fjac, int ld) {
+    keep_->jacobian.resize(count_ * 6);
+    for (size_t c = 0; c < 6; ++c)
+      std::copy(fjac + c * static_cast<size_t>(ld), fjac + c * static_cast<size_t>(ld) + count_,
+                keep_->jacobian.begin() + static_cast<std::ptrdiff_t>(c * count_));
+    keep_->kept = keep_->residuals.size() == count_;
+  }
+
   bool evaluated_at(const real* x) const {
     if (!evaluated_) return false;
     for (unsigned c = 0; c < 6; ++c)
@@ -399,6 +418,7 @@ class PointToLineProblem {
   int evaluations_ = 0;
   real start_rms_{0};
   bool measure_start_ = false;
+  StartRows* keep_ = nullptr;
 };
 
 /// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
@@ -436,6 +456,7 @@ SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamer
   const int m = static_cast<int>(matches.size());
   PointToLineProblem problem(matches, workspace.weights, start, camera, workspace);
   if (first) problem.measure_start();
+  if (first && workspace.start_rows) problem.keep_start_rows(workspace.start_rows);
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -615,6 +636,10 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
+  if (workspace.start_rows) {
+    workspace.start_rows->kept = false;
+    workspace.start_rows->residuals.clear();
+  }
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   size_t excluded = 0;
   for (const EdgeMatch& m : matches) excluded += m.excluded;

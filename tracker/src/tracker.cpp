@@ -456,6 +456,8 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   // median, so a start some pixels off keeps the matches near it while a strongest edge on the
   // clutter beyond stands out. A prediction after a loss is no start near anything.
   pose_params.weigh_at_start = !guessing || (start_is_guess_ && !started_ && !motion_.lost_last_frame());
+  // The drift check's gate reads the first solve's rows at the start (drift_check.h).
+  pose_workspace_.start_rows = drift_check_runs(params_.thin_lines) ? &drift_workspace_.start_rows : nullptr;
   result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   resolve_at_own_velocity(start, pose_params, result.pose);
   const bool drifted = check_for_drift(grey, start, pose_params, result.pose);

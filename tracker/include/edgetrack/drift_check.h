@@ -26,8 +26,8 @@ namespace edgetrack {
 inline bool drift_check_runs(const ThinLineParams& lines) { return !lines.enabled && lines.check != DriftAction::kNone; }
 
 /// The drift check's scratch memory, kept by its caller between frames (the tracker does): once
-/// its buffer has reached the largest match count seen (or reserve's), the check allocates
-/// nothing. What it holds between calls means nothing.
+/// its buffers have reached the largest match count seen (or reserve's), the check allocates
+/// nothing. What it holds between calls means nothing but the first solve's rows.
 struct DriftWorkspace {
   /// A match's first-solve marks, held while the second solve overwrites them.
   struct HeldMarks {
@@ -35,6 +35,9 @@ struct DriftWorkspace {
     signed char chosen = 0;  ///< EdgeMatch::chosen, below kMaxHypotheses
   };
   std::vector<HeldMarks> held;
+  /// The pose step's first solve's rows at the start, which the gate reads: the tracker points
+  /// its PoseWorkspace::start_rows here before the frame's solve.
+  StartRows start_rows;
 
   /// The heap its buffer holds (its capacity), for Tracker::memory.
   size_t heap_bytes() const;
@@ -76,7 +79,8 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
 /// pose by more than `lines.check_sigmas` standard deviations (the residual scale taken at least
-/// `sigma_floor`), they are solved again from `start` (pose_params, in `workspace`) and the two
+/// `sigma_floor`; bounded from the rows `solved`'s first solve kept in
+/// `drift_workspace.start_rows`, without them the bound is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the two
 /// poses compared. `matches` come back as they came, the first solve's marks included (held in
 /// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
