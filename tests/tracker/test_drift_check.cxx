@@ -121,6 +121,19 @@ static void test_pull_gate() {
   if (!solved.solved) return;
   const Se3& pose = solved.camera_from_model;
   const StartRows all_rows = rows;
+  PoseWorkspace plain_workspace;  // keeping the rows is a copy: the pose is the same, bit for bit
+  std::vector<EdgeMatch> again = all;
+  TEST("the rows kept or not, the same pose",
+       same_bits(solve_pose(again, camera, start, plain, plain_workspace).camera_from_model, pose), true);
+  PoseParams robust;  // and with the robust rounds, whose first solve is weighted
+  std::vector<EdgeMatch> weighed = all;
+  const Se3 robust_pose = solve_pose(weighed, camera, start, robust, plain_workspace).camera_from_model;
+  StartRows robust_rows;
+  plain_workspace.start_rows = &robust_rows;
+  TEST("and with robust rounds",
+       same_bits(solve_pose(weighed, camera, start, robust, plain_workspace).camera_from_model, robust_pose) &&
+           robust_rows.kept,
+       true);
   for (EdgeMatch& m : all) m.excluded = m.point.edge == pulled;
   const real pulled_out = excluded_pull_sigmas(all, rows, model.value(), start, pose, sigma);
   workspace.start_rows = nullptr;
