@@ -36,6 +36,7 @@ DECLARE(test_lens_tracking_wood_toy);
 DECLARE(test_lens_tracking_wood_toy_barrel);
 DECLARE(test_android_frames);
 DECLARE(test_visp_cube_poses);
+DECLARE(test_drift_check_real_scene);
 DECLARE(test_vector_kernels);
 DECLARE(test_thin_lines);
 DECLARE(test_drift_check);
@@ -77,6 +78,7 @@ void register_tests() {
   REGISTER(test_lens_tracking_wood_toy_barrel);
   REGISTER(test_android_frames);
   REGISTER(test_visp_cube_poses);
+  REGISTER(test_drift_check_real_scene);
   REGISTER(test_vector_kernels);
   REGISTER(test_thin_lines);
   REGISTER(test_drift_check);

@@ -27,17 +27,19 @@ bool read_pgm(const std::string& path, int& width, int& height, std::vector<unsi
 }  // namespace
 
 SequenceRun run_visp_cube(const std::string& visp_images, int frames,
-                          const std::function<void(const Tracker&)>& after_frame) {
+                          const std::function<void(const Tracker&)>& after_frame,
+                          const std::function<void(TrackerParams&)>& adjust, const std::string& model_file) {
   SequenceRun run;
   const std::string mbt = visp_images + "/mbt/";
-  const Result<EdgeModel> model = load_model(mbt + "cube.cao");
+  const Result<EdgeModel> model = load_model(mbt + model_file);
   TrackerConfig config;
   const auto read = apply_visp_config(mbt + "cube.xml", config);
   const Result<Se3> initial = read_pos(mbt + "cube.0.pos");
   if (!model.ok() || !read.ok() || !initial.ok()) {
-    std::fprintf(stderr, "%s: the model, cube.xml or cube.0.pos cannot be read\n", mbt.c_str());
+    std::fprintf(stderr, "%s: %s, cube.xml or cube.0.pos cannot be read\n", mbt.c_str(), model_file.c_str());
     return run;
   }
+  if (adjust) adjust(config.params);
   std::vector<unsigned char> grey;
   int width = 0, height = 0;
   const auto read_frame = [&](int k) {

@@ -18,8 +18,11 @@ constexpr const char* kVispCubeGolden = "mbt_cube_double_poses.txt";
 
 /// The first `frames` frames of mbt/cube under `visp_images` (the ViSP-images directory)
 /// tracked; `loaded` is false (after a line on stderr) when a file cannot be read. `after_frame`,
-/// when given, sees the tracker after each frame.
+/// when given, sees the tracker after each frame; `adjust`, when given, changes the settings
+/// cube.xml gave; `model_file` is the model in mbt/ (cube.cao or cube_and_cylinder.cao).
 SequenceRun run_visp_cube(const std::string& visp_images, int frames,
-                          const std::function<void(const edgetrack::Tracker&)>& after_frame = {});
+                          const std::function<void(const edgetrack::Tracker&)>& after_frame = {},
+                          const std::function<void(edgetrack::TrackerParams&)>& adjust = {},
+                          const std::string& model_file = "cube.cao");
 
 }  // namespace edgetrack_test

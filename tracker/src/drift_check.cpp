@@ -6,6 +6,7 @@
 
 #include "edgetrack/pose_uncertainty.h"
 #include "edgetrack/thin_lines.h"
+#include "edgetrack/tracker_memory.h"
 
 namespace edgetrack {
 
@@ -42,6 +43,11 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 namespace {
 
+/// The relative standard deviation of a median absolute deviation of n normal residuals, times
+/// sqrt(n), for large n: the MAD's efficiency against the standard deviation is 0.37, so
+/// 1 / sqrt(2 * 0.37) (Rousseeuw and Croux, 1993).
+constexpr double kMadRelativeError = 1.16;
+
 /// Masks out the matches whose used() hypothesis, or strongest one (where a second solve starts),
 /// lies on a thin line; returns how many.
 int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const ThinLineParams& lines) {
@@ -55,34 +61,16 @@ int exclude_thin_lines(const vpImage<unsigned char>& grey, std::vector<EdgeMatch
   return count;
 }
 
-/// The Tukey cut the pose step's first solve weighs the matches not excluded with at the start
-/// (solve_pose, PoseParams::weigh_at_start): max(tukey_c * 1.4826 * median |delta|, tukey_floor)
-/// px over their distances at the start, in `scratch` (the pose workspace's, which means nothing
-/// between solves).
-real start_cut(const std::vector<EdgeMatch>& matches, const PoseParams& params, std::vector<real>& scratch) {
-  using std::fabs;
-  scratch.resize(matches.size());
-  size_t n = 0;
-  for (const EdgeMatch& match : matches)
-    if (!match.excluded) scratch[n++] = fabs(dot(match.point.normal, match.point.pixel - match.found));
-  if (n == 0) return params.tukey_floor;
-  std::nth_element(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(n / 2),
-                   scratch.begin() + static_cast<std::ptrdiff_t>(n));
-  return std::max(params.tukey_c * real(kMadToSigma) * scratch[n / 2], params.tukey_floor);
-}
-
 /// The first solve's marks, held while the second solve overwrites them, and given back.
-void hold_marks(std::vector<EdgeMatch>& matches) {
-  for (EdgeMatch& match : matches) {
-    match.held_outlier = match.outlier;
-    match.held_chosen = static_cast<signed char>(match.chosen);
-  }
+void hold_marks(const std::vector<EdgeMatch>& matches, std::vector<DriftWorkspace::HeldMarks>& held) {
+  held.resize(matches.size());
+  for (size_t i = 0; i < matches.size(); ++i) held[i] = {matches[i].outlier, static_cast<signed char>(matches[i].chosen)};
 }
-void give_back_marks(std::vector<EdgeMatch>& matches) {
-  for (EdgeMatch& match : matches) {
-    match.outlier = match.held_outlier;
-    match.chosen = match.held_chosen;
-    match.excluded = false;
+void give_back_marks(const std::vector<DriftWorkspace::HeldMarks>& held, std::vector<EdgeMatch>& matches) {
+  for (size_t i = 0; i < matches.size(); ++i) {
+    matches[i].outlier = held[i].outlier;
+    matches[i].chosen = held[i].chosen;
+    matches[i].excluded = false;
   }
 }
 
@@ -91,8 +79,11 @@ void give_back_marks(std::vector<EdgeMatch>& matches) {
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
                          const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
-                         PoseWorkspace& workspace) {
+                         PoseWorkspace& workspace, DriftWorkspace& drift_workspace) {
   DriftVerdict verdict;
+  // Room for the held marks on every frame, not only where a second solve runs: the buffer
+  // grows with the largest frame seen, as the tracker's others do.
+  drift_workspace.reserve(matches.size());
   verdict.lines = exclude_thin_lines(grey, matches, lines);
   if (verdict.lines == 0) return verdict;
   // Matches on the object's own edges that the test calls lines (texture, a real scene's
@@ -100,18 +91,21 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // only where their step from the start would end as far away as the check could report is the
   // second solve run.
   const real first_sigma = std::max(solved.residual_scale, sigma_floor);
-  verdict.pull_sigmas = excluded_pull_sigmas(matches, model, camera, start, solved.camera_from_model, first_sigma,
-                                             start_cut(matches, pose_params, workspace.distances));
+  verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
+                                             solved.camera_from_model, first_sigma);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;
   }
-  hold_marks(matches);
+  hold_marks(matches, drift_workspace.held);
   // The 6 x 6 normal equations' LM: lmder's poses within the golden tolerances
   // (test_normal_equations.cxx) in fewer instructions; a check needs no more.
   PoseParams second = pose_params;
   second.solver = PoseSolver::kNormalEquations;
+  StartRows* const first_rows = workspace.start_rows;  // the first solve's, which the gate has read
+  workspace.start_rows = nullptr;
   verdict.second = solve_pose(matches, camera, start, second, workspace);
+  workspace.start_rows = first_rows;
   if (verdict.second.solved) {
     verdict.checked = true;
     verdict.parted_px = largest_overlay_distance_px(model, camera, solved.camera_from_model,
@@ -119,10 +113,30 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
     const real sigma = std::max(verdict.second.residual_scale, sigma_floor);
     verdict.allowed_px = lines.check_sigmas * pose_uncertainty_px(matches, model, camera, verdict.second.camera_from_model,
                                                                   sigma, pose_params.tukey_c, pose_params.tukey_floor);
-    verdict.drifted = verdict.parted_px > verdict.allowed_px;
+    // Leaving out matches that pulled the pose off the rest lets the rest fit their own pose
+    // more closely than all of them fitted the first; leaving out matches that agreed with the
+    // rest (true edges the test calls lines) does not, and a pose the rest then fit worse is no
+    // correction. Worse: beyond two standard errors of the second scale, a median absolute
+    // deviation of the n matches off the lines (kMadRelativeError / sqrt(n) of it, for normal
+    // residuals).
+    using std::sqrt;
+    const size_t kept = matches.size() - static_cast<size_t>(verdict.lines);
+    const real noise = real(2 * kMadRelativeError) / sqrt(real(static_cast<int>(kept)));
+    verdict.fits_as_closely = !(verdict.second.residual_scale > (real(1) + noise) * solved.residual_scale);
+    verdict.drifted = verdict.parted_px > verdict.allowed_px && verdict.fits_as_closely;
   }
-  give_back_marks(matches);
+  give_back_marks(drift_workspace.held, matches);
   return verdict;
+}
+
+void DriftWorkspace::reserve(size_t matches) {
+  held.reserve(matches);
+  start_rows.jacobian.reserve(matches * 6);
+  start_rows.residuals.reserve(matches);
+}
+
+size_t DriftWorkspace::heap_bytes() const {
+  return capacity_bytes(held) + capacity_bytes(start_rows.jacobian) + capacity_bytes(start_rows.residuals);
 }
 
 }  // namespace edgetrack

@@ -258,11 +258,16 @@ class PointToLineProblem {
       ++problem->evaluations_;
       if (!problem->f(x, fx)) return -1;
       if (problem->evaluations_ == 1 && problem->measure_start_) problem->start_rms_ = rms(fx, problem->count_);
+      if (problem->evaluations_ == 1 && problem->keep_) problem->keep_->residuals.assign(fx, fx + problem->count_);
     } else if (iflag == 2) {
       if (!problem->gradf(x, fjac, static_cast<size_t>(ldfjac))) return -1;
+      if (problem->keep_ && !problem->keep_->kept && is_start(x)) problem->keep_start_jacobian(fjac, ldfjac);
     }
     return iflag;
   }
+
+  /// Keeps the solve's weighted residuals and Jacobian at its start in `rows` (StartRows).
+  void keep_start_rows(StartRows* rows) { keep_ = rows; }
 
   /// The unweighted signed distances delta_i at x, for the next round's choice and weights.
   bool signed_distances(const real* x, std::vector<real>& out) {
@@ -379,6 +384,20 @@ class PointToLineProblem {
     return true;
   }
 
+  static bool is_start(const real* x) {
+    for (unsigned c = 0; c < 6; ++c)
+      if (!(x[c] == real(0))) return false;
+    return true;
+  }
+
+  void keep_start_jacobian(const real* fjac, int ld) {
+    keep_->jacobian.resize(count_ * 6);
+    for (size_t c = 0; c < 6; ++c)
+      std::copy(fjac + c * static_cast<size_t>(ld), fjac + c * static_cast<size_t>(ld) + count_,
+                keep_->jacobian.begin() + static_cast<std::ptrdiff_t>(c * count_));
+    keep_->kept = keep_->residuals.size() == count_;
+  }
+
   bool evaluated_at(const real* x) const {
     if (!evaluated_) return false;
     for (unsigned c = 0; c < 6; ++c)
@@ -399,6 +418,7 @@ class PointToLineProblem {
   int evaluations_ = 0;
   real start_rms_{0};
   bool measure_start_ = false;
+  StartRows* keep_ = nullptr;
 };
 
 /// MINPACK's endings that still leave the best estimate LM found: the evaluation limit, and
@@ -436,6 +456,7 @@ SolveResult solve_once(const std::vector<EdgeMatch>& matches, const PinholeCamer
   const int m = static_cast<int>(matches.size());
   PointToLineProblem problem(matches, workspace.weights, start, camera, workspace);
   if (first) problem.measure_start();
+  if (first && workspace.start_rows) problem.keep_start_rows(workspace.start_rows);
   workspace.residuals.resize(matches.size());
   workspace.jacobian.resize(matches.size() * n);
   workspace.work.resize(matches.size());
@@ -475,33 +496,31 @@ void measure_end_rms(const PoseWorkspace& workspace, PoseSolution& solution) {
 }
 
 /// Room for median_of's work between solves: the Jacobian's memory, which LM only uses within
-/// a solve (2 x matches of its 6 x matches).
+/// a solve (matches of its 6 x matches).
 struct OrderWork {
   real* values;
-  real* other;
 };
 OrderWork order_work(PoseWorkspace& workspace, size_t matches) {
   workspace.jacobian.resize(matches * 6);
-  return {workspace.jacobian.data(), workspace.jacobian.data() + matches};
+  return {workspace.jacobian.data()};
 }
 
-/// The median of |values| (the distances may be signed) over the matches not excluded, in
-/// `work` (room for as many).
-real median_of(const std::vector<EdgeMatch>& matches, const std::vector<real>& signed_values, const OrderWork& work) {
+/// The median of |values| (the distances may be signed) over the matches not excluded
+/// (`masked`: some are), in `work` (room for as many).
+real median_of(const std::vector<EdgeMatch>& matches, const std::vector<real>& signed_values, bool masked,
+               const OrderWork& work) {
   using std::fabs;
   real* const values = work.values;
   size_t n = 0;
-  for (size_t i = 0; i < signed_values.size(); ++i)
-    if (!matches[i].excluded) values[n++] = fabs(signed_values[i]);
-  const size_t mid = n / 2;
-  // The same number either way: floating point without a branch per comparison (a host CPU
-  // mispredicts nth_element's), fixed point (ARMv5TE, no such cost) in place.
-  if constexpr (std::is_floating_point<real>::value) {
-    if (n == 0) return real(0);
-    return kth_smallest(values, work.other, n, mid);
+  if (masked) {
+    for (size_t i = 0; i < signed_values.size(); ++i)
+      if (!matches[i].excluded) values[n++] = fabs(signed_values[i]);
+  } else {
+    n = signed_values.size();
+    for (size_t i = 0; i < n; ++i) values[i] = fabs(signed_values[i]);
   }
-  std::nth_element(values, values + mid, values + n);
-  return values[mid];
+  if (n == 0) return real(0);
+  return median_of_values(values, n);
 }
 
 /// Each match uses its hypothesis nearest to the pose where `distances` (signed, to each
@@ -537,27 +556,58 @@ void to_strongest(const std::vector<EdgeMatch>& matches, std::vector<real>& dist
     if (matches[i].chosen != 0) distances[i] = distances[i] + dot(matches[i].point.normal, matches[i].used() - matches[i].found);
 }
 
+/// weight_i = 1 - u^2 with u = |d_i| / c (`inv_c` = 1 / c), 0 where u >= 1, as restrict parameters
+/// (see turn_points). In floating point 1 - u^2 is below 0 or +0 exactly where u >= 1 (below 1 it
+/// is at least the scalar's resolution), so the weight is chosen by its own sign: no operation
+/// sits on one path of a condition, which would keep the compiler from taking several matches
+/// per instruction.
+__attribute__((always_inline)) inline void weigh_by_tukey(size_t n, const real* __restrict distances, const real& inv_c,
+                                                          real* __restrict weights) {
+  using std::fabs;
+  const real scale = inv_c;
+  for (size_t i = 0; i < n; ++i) {
+    const real u = fabs(distances[i]) * scale;
+    const real weight = real(1) - u * u;
+    weights[i] = weight < real(0) ? real(0) : weight;
+  }
+}
+
 /// The square roots of Tukey's weights, 1 - (d / c)^2, of the signed distances, with
 /// c = max(tukey_c * 1.4826 * median |d|, tukey_floor); marks and counts the outliers (weight 0).
-/// An excluded match weighs 0 and is no outlier.
-int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, const PoseParams& params,
-                  const OrderWork& work, std::vector<real>& weights) {
+/// An excluded match (`masked`: some are) weighs 0 and is no outlier.
+int tukey_weights(std::vector<EdgeMatch>& matches, const std::vector<real>& distances, bool masked,
+                  const PoseParams& params, const OrderWork& work, std::vector<real>& weights) {
   using std::fabs;
-  real c = params.tukey_c * real(kMadToSigma) * median_of(matches, distances, work);
+  real c = params.tukey_c * real(kMadToSigma) * median_of(matches, distances, masked, work);
   if (c < params.tukey_floor) c = params.tukey_floor;
   const real inv_c = real(1) / c;  // one division: an ARMv5TE has no divider
   int outliers = 0;
-  for (size_t i = 0; i < matches.size(); ++i) {
-    if (matches[i].excluded) {
-      matches[i].outlier = false;
-      weights[i] = real(0);
-      continue;
+  if constexpr (std::is_floating_point<real>::value) {
+    // The weights lane by lane, then the outliers from them: a weight is 0 exactly where u >= 1.
+    vector_kernels::run([&]() __attribute__((always_inline)) {
+      weigh_by_tukey(matches.size(), distances.data(), inv_c, weights.data());
+    });
+    for (size_t i = 0; i < matches.size(); ++i) {
+      const bool outlier = weights[i] == real(0);
+      matches[i].outlier = outlier;
+      outliers += outlier;
     }
-    const real u = fabs(distances[i]) * inv_c;
-    matches[i].outlier = u >= real(1);
-    weights[i] = matches[i].outlier ? real(0) : real(1) - u * u;
-    outliers += matches[i].outlier;
+  } else {
+    for (size_t i = 0; i < matches.size(); ++i) {
+      const real u = fabs(distances[i]) * inv_c;
+      const bool outlier = u >= real(1);
+      matches[i].outlier = outlier;
+      weights[i] = outlier ? real(0) : real(1) - u * u;
+      outliers += outlier;
+    }
   }
+  if (masked)
+    for (size_t i = 0; i < matches.size(); ++i)
+      if (matches[i].excluded) {
+        outliers -= matches[i].outlier;
+        matches[i].outlier = false;
+        weights[i] = real(0);
+      }
   return outliers;
 }
 
@@ -586,10 +636,18 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   using std::fabs;
   PoseSolution solution;
   solution.camera_from_model = start;
+  if (workspace.start_rows) {
+    workspace.start_rows->kept = false;
+    workspace.start_rows->residuals.clear();
+  }
   const size_t needed = static_cast<size_t>(params.min_points > 6 ? params.min_points : 6);
   size_t excluded = 0;
   for (const EdgeMatch& m : matches) excluded += m.excluded;
   const size_t taken = matches.size() - excluded;
+  const bool masked = excluded > 0;  // the drift check excluded some: the median and weights skip them
+  // Without alternatives (one hypothesis per match) no choice can change between rounds.
+  const bool alternatives = std::any_of(matches.begin(), matches.end(),
+                                        [](const EdgeMatch& m) { return m.alternative_count > 0; });
   if (taken < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   PointToLineProblem::prepare_matches(matches, camera, true, workspace);
@@ -604,9 +662,9 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
     for (size_t i = 0; i < matches.size(); ++i)
       distances[i] = dot(matches[i].point.normal, matches[i].point.pixel - matches[i].found);
     weights.resize(matches.size());
-    tukey_weights(matches, distances, params, order, weights);
+    tukey_weights(matches, distances, masked, params, order, weights);
     for (EdgeMatch& m : matches) m.outlier = false;  // outliers are the last round's
-  } else if (excluded > 0) {
+  } else if (masked) {
     weights.resize(matches.size());
     for (size_t i = 0; i < matches.size(); ++i) weights[i] = matches[i].excluded ? real(0) : real(1);
   }
@@ -617,20 +675,20 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   solution.camera_from_model = first.pose;
   solution.solved = true;
   if (!robust) {
-    solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
+    solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, masked, order);
     return solution;
   }
 
   weights.resize(matches.size());
   bool moved = true;  // whether the last round changed the pose
   for (int round = 0; round < params.robust_rounds; ++round) {
-    const bool rechosen = choose_nearest_hypotheses(matches, distances);
+    const bool rechosen = alternatives && choose_nearest_hypotheses(matches, distances);
     // After a round that left the pose as it was, the same choices and distances would give
     // this round the same weights, start and solve, ending where that one did: so would every
     // round after it.
     if (!moved && !rechosen && distances == workspace.before_round) break;
-    PointToLineProblem::prepare_matches(matches, camera, false, workspace);
-    solution.outliers = tukey_weights(matches, distances, params, order, weights);
+    if (alternatives) PointToLineProblem::prepare_matches(matches, camera, false, workspace);
+    solution.outliers = tukey_weights(matches, distances, masked, params, order, weights);
     if (taken - static_cast<size_t>(solution.outliers) < needed) break;
     workspace.before_round = distances;
     const SolveResult robust_solve =
@@ -646,8 +704,8 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   // distances are those at solution.camera_from_model: solve_once leaves them alone when it fails.
   // The scale reads the strongest edges: on an image unrelated to the model the nearest of
   // several hypotheses is nearer than chance puts one edge, which would hide a lost frame.
-  to_strongest(matches, distances);
-  solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, order);
+  if (alternatives) to_strongest(matches, distances);
+  solution.residual_scale = real(kMadToSigma) * median_of(matches, distances, masked, order);
   return solution;
 }
 

@@ -129,37 +129,30 @@ real whitened_square(const real l[kDof][kDof], const real inv_diagonal[kDof], co
 }
 
 /// Sums the lower triangle of the information matrix over `matches` at `pose` (each row of
-/// W^(1/2) J with Tukey's weights cut at `cut` px; excluded matches left out), and with `pull`
-/// the gradient J^T W delta of their squared distances there, delta to each match's used()
-/// hypothesis (outliers left out), or with `strongest` to its `found` (outliers counted: a solve
-/// from `pose` as its start). Turns in radians.
+/// W^(1/2) J with Tukey's weights cut at `cut` px, of the distances to each match's used()
+/// hypothesis; excluded matches and outliers left out). Turns in radians.
 void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& pose,
-                     const Vec3& centre_mm, const real& cut, real (&information)[kDof][kDof], real* pull,
-                     bool strongest = false) {
+                     const Vec3& centre_mm, const real& cut, real (&information)[kDof][kDof]) {
   using std::fabs;
   const bool through_lens = camera.distorted();
   const real inv_cut = real(1) / cut;
   InformationSum sum(information);
   real g[kDof];
   for (const EdgeMatch& match : matches) {
-    if (match.excluded || (match.outlier && !strongest)) continue;
+    if (match.excluded || match.outlier) continue;
     const Vec3 in_camera = to_millimetres(pose * match.point.point_in_model);
     if (in_camera.z <= real(0)) continue;
     const real inv_z = real(1) / in_camera.z;
     const Vec2 pixel = through_lens
                            ? camera.project_through_lens(in_camera)
                            : Vec2{camera.u0 + camera.px * (in_camera.x * inv_z), camera.v0 + camera.py * (in_camera.y * inv_z)};
-    const real delta = dot(match.point.normal, pixel - (strongest ? match.found : match.used()));
+    const real delta = dot(match.point.normal, pixel - match.used());
     const real u = fabs(delta) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square
     pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
     for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
     sum.add(g);
-    if (pull) {
-      const real weighted = root_weight * delta;
-      for (int k = 0; k < kDof; ++k) pull[k] += weighted * g[k];
-    }
   }
   sum.flush();
 }
@@ -189,18 +182,50 @@ struct FactoredInformation {
   real inv_diagonal[kDof] = {};
 };
 
-/// `matches`' information at `pose` (sum_information's, with `pull` and `strongest` as there;
-/// `pull` then scaled as the turns are): false where a direction is one they do not see.
+/// `matches`' information at `pose` (sum_information's): false where a direction is one they
+/// do not see.
 bool factor_at(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
-               const Se3& pose, const real& cut, real* pull, bool strongest, FactoredInformation& f) {
+               const Se3& pose, const real& cut, FactoredInformation& f) {
   f.perturbation = perturbation_of(model);
   f.inv_radius = real(1) / f.perturbation.radius_mm;
   f.centre_mm = to_millimetres(pose * f.perturbation.centre);
-  sum_information(matches, camera, pose, f.centre_mm, cut, f.l, pull, strongest);
+  sum_information(matches, camera, pose, f.centre_mm, cut, f.l);
   scale_turns(f.l, f.inv_radius);
-  if (pull)
-    for (int k = 3; k < kDof; ++k) pull[k] = f.inv_radius * pull[k];
   return factor_information(f.l, f.inv_diagonal);
+}
+
+/// The pose step's rows at `start` (a move v of the model's origin, mm, and a turn w about it,
+/// radians) in the perturbation's coordinates, a move v' of the model's centre and the turn
+/// times the radius, w' = r w: v = v' + d x w (d the centre's offset from the origin in the
+/// camera frame, mm), so H' = T^T H T and g' = T^T g with T = [[I, hat(d) / r], [0, I / r]], on
+/// the lower triangle `h` and `g` in place. Summed at the origin the turns' columns are as
+/// large as the model is far from it; about the centre they are balanced as factor_information
+/// needs.
+void to_perturbation(const Vec3& d, const real& inv_radius, real (&h)[kDof][kDof], real (&g)[kDof]) {
+  real full[kDof][kDof];
+  for (int i = 0; i < kDof; ++i)
+    for (int j = 0; j <= i; ++j) full[i][j] = full[j][i] = h[i][j];
+  // S = hat(d) / r; the columns of T's upper right block.
+  const real s[3][3] = {{real(0), -d.z * inv_radius, d.y * inv_radius},
+                        {d.z * inv_radius, real(0), -d.x * inv_radius},
+                        {-d.y * inv_radius, d.x * inv_radius, real(0)}};
+  // P = A S + B / r (the vv-w' block); C' = S^T P + (B^T S + C / r) / r.
+  real p[3][3], q[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      p[i][j] = sum_of_products(full[i][0], s[0][j], full[i][1], s[1][j], full[i][2], s[2][j]) + full[i][3 + j] * inv_radius;
+      q[i][j] = sum_of_products(full[3 + i][0], s[0][j], full[3 + i][1], s[1][j], full[3 + i][2], s[2][j]) +
+                full[3 + i][3 + j] * inv_radius;
+    }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) h[3 + i][j] = p[j][i];
+    for (int j = 0; j <= i; ++j)
+      h[3 + i][3 + j] = sum_of_products(s[0][i], p[0][j], s[1][i], p[1][j], s[2][i], p[2][j]) + q[i][j] * inv_radius;
+  }
+  real turned[3];
+  for (int i = 0; i < 3; ++i)
+    turned[i] = sum_of_products(s[0][i], g[0], s[1][i], g[1], s[2][i], g[2]) + g[3 + i] * inv_radius;
+  for (int i = 0; i < 3; ++i) g[3 + i] = turned[i];
 }
 
 }  // namespace
@@ -212,7 +237,7 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   real cut = tukey_c * sigma;
   if (cut < tukey_floor) cut = tukey_floor;
   FactoredInformation f;
-  if (!factor_at(matches, model, camera, pose, cut, nullptr, false, f)) return unconstrained;
+  if (!factor_at(matches, model, camera, pose, cut, f)) return unconstrained;
   const real(&information)[kDof][kDof] = f.l;
   const real(&inv_diagonal)[kDof] = f.inv_diagonal;
   const real& inv_radius = f.inv_radius;
@@ -243,18 +268,35 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   return deviation > unconstrained ? unconstrained : deviation;
 }
 
-real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
-                          const Se3& start, const Se3& solved, const real& sigma, const real& cut) {
+real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
+                          const Se3& start, const Se3& solved, const real& sigma) {
   using std::sqrt;
   const real unconstrained = real(kUnconstrainedPx);
-  real pull[kDof] = {};
-  FactoredInformation f;
-  if (!factor_at(matches, model, camera, start, cut, pull, true, f)) return unconstrained;
-  const real(&information)[kDof][kDof] = f.l;
-  const Perturbation& perturbation = f.perturbation;
+  const size_t m = matches.size();
+  if (!rows.kept || rows.residuals.size() != m || rows.jacobian.size() != m * kDof) return unconstrained;
+  real* const residual = rows.residuals.data();
+  real* column[kDof];
+  for (int k = 0; k < kDof; ++k) column[k] = rows.jacobian.data() + static_cast<size_t>(k) * m;
+  for (size_t i = 0; i < m; ++i)
+    if (matches[i].excluded) {
+      residual[i] = real(0);
+      for (int k = 0; k < kDof; ++k) column[k][i] = real(0);
+    }
+  const int count = static_cast<int>(m);
+  real h[kDof][kDof] = {}, pull[kDof];
+  for (int i = 0; i < kDof; ++i) {
+    for (int j = 0; j <= i; ++j) h[i][j] = sum_of_products(count, column[i], column[j]);
+    pull[i] = sum_of_products(count, column[i], residual);
+  }
+  const Perturbation perturbation = perturbation_of(model);
+  const real inv_radius = real(1) / perturbation.radius_mm;
+  const Vec3 centre_mm = to_millimetres(start * perturbation.centre);
+  to_perturbation(centre_mm - to_millimetres(start.translation()), inv_radius, h, pull);
+  real inv_diagonal[kDof];
+  if (!factor_information(h, inv_diagonal)) return unconstrained;
   // The first solve's move from the start in the same coordinates: the model centre's
   // displacement (mm) and the turn about it times the radius.
-  const Vec3 moved = to_millimetres(solved * perturbation.centre) - f.centre_mm;
+  const Vec3 moved = to_millimetres(solved * perturbation.centre) - centre_mm;
   const Vec3 turn = perturbation.radius_mm * rotation_log(solved.rotation() * start.rotation().transpose());
   const real first[kDof] = {moved.x, moved.y, moved.z, turn.x, turn.y, turn.z};
   // |L^T (Delta_2 - Delta_1)| with L L^T Delta_2 = -g: |L^-1 g + L^T Delta_1|.
@@ -262,12 +304,12 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, const EdgeModel
   real square(0);
   for (int k = 0; k < kDof; ++k) {
     real s = pull[k];
-    for (int j = 0; j < k; ++j) s -= information[k][j] * z[j];
-    z[k] = s * f.inv_diagonal[k];
+    for (int j = 0; j < k; ++j) s -= h[k][j] * z[j];
+    z[k] = s * inv_diagonal[k];
   }
   for (int j = 0; j < kDof; ++j) {
     real y(0);
-    for (int k = j; k < kDof; ++k) y += information[k][j] * first[k];
+    for (int k = j; k < kDof; ++k) y += h[k][j] * first[k];
     const real component = z[j] + y;
     if (!(component < kWhitenedCap && component > -kWhitenedCap)) return unconstrained;
     square += component * component;

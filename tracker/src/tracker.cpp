@@ -117,6 +117,7 @@ class Tracker::State {
   std::vector<PixelBox> read_boxes_;  ///< per visible point, the pixels its moving-edge search reads
   std::vector<EdgeMatch> matches_;
   PoseWorkspace pose_workspace_;
+  DriftWorkspace drift_workspace_;
   RowTimes row_times_;  ///< a rolling shutter's control points as sampled, before their rows' times
   ContrastMemory contrast_memory_;  ///< the last trusted frame's edge contrasts
   std::vector<real> references_;    ///< per visible point, its remembered contrast or 0
@@ -273,7 +274,7 @@ TrackerMemory Tracker::memory() const {
                      capacity_bytes(s.solved_pixels_.pixel) + capacity_bytes(s.solved_pixels_.in_front) +
                      capacity_bytes(s.remembered_pixels_.pixel) + capacity_bytes(s.remembered_pixels_.in_front);
   m.matches = capacity_bytes(s.matches_);
-  m.pose_workspace = s.pose_workspace_.heap_bytes() + s.row_times_.heap_bytes();
+  m.pose_workspace = s.pose_workspace_.heap_bytes() + s.drift_workspace_.heap_bytes() + s.row_times_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
   return m;
 }
@@ -304,6 +305,7 @@ void Tracker::State::reserve_for_limits() {
   borrowed_.reserve(points);
   matches_.reserve(points);
   pose_workspace_.reserve(points, camera_.distorted());
+  if (drift_check_runs(params_.thin_lines)) drift_workspace_.reserve(points);
   contrast_memory_.reserve(points, static_cast<size_t>(limits_.primitives));
   if (camera_.distorted()) {
     for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
@@ -334,8 +336,10 @@ void Tracker::State::set_params(const TrackerParams& params) {
   me_ = moving_edge_masks(params.me);
   support_bound_ = support_bound(params.status.support_angle_deg);
   motion_.set_params(params.motion);
-  // A rolling shutter switched on after create takes its room now, not in a frame.
+  // A rolling shutter or the drift check switched on after create takes its room now, not in a frame.
   if (limits_.stated() && params.readout != real(0)) row_times_.reserve(static_cast<size_t>(limits_.control_points));
+  if (limits_.stated() && drift_check_runs(params.thin_lines))
+    drift_workspace_.reserve(static_cast<size_t>(limits_.control_points));
 }
 
 const vpImage<unsigned char>& Tracker::State::grey_scale(const FrameView& frame, unsigned int& converted) {
@@ -452,6 +456,8 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   // median, so a start some pixels off keeps the matches near it while a strongest edge on the
   // clutter beyond stands out. A prediction after a loss is no start near anything.
   pose_params.weigh_at_start = !guessing || (start_is_guess_ && !started_ && !motion_.lost_last_frame());
+  // The drift check's gate reads the first solve's rows at the start (drift_check.h).
+  pose_workspace_.start_rows = drift_check_runs(params_.thin_lines) ? &drift_workspace_.start_rows : nullptr;
   result.pose = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   resolve_at_own_velocity(start, pose_params, result.pose);
   const bool drifted = check_for_drift(grey, start, pose_params, result.pose);
@@ -485,7 +491,7 @@ bool Tracker::State::check_for_drift(const vpImage<unsigned char>& grey, const S
   // loss, is the status rule's to confirm or refute (a correction could keep a wrong one alive).
   if (status_statistics_.phase() == StatusStatistics::Phase::kUnconfirmed || motion_.lost_last_frame()) return false;
   const DriftVerdict verdict = check_drift(grey, matches_, solution, model_, camera_, start, pose_params, lines,
-                                           params_.status.edge_location_px, pose_workspace_);
+                                           params_.status.edge_location_px, pose_workspace_, drift_workspace_);
   if (!verdict.drifted) return false;
   if (lines.check == DriftAction::kReport) return true;
   // Corrected: the second solve's pose is the frame's; its matches stay all the moving edges

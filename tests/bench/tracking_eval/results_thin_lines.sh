@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Prints the markdown section for docs/results/tracking_eval_thin_lines.md (issue 27, drift in
 # clutter): the thin-line test (tracker/include/edgetrack/thin_lines.h) as the drift check
-# (drift_check.h) and switched on as a filter, against no check, on the generated clutter sequences (the cube and the wood toy, dark lines 3,
+# (drift_check.h, the default) and switched on as a filter, against no check, on the generated clutter sequences (the cube and the wood toy, dark lines 3,
 # 5 and 8 mm beside every edge, three seeds) in the double and S40.23 builds, how well it tells the
 # matches on the lines from those on the edges, and what it takes from ViSP's real sequences.
 set -euo pipefail
@@ -22,7 +22,7 @@ castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
 models=$top/data/models
 on=(--thin-lines enabled=1)
 off=(--thin-lines check=0)
-checked=(--thin-lines check=2)
+checked=()  # the defaults: the drift check, correcting
 
 # track_eval EDGETRACK SEQUENCE MODEL OUT [TRACK ARGS...]: tracks a generated sequence from its first
 # pose and evaluates it against its truth into OUT.eval; the poses in OUT.csv.
@@ -41,7 +41,7 @@ s40_apart() {
   bench_value max_distance_mm "$work/$1_s40.eval"
 }
 
-# clutter_row MODEL MM SEED: no check, the drift check (correcting) and the test on as a filter,
+# clutter_row MODEL MM SEED: no check, the defaults (the drift check, correcting) and the test on as a filter,
 # double and S40.23; each frame alone from its true pose (tracking_eval_clutter_dynamics).
 clutter_row() {
   local model=$1 mm=$2 seed=$3 seq=$work/seq
@@ -67,7 +67,7 @@ clutter_row() {
 }
 
 # real_row NAME MODEL CAMERA POS IMAGES [TRACK ARGS...]: points per frame and frames tracked with no
-# check, the drift check (and the frames whose pose it changed) and the test on.
+# check, the defaults' drift check (and the frames whose pose it changed) and the test on.
 real_row() {
   local name=$1 model=$2 camera=$3 pos=$4 images=$5
   shift 5
@@ -91,7 +91,7 @@ bench_heading "The thin-line test in clutter (tracking_eval_thin_lines)" "host d
 echo "The thin-line test (\`<edgetrack><thin_lines>\`; docs/ME.md, \"Thin lines beside the edges\") calls a match"
 echo "on a line when its darker side comes back within a line's width. As a drift check (docs/ME.md,"
 echo "\"The thin-line test as a drift check\"): a frame whose matches off the lines solve to a pose more than 3"
-echo "standard deviations of its uncertainty away takes that pose (\`--thin-lines check=2\`; off by default, for its cost); \`--thin-lines check=0\` is no check, the default;"
+echo "standard deviations of its uncertainty away takes that pose (\`--thin-lines check=2\`, the default); \`--thin-lines check=0\` is no check;"
 echo "\`--thin-lines enabled=1\` is the test as a filter (every line match dropped). Generated: \`edgetrack synth"
 echo "--clutter MM --seed S\` (QVGA, 60 frames, dark lines MM mm beside every model edge), tracked from the true first"
 echo "pose with the camera-only XML. \"alone\": the mean error of each frame solved alone from its true pose"
@@ -124,7 +124,7 @@ for file in "$work"/profiles.*.txt; do
 done
 echo
 echo "ViSP's real sequences from their given poses, with their files as shipped: control points in the pose"
-echo "step per frame and frames reported tracked with no check, with the drift check (\`check=2\`; \"changed\": the"
+echo "step per frame and frames reported tracked with no check, with the defaults' drift check (\`check=2\`; \"changed\": the"
 echo "frames whose pose differs from no check's) and with the filter."
 echo
 echo "| sequence | no check: points | tracked | check: points | tracked | changed | filter: points | tracked |"

@@ -6,8 +6,9 @@
 /// ThinLineParams::check_sigmas of the pose's uncertainty, the lines did not pull the pose, no
 /// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
 /// are solved again from the same start; where the two poses' overlays part by more than the
-/// check allows, the lines moved the pose: the tracker takes the second pose or reports the
-/// frame uncertain (ThinLineParams::check).
+/// check allows and the rest fit the second pose as closely as all the matches fit the first
+/// (within the noise of a robust scale), the lines moved the pose: the tracker takes the second
+/// pose or reports the frame uncertain (ThinLineParams::check).
 #pragma once
 
 #include <vector>
@@ -24,6 +25,26 @@ namespace edgetrack {
 /// Whether `lines` ask for the drift check: a check, and the test not already a filter.
 inline bool drift_check_runs(const ThinLineParams& lines) { return !lines.enabled && lines.check != DriftAction::kNone; }
 
+/// The drift check's scratch memory, kept by its caller between frames (the tracker does): once
+/// its buffers have reached the largest match count seen (or reserve's), the check allocates
+/// nothing. What it holds between calls means nothing but the first solve's rows.
+struct DriftWorkspace {
+  /// A match's first-solve marks, held while the second solve overwrites them.
+  struct HeldMarks {
+    bool outlier = false;
+    signed char chosen = 0;  ///< EdgeMatch::chosen, below kMaxHypotheses
+  };
+  std::vector<HeldMarks> held;
+  /// The pose step's first solve's rows at the start, which the gate reads: the tracker points
+  /// its PoseWorkspace::start_rows here before the frame's solve.
+  StartRows start_rows;
+
+  /// The heap its buffer holds (its capacity), for Tracker::memory.
+  size_t heap_bytes() const;
+  /// Room for `matches` matches.
+  void reserve(size_t matches);
+};
+
 /// What the check found on a frame.
 struct DriftVerdict {
   int lines = 0;  ///< matches whose used hypothesis the test called a line
@@ -35,7 +56,12 @@ struct DriftVerdict {
   /// (vertices, cylinder axis ends, circle centres)
   real parted_px{0};
   real allowed_px{0};    ///< px, ThinLineParams::check_sigmas times the second pose's uncertainty
-  bool drifted = false;  ///< parted_px above allowed_px
+  /// The second pose's residual scale (over the matches not called lines) at most the first's
+  /// (over all of them), within two standard errors of the second: the matches off the lines
+  /// agree with one another as well without those on them, as they do where the lines pulled the
+  /// pose, not where true edges were left out.
+  bool fits_as_closely = false;
+  bool drifted = false;  ///< parted_px above allowed_px, and fits_as_closely
   PoseSolution second;   ///< the second pose, when checked
 };
 
@@ -53,12 +79,13 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
 /// pose by more than `lines.check_sigmas` standard deviations (the residual scale taken at least
-/// `sigma_floor`), they are solved again from `start` (pose_params, in `workspace`) and the two
-/// poses compared. `matches` come back as they came, the first solve's marks included; nothing
-/// is allocated.
+/// `sigma_floor`; bounded from the rows `solved`'s first solve kept in
+/// `drift_workspace.start_rows`, without them the bound is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the two
+/// poses compared. `matches` come back as they came, the first solve's marks included (held in
+/// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
                          const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
-                         PoseWorkspace& workspace);
+                         PoseWorkspace& workspace, DriftWorkspace& drift_workspace);
 
 }  // namespace edgetrack

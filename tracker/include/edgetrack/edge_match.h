@@ -17,12 +17,9 @@ struct EdgeMatch {
   Vec2 found;            ///< the image edge point q_i: the strongest edge along the normal, pixels
   bool outlier = false;  ///< set by the pose step when it gave the match no weight (ViSP's M_ESTIMATOR)
   /// Left out of the pose step: solve_pose gives it no weight and counts it in no median. The
-  /// drift check's mask over the tracker's own matches (drift_check.h); off everywhere else.
+  /// drift check's mask over the tracker's own matches (drift_check.h); off everywhere else. It
+  /// sits in the padding after `outlier`: the match is no larger.
   bool excluded = false;
-  /// The first solve's `outlier` and `chosen`, held by the drift check while its second solve
-  /// overwrites them. These three sit in the padding after `outlier`: the match is no larger.
-  bool held_outlier = false;
-  signed char held_chosen = 0;
   /// The mask response at `found` with the mask oriented along the normal (positive: the image
   /// darkens along the normal, as thin_lines.cpp reads it): the edge's contrast and polarity, for
   /// the next frame's contrast test.

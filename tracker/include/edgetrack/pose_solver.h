@@ -86,6 +86,15 @@ struct PoseSolution {
   bool solved = false;  ///< false when there were too few points or LM reported a failure
 };
 
+/// The first solve's weighted Jacobian and residuals at its start (x = 0, the first Jacobian LM
+/// asks for), kept where a caller asks (PoseWorkspace::start_rows): the drift check's gate
+/// (excluded_pull_sigmas) sums its information from these rows rather than computing them again.
+struct StartRows {
+  std::vector<real> jacobian;   ///< matches x 6, column c from c * matches (MINPACK's layout)
+  std::vector<real> residuals;  ///< the residuals times the first solve's weights
+  bool kept = false;            ///< the last solve_pose's first solve reached its first Jacobian
+};
+
 /// The pose step's scratch memory. A caller that keeps one between solves (the tracker does)
 /// makes no heap allocation once its buffers have reached the largest match count seen; what
 /// it holds between calls means nothing. Per match, the arrays are structures of arrays (one
@@ -106,6 +115,9 @@ struct PoseWorkspace {
   std::vector<real> residuals, jacobian, work;            ///< lmder's fvec, fjac (m x 6) and wa4
   std::vector<real> distances, weights;
   std::vector<real> before_round;  ///< the distances the last robust round weighed (its weights, rounds_settled_px)
+  /// Where set, each solve_pose keeps its first solve's rows at the start there (their room is
+  /// the owner's, not counted in heap_bytes).
+  StartRows* start_rows = nullptr;
 
   /// The heap its buffers hold (their capacities), for Tracker::memory.
   size_t heap_bytes() const;

@@ -9,6 +9,7 @@
 #include "edgetrack/edge_match.h"
 #include "edgetrack/edge_model.h"
 #include "edgetrack/pinhole_camera.h"
+#include "edgetrack/pose_solver.h"
 #include "edgetrack/se3.h"
 
 namespace edgetrack {
@@ -33,13 +34,15 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
 /// How far the pose the matches not excluded give from `start` lies from `solved` (the pose
 /// all of them gave from there), to first order, in that pose's standard deviations: the
 /// Gauss-Newton step Delta_2 = -H^-1 g from `start` of their squared distances to their
-/// strongest edges, Tukey-weighted there with cut `cut` px (H = J^T W J, g = J^T W delta, as
-/// the pose step's first solve weighs them), against the move Delta_1 from `start` to `solved`,
-/// measured by the covariance sigma^2 H^-1: |L^T (Delta_2 - Delta_1)| / sigma. By Cauchy-Schwarz
-/// no overlay point of the two poses then parts, to first order, by more than this many times
-/// the RMS displacement pose_uncertainty_px bounds. At most kUnconstrainedPx, which it also is
-/// when H is singular.
-real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, const EdgeModel& model, const PinholeCamera& camera,
-                          const Se3& start, const Se3& solved, const real& sigma, const real& cut);
+/// strongest edges, weighted as the pose step's first solve weighed them there (H = J^T W J,
+/// g = J^T W delta, summed from that solve's own rows at the start, `rows`), against the move
+/// Delta_1 from `start` to `solved`, measured by the covariance sigma^2 H^-1:
+/// |L^T (Delta_2 - Delta_1)| / sigma, in the coordinates pose_uncertainty_px takes (a move of
+/// the model's centre and a turn about it). By Cauchy-Schwarz no overlay point of the two poses
+/// then parts, to first order, by more than this many times the RMS displacement
+/// pose_uncertainty_px bounds. The excluded matches' rows are set to 0 in `rows`. At most
+/// kUnconstrainedPx, which it also is when H is singular or `rows` were not kept.
+real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
+                          const Se3& start, const Se3& solved, const real& sigma);
 
 }  // namespace edgetrack

@@ -21,16 +21,14 @@ enum class DriftAction {
 /// <edgetrack><thin_lines> block and `track --thin-lines` (set_thin_line_param). As a filter
 /// (`enabled`) it is off by default: on ViSP's real mbt/cube it also takes out true edges (a
 /// third of the matches at return_share 0.2, docs/ME.md "Thin lines beside the edges"). As a
-/// check (`check`) it changes a frame only where leaving those matches out moves the pose by
-/// more than the frame's own noise allows, which taking out true edges does not; it is off by
-/// default too, for its cost: the test and the gate's pass over the matches alone take about 6 %
-/// of a real frame, and on ViSP's real cube the gate still lets the second solve run on some
-/// frames, past issue #27's 10 % in all (docs/ME.md, "The thin-line test as a drift check").
+/// check (`check`) it is on by default, correcting: it changes a frame only where leaving those
+/// matches out moves the pose by more than the frame's own noise allows, which taking out true
+/// edges does not (docs/ME.md, "The thin-line test as a drift check").
 struct ThinLineParams {
   /// As a filter: every match on a thin line takes its next hypothesis off the line, or goes.
   bool enabled = false;
   /// As a check (when `enabled` is off): the drift check's action.
-  DriftAction check = DriftAction::kNone;
+  DriftAction check = DriftAction::kCorrect;
   /// The two poses part (largest overlay point distance) by more than this many times the
   /// second pose's uncertainty (pose_uncertainty.h, a standard deviation): drift. The second
   /// solve runs only where the matches off the lines would move the pose, to first order, by more

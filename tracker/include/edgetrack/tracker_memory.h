@@ -23,7 +23,7 @@ struct TrackerMemory {
   size_t grey_image = 0;       ///< the grey image (none while the frames are grey8, read in place)
   size_t control_points = 0;   ///< the sampled points, then the visible ones; their read boxes and reference contrasts
   size_t matches = 0;          ///< the moving edges' matches
-  size_t pose_workspace = 0;   ///< the pose solver's per-match arrays
+  size_t pose_workspace = 0;   ///< the pose solver's per-match arrays, and the drift check's
   size_t contrast_memory = 0;  ///< the last trusted frame's contrasts
 
   /// One buffer, named as the tables name it.

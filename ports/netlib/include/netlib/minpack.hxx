@@ -7,10 +7,6 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "netlib/minpack.h"
 #include "real/sum_of_products.h"
 #include "real/vector_kernels.h"
@@ -49,43 +45,57 @@ T abs_of(const T& a) {
 }
 
 
-/// Floating point: whether every |x[i]| is 0 or in (rdwarf, agiant), where enorm adds the
-/// squares plainly, in order (a NaN is not). Separate from the sums, so that on SSE2 the test
-/// takes two components per instruction and the sums only their own additions.
-template <class T>
-bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
-  int i = 0;
-  bool plain = true;
-#if defined(__SSE2__)
-  if constexpr (std::is_same<T, double>::value) {
-    const __m128d sign = _mm_set1_pd(-0.0), small = _mm_set1_pd(rdwarf), large = _mm_set1_pd(agiant);
-    const __m128d zero = _mm_setzero_pd();
-    __m128d outside = zero;
-    for (; i + 2 <= n; i += 2) {
-      const __m128d xabs = _mm_andnot_pd(sign, _mm_loadu_pd(x + i));
-      const __m128d tiny = _mm_and_pd(_mm_cmple_pd(xabs, small), _mm_cmpneq_pd(xabs, zero));
-      outside = _mm_or_pd(outside, _mm_or_pd(_mm_cmpnlt_pd(xabs, large), tiny));
-    }
-    plain = _mm_movemask_pd(outside) == 0;
-  }
-#endif
-  for (; i < n; ++i) {
-    const T xabs = abs_of(x[i]);
-    plain &= ((xabs > rdwarf) | (xabs == T(0))) & (xabs < agiant);
-  }
-  return plain;
-}
-
 /// Runs body() built for the chosen vectors (vector_kernels.h) on x86-64, where AVX2 takes four
 /// doubles where SSE2 takes two (the AVX2 target has no fused multiply-add: the same roundings);
 /// elsewhere as built, the choice's test costing more than it could save.
 template <class Body>
-__attribute__((always_inline)) inline void in_chosen_vectors(const Body& body) {
+__attribute__((always_inline)) inline auto in_chosen_vectors(const Body& body) {
 #if defined(__x86_64__)
-  vector_kernels::run(body);
+  return vector_kernels::run(body);
 #else
-  body();
+  return body();
 #endif
+}
+
+/// Floating point: whether every |x[i]| is 0 or in (rdwarf, agiant), where enorm adds the
+/// squares plainly, in order (a NaN is not). Separate from the sums, so that the test takes as
+/// many components per instruction as the chosen vectors hold (in_chosen_vectors): the
+/// comparisons of each component are or-ed into a 64-bit flag, which GCC vectorises.
+template <class T>
+bool all_plain(int n, const T* x, const T& rdwarf, const T& agiant) {
+  const T* __restrict in = x;
+  const T small = rdwarf, large = agiant;
+  return in_chosen_vectors([&]() __attribute__((always_inline)) {
+    long long outside = 0;
+    for (int i = 0; i < n; ++i) {
+      const T xabs = abs_of(in[i]);
+      outside |= static_cast<long long>(((xabs <= small) & (xabs != T(0))) | !(xabs < large));
+    }
+    return outside == 0;
+  });
+}
+
+/// Floating point: all_plain(n, x, rdwarf, agiant), and in the same pass `sum`, the squares of
+/// x[0..n) added plainly, in order, built for the chosen vectors (each square and test in a lane,
+/// the additions one after another as written).
+template <class T>
+bool plain_sum_of_squares(int n, const T* x, const T& rdwarf, const T& agiant, T& sum) {
+  const T* __restrict in = x;
+  const T small = rdwarf, large = agiant;
+  T squares(0);
+  const bool plain = in_chosen_vectors([&]() __attribute__((always_inline)) {
+    T s(0);
+    long long outside = 0;
+    for (int i = 0; i < n; ++i) {
+      const T xabs = abs_of(in[i]);
+      outside |= static_cast<long long>(((xabs <= small) & (xabs != T(0))) | !(xabs < large));
+      s += in[i] * in[i];
+    }
+    squares = s;
+    return outside == 0;
+  });
+  sum = squares;
+  return plain;
 }
 
 /// y[i] += s x[i]: MINPACK's loop for floating point, each element's product and sum in a lane
@@ -115,17 +125,37 @@ void divide_each(int n, T* x, const T& d) {
   });
 }
 
+/// Swaps x[i] and y[i] for i < n (the pivot's column exchange), each in a lane (in_chosen_vectors).
+template <class T>
+void swap_each(int n, T* x, T* y) {
+  T* __restrict p = x;
+  T* __restrict q = y;
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
+    for (int i = 0; i < n; ++i) {
+      const T swap = p[i];
+      p[i] = q[i];
+      q[i] = swap;
+    }
+  });
+}
+
 /// Floating point: C sums of products of `a` with the columns b[0], ..., b[C - 1], each summed in
 /// sum_of_products' order in an accumulator of its own, side by side, so that each addition waits
 /// for another column's instead of its own previous one. The same sums bit for bit.
+/// Built for the chosen vectors (in_chosen_vectors), GCC takes four rows of the C columns at
+/// once and adds them to the C sums row after row, each column's sum in a lane.
 template <int C, class T>
 void side_by_side_sums(int n, const T* a, T* const* b, T* sums) {
-  T s[C] = {};
-  for (int i = 0; i < n; ++i) {
-    const T ai = a[i];
-    for (int c = 0; c < C; ++c) s[c] += ai * b[c][i];
-  }
-  for (int c = 0; c < C; ++c) sums[c] = s[c];
+  const T* column[C];
+  for (int c = 0; c < C; ++c) column[c] = b[c];
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
+    T s[C] = {};
+    for (int i = 0; i < n; ++i) {
+      const T ai = a[i];
+      for (int c = 0; c < C; ++c) s[c] += ai * column[c][i];
+    }
+    for (int c = 0; c < C; ++c) sums[c] = s[c];
+  });
 }
 
 /// How many sums run side by side: a pose's six Jacobian columns (and with a right-hand side,
@@ -187,11 +217,8 @@ T enorm(int n, const T* x, const minpack_machine<T>& machine) {
   const T agiant = machine.rgiant / T(n);
   // All plain (residuals and Jacobians in pixels always are): the three sums below reduce to
   // sqrt(s2), s2 the squares added in order.
-  if (minpack_detail::all_plain(n, x, machine.rdwarf, agiant)) {
-    T sum(0);
-    for (int i = 0; i < n; ++i) sum += x[i] * x[i];
-    return sqrt(sum);
-  }
+  T squares(0);
+  if (minpack_detail::plain_sum_of_squares(n, x, machine.rdwarf, agiant, squares)) return sqrt(squares);
   // Three sums: small components scaled by the largest small one (x3max), large ones by the
   // largest large one (x1max), the rest plainly.
   T s1(0), s2(0), s3(0), x1max(0), x3max(0);
@@ -237,11 +264,18 @@ template <int C, class T>
 void side_by_side_norms(int m, const T* a, int lda, T* norms, const minpack_machine<T>& machine) {
   using std::sqrt;
   const T agiant = machine.rgiant / T(m);
-  T s[C] = {};
-  for (int i = 0; i < m; ++i)
-    for (int c = 0; c < C; ++c) s[c] += a[c * lda + i] * a[c * lda + i];
+  T s[C];
+  in_chosen_vectors([&]() __attribute__((always_inline)) {
+    T sum[C] = {};
+    for (int i = 0; i < m; ++i)
+      for (int c = 0; c < C; ++c) sum[c] += a[c * lda + i] * a[c * lda + i];
+    for (int c = 0; c < C; ++c) s[c] = sum[c];
+  });
+  // Columns stored one after another (lda == m) are tested in one pass; a column is tested alone
+  // only when some component of them is outside the plain range.
+  const bool all = lda == m && all_plain(C * m, a, machine.rdwarf, agiant);
   for (int c = 0; c < C; ++c)
-    norms[c] = all_plain(m, a + c * lda, machine.rdwarf, agiant) ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
+    norms[c] = all || all_plain(m, a + c * lda, machine.rdwarf, agiant) ? sqrt(s[c]) : enorm(m, a + c * lda, machine);
 }
 
 /// The norms of the n columns of a (m rows, leading dimension lda), as enorm gives each.
@@ -291,12 +325,7 @@ void householder_qr(int m, int n, T* a, int lda, bool pivot, int* ipvt, T* rdiag
         if (rdiag[k] > rdiag[kmax]) kmax = k;
       }
       if (kmax != j) {
-        T* const akmax = a + kmax * lda;
-        for (int i = 0; i < m; ++i) {
-          const T swap = aj[i];
-          aj[i] = akmax[i];
-          akmax[i] = swap;
-        }
+        minpack_detail::swap_each(m, aj, a + kmax * lda);
         rdiag[kmax] = rdiag[j];
         wa[kmax] = wa[j];
         const int swap = ipvt[j];
