@@ -3,10 +3,13 @@
 #include "edgetrack/pose_uncertainty.h"
 
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/small_cholesky.h"
 #include "real/sum_of_products.h"
+#include "real/vector_kernels.h"
 
 namespace edgetrack {
 namespace {
@@ -80,25 +83,50 @@ void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const
 }
 
 /// The lower triangle of the information matrix, sum of r r^T over rows r of W^(1/2) J, summed
-/// a block of rows at a time: column sums of products (sum_of_products.h) instead of a product
-/// and a sum per row and entry.
+/// a block of rows at a time, each entry's block sum in order and then added to the entry.
+/// Floating point: the rows stored as they come, and a row's six sums taken together over the
+/// block (kept in vector registers, each lane one entry's sum in the same order); fixed point:
+/// column sums of products (sum_of_products.h: dot_product's exact sum, rounded once).
 class InformationSum {
  public:
   explicit InformationSum(real (&information)[kDof][kDof]) : information_(information) {}
   void add(const real row[kDof]) {
-    for (int k = 0; k < kDof; ++k) rows_[k][count_] = row[k];
+    if constexpr (kByRow) {
+      for (int k = 0; k < kDof; ++k) rows_[count_][k] = row[k];
+    } else {
+      for (int k = 0; k < kDof; ++k) rows_[k][count_] = row[k];
+    }
     if (++count_ == kBlock) flush();
   }
   void flush() {
-    for (int i = 0; i < kDof; ++i)
-      for (int j = 0; j <= i; ++j) information_[i][j] += sum_of_products(count_, rows_[i], rows_[j]);
+    if constexpr (kByRow) {
+      vector_kernels::run([&]() __attribute__((always_inline)) { add_block_by_rows(); });
+    } else {
+      for (int i = 0; i < kDof; ++i)
+        for (int j = 0; j <= i; ++j) information_[i][j] += sum_of_products(count_, rows_[i], rows_[j]);
+    }
     count_ = 0;
   }
 
  private:
   static constexpr int kBlock = 32;
+  static constexpr bool kByRow = std::numeric_limits<real>::is_iec559;
+  /// Every row's six sums at once, all 36 in vector registers over the block (the upper
+  /// triangle's are the lower's and thrown away: whole vectors cost less than a triangle).
+  __attribute__((always_inline)) void add_block_by_rows() {
+    real sums[kDof][kDof] = {};
+    for (int k = 0; k < count_; ++k) {
+      const real* row = rows_[k];
+#pragma GCC unroll 6
+      for (int i = 0; i < kDof; ++i)
+#pragma GCC unroll 6
+        for (int j = 0; j < kDof; ++j) sums[i][j] += row[i] * row[j];
+    }
+    for (int i = 0; i < kDof; ++i)
+      for (int j = 0; j <= i; ++j) information_[i][j] += sums[i][j];
+  }
   real (&information_)[kDof][kDof];
-  real rows_[kDof][kBlock];
+  std::conditional_t<kByRow, real[kBlock][kDof], real[kDof][kBlock]> rows_;
   int count_ = 0;
 };
 
