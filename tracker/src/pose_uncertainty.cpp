@@ -59,8 +59,10 @@ Perturbation perturbation_of(const EdgeModel& model) {
 /// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
 /// division per point: they are dear without a divider), `offset_mm` its offset from the
 /// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
-void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
-                    const Vec2& n, real g[kDof]) {
+/// Inlined in floating point's per-match loop (sum_information); pixel_gradient elsewhere.
+__attribute__((always_inline)) inline void inline_pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm,
+                                                                 const real& inv_z, const Vec3& offset_mm, const Vec2& n,
+                                                                 real g[kDof]) {
   real nu, nv;
   if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
     const Vec2 across = camera.lens_covector(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z},
@@ -80,6 +82,12 @@ void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const
   g[3] = turn.x;
   g[4] = turn.y;
   g[5] = turn.z;
+}
+
+/// inline_pixel_gradient, out of line: one copy for the per-vertex loop and fixed point.
+void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
+                    const Vec2& n, real g[kDof]) {
+  inline_pixel_gradient(camera, in_camera_mm, inv_z, offset_mm, n, g);
 }
 
 /// The lower triangle of the information matrix, sum of r r^T over rows r of W^(1/2) J, summed
@@ -181,7 +189,11 @@ void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera&
     const real u = fabs(delta) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square
-    pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    // Per match, floating point keeps the gradient in registers; fixed point's is long, and the
+    // firmware's flash holds it once.
+    if constexpr (std::numeric_limits<real>::is_iec559)
+      inline_pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    else pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
     for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
     sum.add(g);
     if (pull) {
