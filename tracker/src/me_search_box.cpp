@@ -8,7 +8,11 @@
 
 namespace edgetrack {
 
-PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int search_range) {
+namespace {
+
+/// me_search_box's body, inlined into both calls.
+__attribute__((always_inline)) inline PixelBox search_box(const ControlPoint& point, const vpMe& me,
+                                                          unsigned int search_range) {
   using std::fabs;
   // The site (moving_edges.cpp) puts its candidates at pixel + k normal, |k| <= range, truncated
   // to whole pixels, and convolves a mask_size mask whose top-left is half a mask before each.
@@ -36,6 +40,18 @@ PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int s
   box.top -= reach_y;
   box.bottom += reach_y;
   return box;
+}
+
+}  // namespace
+
+PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int range) {
+  return search_box(point, me, range);
+}
+
+void me_search_boxes(const std::vector<ControlPoint>& points, const vpMe& me, unsigned int range,
+                     std::vector<PixelBox>& boxes) {
+  boxes.resize(points.size());
+  for (size_t p = 0; p < points.size(); ++p) boxes[p] = search_box(points[p], me, range);
 }
 
 }  // namespace edgetrack

@@ -3,10 +3,13 @@
 #include "edgetrack/pose_uncertainty.h"
 
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/small_cholesky.h"
 #include "real/sum_of_products.h"
+#include "real/vector_kernels.h"
 
 namespace edgetrack {
 namespace {
@@ -56,8 +59,10 @@ Perturbation perturbation_of(const EdgeModel& model) {
 /// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
 /// division per point: they are dear without a divider), `offset_mm` its offset from the
 /// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
-void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
-                    const Vec2& n, real g[kDof]) {
+/// Inlined in floating point's per-match loop (sum_information); pixel_gradient elsewhere.
+__attribute__((always_inline)) inline void inline_pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm,
+                                                                 const real& inv_z, const Vec3& offset_mm, const Vec2& n,
+                                                                 real g[kDof]) {
   real nu, nv;
   if (camera.distorted()) {  // the chain rule through the lens: n^T diag(px, py) J_lens / Z
     const Vec2 across = camera.lens_covector(Vec2{in_camera_mm.x * inv_z, in_camera_mm.y * inv_z},
@@ -79,26 +84,57 @@ void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const
   g[5] = turn.z;
 }
 
+/// inline_pixel_gradient, out of line: one copy for the per-vertex loop and fixed point.
+void pixel_gradient(const PinholeCamera& camera, const Vec3& in_camera_mm, const real& inv_z, const Vec3& offset_mm,
+                    const Vec2& n, real g[kDof]) {
+  inline_pixel_gradient(camera, in_camera_mm, inv_z, offset_mm, n, g);
+}
+
 /// The lower triangle of the information matrix, sum of r r^T over rows r of W^(1/2) J, summed
-/// a block of rows at a time: column sums of products (sum_of_products.h) instead of a product
-/// and a sum per row and entry.
+/// a block of rows at a time, each entry's block sum in order and then added to the entry.
+/// Floating point: the rows stored as they come, and a row's six sums taken together over the
+/// block (kept in vector registers, each lane one entry's sum in the same order); fixed point:
+/// column sums of products (sum_of_products.h: dot_product's exact sum, rounded once).
 class InformationSum {
  public:
   explicit InformationSum(real (&information)[kDof][kDof]) : information_(information) {}
   void add(const real row[kDof]) {
-    for (int k = 0; k < kDof; ++k) rows_[k][count_] = row[k];
+    if constexpr (kByRow) {
+      for (int k = 0; k < kDof; ++k) rows_[count_][k] = row[k];
+    } else {
+      for (int k = 0; k < kDof; ++k) rows_[k][count_] = row[k];
+    }
     if (++count_ == kBlock) flush();
   }
   void flush() {
-    for (int i = 0; i < kDof; ++i)
-      for (int j = 0; j <= i; ++j) information_[i][j] += sum_of_products(count_, rows_[i], rows_[j]);
+    if constexpr (kByRow) {
+      vector_kernels::run([&]() __attribute__((always_inline)) { add_block_by_rows(); });
+    } else {
+      for (int i = 0; i < kDof; ++i)
+        for (int j = 0; j <= i; ++j) information_[i][j] += sum_of_products(count_, rows_[i], rows_[j]);
+    }
     count_ = 0;
   }
 
  private:
   static constexpr int kBlock = 32;
+  static constexpr bool kByRow = std::numeric_limits<real>::is_iec559;
+  /// Every row's six sums at once, all 36 in vector registers over the block (the upper
+  /// triangle's are the lower's and thrown away: whole vectors cost less than a triangle).
+  __attribute__((always_inline)) void add_block_by_rows() {
+    real sums[kDof][kDof] = {};
+    for (int k = 0; k < count_; ++k) {
+      const real* row = rows_[k];
+#pragma GCC unroll 6
+      for (int i = 0; i < kDof; ++i)
+#pragma GCC unroll 6
+        for (int j = 0; j < kDof; ++j) sums[i][j] += row[i] * row[j];
+    }
+    for (int i = 0; i < kDof; ++i)
+      for (int j = 0; j <= i; ++j) information_[i][j] += sums[i][j];
+  }
   real (&information_)[kDof][kDof];
-  real rows_[kDof][kBlock];
+  std::conditional_t<kByRow, real[kBlock][kDof], real[kDof][kBlock]> rows_;
   int count_ = 0;
 };
 
@@ -150,7 +186,11 @@ void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera&
     const real u = fabs(delta) * inv_cut;
     if (u >= real(1)) continue;
     const real root_weight = real(1) - u * u;  // Tukey's weight is its square
-    pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    // Per match, floating point keeps the gradient in registers; fixed point's is long, and the
+    // firmware's flash holds it once.
+    if constexpr (std::numeric_limits<real>::is_iec559)
+      inline_pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
+    else pixel_gradient(camera, in_camera, inv_z, in_camera - centre_mm, match.point.normal, g);
     for (int k = 0; k < kDof; ++k) g[k] = root_weight * g[k];
     sum.add(g);
   }

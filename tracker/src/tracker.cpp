@@ -436,8 +436,7 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
   clock.lap(Step::kVisibleEdges, result);
   begin(Step::kGreyScaling);
   unsigned int converted = 0;
-  read_boxes_.clear();
-  for (const ControlPoint& point : visible_) read_boxes_.push_back(me_search_box(point, me_, range));
+  me_search_boxes(visible_, me_, range, read_boxes_);
   const vpImage<unsigned char>& grey = grey_scale(frame, converted);
   result.grey_pixels += converted;
   end(Step::kGreyScaling);

@@ -3,6 +3,8 @@
 /// only those (on-demand grey scaling, grey_conversion.h).
 #pragma once
 
+#include <vector>
+
 #include "edgetrack/control_points.h"
 #include "visp3/me/vpMe.h"
 
@@ -21,5 +23,9 @@ struct PixelBox {
 /// refinement's two neighbours of the found pixel. Computed from the unit normal without
 /// trigonometry; see the .cpp for why the margin covers the site's own sine and cosine.
 PixelBox me_search_box(const ControlPoint& point, const vpMe& me, unsigned int range);
+/// me_search_box of each of `points`, in order, into `boxes` (sized to the points): one call per
+/// frame, with what the points share taken once.
+void me_search_boxes(const std::vector<ControlPoint>& points, const vpMe& me, unsigned int range,
+                     std::vector<PixelBox>& boxes);
 
 }  // namespace edgetrack
