@@ -133,18 +133,24 @@ struct DetectorParams {
   /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
   real confident_kept_share = real(0.8);
   /// The detection's work budget: the most control points the screening and refining frames of
-  /// one detection may search (Detection::points_searched; 0: no limit). A detection's cost past
-  /// the matching is about proportional to them, and without a limit a frame whose matches all
-  /// fail costs every candidate's full schedule. The default bounds a QVGA detection on the
-  /// PXA270 to about 300 M guest instructions (0.7 s at 624 MHz): the matching about 50 M, then
-  /// 30-35 k a point on the mean and up to about 38 k in the costliest detections
-  /// (docs/results/detection.md), so 6000 points and the frame that takes it over stay under.
+  /// one detection may search (Detection::points_searched; 0, the default: no limit). A
+  /// detection's cost past the matching is about proportional to them, and without a limit a
+  /// frame whose matches all fail costs every candidate's full schedule. 5000 bounds a QVGA
+  /// detection on the PXA270 to 300 M guest instructions (0.7 s at 624 MHz): the matching about
+  /// 50 M, then about 30-36 k a point on the mean but up to about 47 k in the costliest detections
+  /// (frames whose robust rounds all run, wide searches; docs/results/detection.md), so 5000
+  /// points and the frame that takes it over stay under. No default: points are a cost at one
+  /// image size and one range of distances; a frame twice as wide shows a view's edges twice as
+  /// long (twice the points at a sample step in pixels), and a range a decade wide yields many
+  /// more matches, where 5000 points end most detections before
+  /// the right candidate (ViSP's mbt/cube at 640x480 with its files as shipped: found on none of
+  /// its first 20 frames).
   /// No frame starts once it is spent (the last one started may take it over by its own visible
   /// points). The search order (screen, search) puts the likely candidates first, so the budget
   /// cuts the tail; a detection it cut short is found only with a confident candidate (a fit no
   /// later one could better), never with a merely acceptable pose the rest of the search might
   /// have replaced: "not found", and the next frame is detected on again.
-  int max_points_searched = 6000;
+  int max_points_searched = 0;
 };
 
 /// One candidate after refinement.
