@@ -370,6 +370,7 @@ void Detector::search(const FrameView& frame, Detection& detection) {
   // the settling when it ran. A candidate settling where an earlier one did stops there.
   std::vector<size_t> to_widen;
   bool restarted = false;
+  size_t restarted_from = 0;  // index in detection.refined of the near miss restarted
   for (const TemplateMatch& m : screen(frame)) {
     RefinedCandidate c;
     c.match = m;
@@ -385,6 +386,7 @@ void Detector::search(const FrameView& frame, Detection& detection) {
     // before the other candidates' and the wider searches (DetectorParams::restart_tilt_deg).
     if (!restarted && near_miss(c)) {
       restarted = true;
+      restarted_from = detection.refined.size() - 1;
       restart_tilted(frame, detection, c);
       if (search_over(detection)) return;
     }
@@ -397,11 +399,11 @@ void Detector::search(const FrameView& frame, Detection& detection) {
     if (better(wide, detection.refined[i], params_)) detection.refined[i] = wide;
     if (budget_spent() || confident(detection.refined[i], params_)) return;
   }
-  if (restarted) return;
-  if (const RefinedCandidate* base = restart_base(detection)) {
-    const RefinedCandidate from = *base;  // detection.refined grows below
-    restart_tilted(frame, detection, from);
-  }
+  // Still none confident: the best candidate's restarts, unless it is the near miss restarted.
+  const RefinedCandidate* base = restart_base(detection);
+  if (!base || (restarted && base == &detection.refined[restarted_from])) return;
+  const RefinedCandidate from = *base;  // detection.refined grows below
+  restart_tilted(frame, detection, from);
 }
 
 FrameView Detector::detection_frame() const {

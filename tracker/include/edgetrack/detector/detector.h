@@ -97,10 +97,10 @@ struct DetectorParams {
   /// The first refined candidate that is a near miss (tracked, its support at least min_support,
   /// not confident) is refined again at once, before the other candidates, from its pose tilted
   /// by this many degrees about the camera's x and y axes through the model's centre (4 starts;
-  /// each only the tracking-range run and the settling), until one is confidently right; when no
-  /// candidate was a near miss and none is confident, the best one (the detection's order:
-  /// acceptable first, then the most control points kept; not lost, its support at least
-  /// min_support) is, after all the others. A still image's
+  /// each only the tracking-range run and the settling), until one is confidently right; when
+  /// none is confident after all the others, the best one (the detection's order: acceptable
+  /// first, then the most control points kept; not lost, its support at least min_support) is,
+  /// unless it is that near miss. A still image's
   /// refinement can settle in a neighbouring minimum a few degrees off (a parallel edge a face's
   /// thickness away taken for the model's, a tilt the outline hardly shows), where it may even
   /// be acceptable: right poses fit within a quarter pixel, and most acceptable ones that do
@@ -221,8 +221,8 @@ class Detector {
   /// (DetectorParams::max_points_searched) cuts only the tail; each kept in detection.refined.
   /// Pass 1, the screened matches best first: the tracking-range run, then finish; the first
   /// near miss's tilted restarts right after it. Pass 2: refine_wide for the candidates pass 1
-  /// left unacceptable. Then, when no restart ran, the restarts from the best candidate. Ends as
-  /// soon as a candidate is confident or the budget is spent.
+  /// left unacceptable. Then the restarts from the best candidate, unless it is that near miss.
+  /// Ends as soon as a candidate is confident or the budget is spent.
   void search(const FrameView& frame, Detection& detection);
   /// The budget is spent or the last candidate refined is confident.
   bool search_over(const Detection& detection) const;
