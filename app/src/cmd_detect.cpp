@@ -30,8 +30,9 @@ void print_detection(const edgetrack::Detection& d, double ms) {
     std::printf("pose (tx ty tz m, tux tuy tuz rad): %.6f %.6f %.6f %.6f %.6f %.6f\n", static_cast<double>(t.x),
                 static_cast<double>(t.y), static_cast<double>(t.z), static_cast<double>(tu.x),
                 static_cast<double>(tu.y), static_cast<double>(tu.z));
-  std::printf("detect: found=%d score=%.3f match_share=%.3f candidates=%zu ms=%.1f\n", d.found ? 1 : 0,
-              static_cast<double>(d.score), static_cast<double>(d.match_share), d.refined.size(), ms);
+  std::printf("detect: found=%d score=%.3f match_share=%.3f candidates=%zu points=%d cut_short=%d ms=%.1f\n",
+              d.found ? 1 : 0, static_cast<double>(d.score), static_cast<double>(d.match_share), d.refined.size(),
+              d.points_searched, d.cut_short ? 1 : 0, ms);
 }
 
 }  // namespace

@@ -221,11 +221,6 @@ void Detector::measure_support(const Tracker& tracker, RefinedCandidate& candida
   candidate.support = counted > 0 ? real(supported) / real(counted) : real(0);
 }
 
-RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match,
-                                  const std::vector<RefinedCandidate>& earlier) {
-  return refine(frame, match, pose_of_match(templates_, match, params_.spread), &earlier);
-}
-
 bool Detector::same_as_earlier(const RefinedCandidate& candidate, const std::vector<RefinedCandidate>& earlier) const {
   for (const RefinedCandidate& c : earlier)
     if (c.status != TrackingStatus::kLost &&
@@ -235,34 +230,40 @@ bool Detector::same_as_earlier(const RefinedCandidate& candidate, const std::vec
   return false;
 }
 
-RefinedCandidate Detector::refine(const FrameView& frame, const TemplateMatch& match, const Se3& start,
-                                  const std::vector<RefinedCandidate>* earlier) {
+RefinedCandidate Detector::refine_near(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
   RefinedCandidate near;
   near.match = match;
   near.camera_from_model = start;
-  RefinedCandidate wide = near;
-  // The tracking range first: a wider search from a pose that is nearly right lets the moving
-  // edges jump to a neighbouring parallel edge. The wider one only when that did not succeed.
-  const bool near_ran = run_frames(tracker_, frame, params_.refine_iterations, near);
-  // Settled where an earlier candidate did: the rest of the schedule would end as that one's.
-  if (near_ran && earlier && !acceptable(near, params_) && same_as_earlier(near, *earlier)) return near;
-  if (!acceptable(near, params_) && params_.wide_iterations > 0 &&
-      run_frames(wide_, frame, params_.wide_iterations, wide) &&
-      run_frames(tracker_, frame, params_.refine_iterations, wide) && better(wide, near, params_))
-    near = wide;
-  else if (!near_ran)
-    return near;
+  if (run_frames(tracker_, frame, params_.refine_iterations, near))
+    finish(frame, near);
+  else
+    near.status = TrackingStatus::kLost;
+  return near;
+}
+
+RefinedCandidate Detector::refine_wide(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
+  RefinedCandidate wide;
+  wide.match = match;
+  wide.camera_from_model = start;
+  if (params_.wide_iterations > 0 && run_frames(wide_, frame, params_.wide_iterations, wide) &&
+      run_frames(tracker_, frame, params_.refine_iterations, wide))
+    finish(frame, wide);
+  else
+    wide.status = TrackingStatus::kLost;
+  return wide;
+}
+
+void Detector::finish(const FrameView& frame, RefinedCandidate& candidate) {
   // Started as a guess, each point took the strongest edge in its range, and the frames after
   // followed the contrasts of those: beside a parallel edge or on textured clutter the run can
   // settle a few pixels off. Started again as a given pose, the contrasts are taken where this
   // pose puts the model's edges and the first solve is weighted at it, as a tracked frame is.
-  RefinedCandidate given = near;
-  if (params_.given_iterations > 0 && near.status != TrackingStatus::kLost &&
+  RefinedCandidate given = candidate;
+  if (params_.given_iterations > 0 && candidate.status != TrackingStatus::kLost &&
       run_frames(tracker_, frame, params_.given_iterations, given, Tracker::StartPose::kGiven) &&
-      better(given, near, params_))
-    near = given;
-  settle(frame, near);
-  return near;
+      better(given, candidate, params_))
+    candidate = given;
+  settle(frame, candidate);
 }
 
 RefinedCandidate Detector::refine_tilted(const FrameView& frame, const TemplateMatch& match, const Se3& start) {
@@ -308,7 +309,7 @@ void Detector::suppress_neighbours() {
 }
 
 std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
-  if (static_cast<int>(matches_.size()) <= params_.refined_candidates) return matches_;
+  if (matches_.size() <= 1) return matches_;
   std::vector<RefinedCandidate> screened;
   for (const TemplateMatch& m : matches_) {
     RefinedCandidate c;
@@ -317,37 +318,92 @@ std::vector<TemplateMatch> Detector::screen(const FrameView& frame) {
     if (!run_frames(screen_, frame, params_.screen_iterations, c)) c.status = TrackingStatus::kLost;
     screened.push_back(c);
   }
-  // Stable: among equals the better match first.
+  // Tracked before uncertain before lost (a screen that already fits is the likeliest to refine
+  // to a confident fit), then the most control points kept (a pose too far away, whose smaller
+  // image lines up with a part of the object's edges, keeps fewer). Stable: among equals the
+  // better match first.
   std::stable_sort(screened.begin(), screened.end(), [](const RefinedCandidate& a, const RefinedCandidate& b) {
-    const bool al = a.status == TrackingStatus::kLost, bl = b.status == TrackingStatus::kLost;
-    if (al != bl) return bl;
+    if (a.status != b.status) return static_cast<int>(a.status) < static_cast<int>(b.status);
     return a.kept > b.kept;
   });
   std::vector<TemplateMatch> kept;
-  for (int k = 0; k < params_.refined_candidates; ++k) kept.push_back(screened[static_cast<size_t>(k)].match);
+  const size_t count = std::min(screened.size(), static_cast<size_t>(params_.refined_candidates));
+  for (size_t k = 0; k < count; ++k) kept.push_back(screened[k].match);
   return kept;
 }
 
-void Detector::restart_tilted(const FrameView& frame, Detection& detection) {
-  if (!(params_.restart_tilt_deg > real(0))) return;
+bool Detector::near_miss(const RefinedCandidate& c) const {
+  return c.status == TrackingStatus::kTracked && c.support >= params_.min_support && !confident(c, params_);
+}
+
+const RefinedCandidate* Detector::restart_base(const Detection& detection) const {
   const RefinedCandidate* from = nullptr;
   for (const RefinedCandidate& c : detection.refined) {
-    if (confident(c, params_)) return;
+    if (confident(c, params_)) return nullptr;
     if (c.status != TrackingStatus::kLost && c.support >= params_.min_support && (!from || better(c, *from, params_)))
       from = &c;
   }
-  if (!from) return;
-  const RefinedCandidate base = *from;  // detection.refined grows below
+  return from;
+}
+
+void Detector::restart_tilted(const FrameView& frame, Detection& detection, const RefinedCandidate& base) {
+  if (!(params_.restart_tilt_deg > real(0))) return;
   const Vec3& centre_in_model = templates_.extent.centre;
   const Vec3 centre = base.camera_from_model * centre_in_model;
   const real t = params_.restart_tilt_deg * real(kRadiansPerDegree), o(0);
   const Vec3 tilts[4] = {Vec3{t, o, o}, Vec3{-t, o, o}, Vec3{o, t, o}, Vec3{o, -t, o}};
   for (const Vec3& tilt : tilts) {
+    if (budget_spent()) return;
     // Turned about the camera's axis through the model's centre: the centre stays where it was.
     const Mat33 rotation = rotation_exp(tilt) * base.camera_from_model.rotation();
     detection.refined.push_back(refine_tilted(frame, base.match, Se3(rotation, centre - rotation * centre_in_model)));
     if (confident(detection.refined.back(), params_)) return;
   }
+}
+
+bool Detector::search_over(const Detection& detection) const {
+  return budget_spent() || (!detection.refined.empty() && confident(detection.refined.back(), params_));
+}
+
+void Detector::search(const FrameView& frame, Detection& detection) {
+  // Pass 1, the screened candidates best first: the tracking-range run, and the given start and
+  // the settling when it ran. A candidate settling where an earlier one did stops there.
+  std::vector<size_t> to_widen;
+  bool restarted = false;
+  size_t restarted_from = 0;  // index in detection.refined of the near miss restarted
+  for (const TemplateMatch& m : screen(frame)) {
+    RefinedCandidate c;
+    c.match = m;
+    c.camera_from_model = pose_of_match(templates_, m, params_.spread);
+    const bool ran = run_frames(tracker_, frame, params_.refine_iterations, c);
+    const bool repeated = ran && same_as_earlier(c, detection.refined);
+    if (ran && !repeated) finish(frame, c);
+    if (!ran) c.status = TrackingStatus::kLost;
+    detection.refined.push_back(c);
+    if (search_over(detection)) return;
+    if (!repeated && !acceptable(c, params_)) to_widen.push_back(detection.refined.size() - 1);
+    // The first near miss is the likeliest place of a confident fit: its tilted restarts come
+    // before the other candidates' and the wider searches (DetectorParams::restart_tilt_deg).
+    if (!restarted && near_miss(c)) {
+      restarted = true;
+      restarted_from = detection.refined.size() - 1;
+      restart_tilted(frame, detection, c);
+      if (search_over(detection)) return;
+    }
+  }
+  // Pass 2: the wider search for the candidates whose tracking-range run was not acceptable, in
+  // the same order; its result replaces the first when better.
+  for (const size_t i : to_widen) {
+    const TemplateMatch m = detection.refined[i].match;
+    RefinedCandidate wide = refine_wide(frame, m, pose_of_match(templates_, m, params_.spread));
+    if (better(wide, detection.refined[i], params_)) detection.refined[i] = wide;
+    if (budget_spent() || confident(detection.refined[i], params_)) return;
+  }
+  // Still none confident: the best candidate's restarts, unless it is the near miss restarted.
+  const RefinedCandidate* base = restart_base(detection);
+  if (!base || (restarted && base == &detection.refined[restarted_from])) return;
+  const RefinedCandidate from = *base;  // detection.refined grows below
+  restart_tilted(frame, detection, from);
 }
 
 FrameView Detector::detection_frame() const {
@@ -360,7 +416,11 @@ Result<RefinedCandidate> Detector::refine_from(const FrameView& frame, const Se3
     return *refused;
   match(frame);
   points_searched_ = 0;
-  return refine(detection_frame(), TemplateMatch{}, start);
+  const FrameView grey = detection_frame();
+  RefinedCandidate near = refine_near(grey, TemplateMatch{}, start);
+  if (acceptable(near, params_)) return near;
+  const RefinedCandidate wide = refine_wide(grey, TemplateMatch{}, start);
+  return better(wide, near, params_) ? wide : near;
 }
 
 Result<Detection> Detector::detect(const FrameView& frame) {
@@ -370,12 +430,7 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   points_searched_ = 0;
   frames_ = 0;
   match(frame);
-  const FrameView grey = detection_frame();
-  for (const TemplateMatch& m : screen(grey)) {
-    detection.refined.push_back(refine(grey, m, detection.refined));
-    if (confident(detection.refined.back(), params_) || budget_spent()) break;
-  }
-  restart_tilted(grey, detection);
+  search(detection_frame(), detection);
   detection.points_searched = points_searched_;
   detection.frames = frames_;
   const RefinedCandidate* best = nullptr;
@@ -386,7 +441,11 @@ Result<Detection> Detector::detect(const FrameView& frame) {
   detection.score = best->kept_share;
   detection.match_share = best->match.share;
   detection.template_index = best->match.template_index;
-  detection.found = acceptable(*best, params_);
+  // Cut short, a later candidate might have fitted better: only a fit no other could better is
+  // found (confident), never a merely acceptable pose that the rest of the search would have
+  // replaced (a few degrees off, or a part of the object lined up with its edges).
+  detection.cut_short = budget_spent() && !confident(*best, params_);
+  detection.found = !detection.cut_short && acceptable(*best, params_);
   return detection;
 }
 

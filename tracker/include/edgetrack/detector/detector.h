@@ -77,12 +77,13 @@ struct DetectorParams {
   /// The screening and refining runs' pose solver (PoseParams::solver): the normal equations take
   /// fewer instructions per solve than MINPACK's QR, and a detection solves a few hundred times.
   PoseSolver solver = PoseSolver::kNormalEquations;
-  /// With more matches than `refined_candidates`, each is first screened by `screen_iterations`
-  /// frames at the tracking range, and only the `refined_candidates` keeping the most control
-  /// points are refined in full (from their match again), best first, until one is confidently
-  /// right (confident_scale_px): the screen's frames already part the matches that are near the
-  /// object from the rest, at a fraction of the full cost, and the first one refined is most
-  /// often right, so the later ones cost only where the first ones failed.
+  /// With more than one match, each is first screened by `screen_iterations` frames at the
+  /// tracking range and ranked: tracked before uncertain before lost (a screen that already fits
+  /// is the likeliest to refine to a confident fit), then by the control points kept; the best
+  /// `refined_candidates` are refined, best first, until one is confidently right
+  /// (confident_scale_px): the screen's frames already part the matches that are near the object
+  /// from the rest, at a fraction of the full cost, so that the later candidates cost only where
+  /// the first ones failed, and a budget (max_points_searched) cuts only the unlikely tail.
   int screen_iterations = 3;
   int refined_candidates = 8;
   /// Before screening, a match whose pose is within `suppress_deg` of rotation and
@@ -93,11 +94,13 @@ struct DetectorParams {
   /// refinement's reach in depth (half a distance step is 5 %, a fifth of the radius at 4 radii).
   real suppress_deg = real(16);
   real suppress_radii = real(0.25);
-  /// When no refined candidate is confident (confident_scale_px, confident_kept_share), the best one (the
-  /// detection's order: acceptable first, then the most control points kept; not lost, its
-  /// support at least min_support) is refined again from its pose tilted by this many degrees
-  /// about the camera's x and y axes through the model's centre (4 starts; each only the
-  /// tracking-range run and the settling), until one is confidently right. A still image's
+  /// The first refined candidate that is a near miss (tracked, its support at least min_support,
+  /// not confident) is refined again at once, before the other candidates, from its pose tilted
+  /// by this many degrees about the camera's x and y axes through the model's centre (4 starts;
+  /// each only the tracking-range run and the settling), until one is confidently right; when
+  /// none is confident after all the others, the best one (the detection's order: acceptable
+  /// first, then the most control points kept; not lost, its support at least min_support) is,
+  /// unless it is that near miss. A still image's
   /// refinement can settle in a neighbouring minimum a few degrees off (a parallel edge a face's
   /// thickness away taken for the model's, a tilt the outline hardly shows), where it may even
   /// be acceptable: right poses fit within a quarter pixel, and most acceptable ones that do
@@ -130,14 +133,23 @@ struct DetectorParams {
   /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
   real confident_kept_share = real(0.8);
   /// The detection's work budget: the most control points the screening and refining frames of
-  /// one detection may search (Detection::points_searched; 0: no limit). A detection's cost past
-  /// the matching is about proportional to them (on the PXA270 about 30 k guest instructions a
-  /// point, docs/results/detection.md), and without a limit a frame whose matches all fail costs
-  /// every candidate's full schedule. No frame starts once it is spent (the last one started may
-  /// take it over by its own visible points): the best candidate refined so far is judged by
-  /// the same acceptance rule as ever, so a detection cut short is found only with a pose that
-  /// passed it, else "not found". The limit bounds the worst case at the price of the frames
-  /// where the right candidate would have come later.
+  /// one detection may search (Detection::points_searched; 0, the default: no limit). A
+  /// detection's cost past the matching is about proportional to them, and without a limit a
+  /// frame whose matches all fail costs every candidate's full schedule. 5000 bounds a QVGA
+  /// detection on the PXA270 to 300 M guest instructions (0.7 s at 624 MHz): the matching about
+  /// 50 M, then about 30-36 k a point on the mean but up to about 47 k in the costliest detections
+  /// (frames whose robust rounds all run, wide searches; docs/results/detection.md), so 5000
+  /// points and the frame that takes it over stay under. No default: points are a cost at one
+  /// image size and one range of distances; a frame twice as wide shows a view's edges twice as
+  /// long (twice the points at a sample step in pixels), and a range a decade wide yields many
+  /// more matches, where 5000 points end most detections before
+  /// the right candidate (ViSP's mbt/cube at 640x480 with its files as shipped: found on none of
+  /// its first 20 frames).
+  /// No frame starts once it is spent (the last one started may take it over by its own visible
+  /// points). The search order (screen, search) puts the likely candidates first, so the budget
+  /// cuts the tail; a detection it cut short is found only with a confident candidate (a fit no
+  /// later one could better), never with a merely acceptable pose the rest of the search might
+  /// have replaced: "not found", and the next frame is detected on again.
   int max_points_searched = 0;
 };
 
@@ -169,6 +181,9 @@ struct Detection {
   /// Screening and refining frames run: with a budget (DetectorParams::max_points_searched) at
   /// most one past the frame that spent it.
   int frames = 0;
+  /// The budget ended the search with no confident candidate: then not found, whatever the best
+  /// candidate's acceptance (DetectorParams::max_points_searched).
+  bool cut_short = false;
 };
 
 class Detector {
@@ -202,11 +217,21 @@ class Detector {
   /// The grey frame of detecting_'s size that match made, which the refining trackers read in
   /// place (no frame converted again).
   FrameView detection_frame() const;
-  /// The trackers run from one match's pose; a run whose first frames settle where one of
-  /// `earlier` did (same_as_earlier) and is not acceptable stops there.
-  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const std::vector<RefinedCandidate>& earlier);
-  RefinedCandidate refine(const FrameView& frame, const TemplateMatch& match, const Se3& start,
-                          const std::vector<RefinedCandidate>* earlier = nullptr);
+  /// The candidates refined in the order that puts the likely ones first, so that a budget
+  /// (DetectorParams::max_points_searched) cuts only the tail; each kept in detection.refined.
+  /// Pass 1, the screened matches best first: the tracking-range run, then finish; the first
+  /// near miss's tilted restarts right after it. Pass 2: refine_wide for the candidates pass 1
+  /// left unacceptable. Then the restarts from the best candidate, unless it is that near miss.
+  /// Ends as soon as a candidate is confident or the budget is spent.
+  void search(const FrameView& frame, Detection& detection);
+  /// The budget is spent or the last candidate refined is confident.
+  bool search_over(const Detection& detection) const;
+  /// From `start`: the tracking-range run, then finish (lost when the run was).
+  RefinedCandidate refine_near(const FrameView& frame, const TemplateMatch& match, const Se3& start);
+  /// From `start`: the widened-range run, the tracking-range run, then finish (lost when a run was).
+  RefinedCandidate refine_wide(const FrameView& frame, const TemplateMatch& match, const Se3& start);
+  /// A run's end: again from its pose as a given one (kept when better), then settle.
+  void finish(const FrameView& frame, RefinedCandidate& candidate);
   /// The tracking-range run alone, then settle: a restart's (restart_tilted).
   RefinedCandidate refine_tilted(const FrameView& frame, const TemplateMatch& match, const Se3& start);
   /// True when `candidate`'s pose puts no vertex of the model farther than the tracking range
@@ -215,12 +240,19 @@ class Detector {
   bool same_as_earlier(const RefinedCandidate& candidate, const std::vector<RefinedCandidate>& earlier) const;
   /// `candidate` settled by the narrow range when acceptable.
   void settle(const FrameView& frame, RefinedCandidate& candidate);
-  /// More refinements of detection's best unacceptable candidate, from tilted starts, when none
-  /// refined was acceptable (DetectorParams::restart_tilt_deg).
-  void restart_tilted(const FrameView& frame, Detection& detection);
+  /// More refinements of `base` from tilted starts (DetectorParams::restart_tilt_deg), until one
+  /// is confident or the budget is spent; each added to detection.refined.
+  void restart_tilted(const FrameView& frame, Detection& detection, const RefinedCandidate& base);
+  /// Tracked, supported by the image's gradients (min_support) and not confident: a candidate
+  /// whose tilted restarts are worth running first.
+  bool near_miss(const RefinedCandidate& candidate) const;
+  /// The best candidate of `detection` that is not lost and supported (min_support); none when
+  /// one is confident.
+  const RefinedCandidate* restart_base(const Detection& detection) const;
   /// matches_ without the ones near a better one's pose (DetectorParams::suppress_deg).
   void suppress_neighbours();
-  /// The matches worth refining in full, best first (all of them when few).
+  /// The matches worth refining (refined_candidates at most), each screened by a few frames and
+  /// ranked: tracked, uncertain, lost, then by the control points kept.
   std::vector<TemplateMatch> screen(const FrameView& frame);
   /// candidate.support from `tracker`'s last control points.
   void measure_support(const Tracker& tracker, RefinedCandidate& candidate) const;
