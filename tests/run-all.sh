@@ -13,6 +13,13 @@ jobs=${EDGETRACK_JOBS:-$(nproc)}
 
 "$top/toolchains/install-deps.sh"
 
+# The trees compile many of the same sources with the same compiler and flags (whatever does not
+# depend on `real`: most of vnl, vcl and testlib and their tests, in the three host trees and in the
+# two PXA270 trees); ccache compiles each such source once, from a cache of its own in the build root.
+export CCACHE_DIR=${EDGETRACK_CCACHE_DIR:-$build_root/ccache}
+export CCACHE_BASEDIR=$top
+launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+
 arm_toolchain=(-DCMAKE_TOOLCHAIN_FILE="$top/toolchains/armv5te-pxa270.cmake")
 fuzz=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DEDGETRACK_FUZZ=ON -DEDGETRACK_HOST_EXTRAS=OFF
       -DCMAKE_BUILD_TYPE=RelWithDebInfo)
@@ -43,7 +50,7 @@ for entry in "${trees[@]}"; do
   echo "=== $name: configure and build"
   t0=$SECONDS
   mkdir -p "$build_root"
-  if ! cmake -S "$top" -B "$dir" -G Ninja "${args[@]}" >"$dir.configure.log" 2>&1; then
+  if ! cmake -S "$top" -B "$dir" -G Ninja "${launcher[@]}" "${args[@]}" >"$dir.configure.log" 2>&1; then
     cat "$dir.configure.log"; failed+=("$name (configure)"); continue
   fi
   if ! cmake --build "$dir" -j "$jobs" >"$dir.build.log" 2>&1; then
@@ -60,6 +67,7 @@ for entry in "${trees[@]}"; do
 done
 
 echo "=== all trees: $((SECONDS - start)) s"
+ccache --show-stats | grep -iE "hits|misses" | sed 's/^/=== ccache: /' || true
 if [ ${#failed[@]} -gt 0 ]; then
   echo "FAILED: ${failed[*]}"
   exit 1

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config           # host build
+  ccache                                     # tests/run-all.sh: a source the trees share is compiled once
   g++-arm-linux-gnueabi qemu-user            # ARMv5TE soft-float build, run on qemu-arm -cpu pxa270
   g++-aarch64-linux-gnu g++-arm-linux-gnueabihf  # AArch64 and ARMv7-A hard-float builds (Cortex-A53, A7)
   gcc-arm-none-eabi libnewlib-arm-none-eabi  # bare-metal Cortex-M3 firmware (toolchains/cortex-m3.cmake)
