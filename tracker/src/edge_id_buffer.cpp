@@ -482,15 +482,16 @@ bool EdgeIdBuffer::nearest_under(const Segment& s, int left_out) {
       });
     }
   };
+  // A run whose box misses the line's, or whose occluders are all left out, is skipped whole; a
+  // single run has no box (gather_occluder_runs leaves it out). One loop: the walk, inlined with
+  // its plots, is the most of this function's code.
   const size_t n = occluders_.size();
-  if (n <= kOccluderRun) {
-    for (const Occluder& o : occluders_) walk(o);
-    return depth != nullptr;
-  }
-  // A run whose box misses the line's, or whose occluders are all left out, is skipped whole.
+  const bool runs = n > kOccluderRun;
   for (size_t first = 0; first < n; first += kOccluderRun) {
-    const OccluderRun& run = occluder_runs_[first / kOccluderRun];
-    if (!boxes_meet(run.box, s.box) || run.owner == left_out) continue;
+    if (runs) {
+      const OccluderRun& run = occluder_runs_[first / kOccluderRun];
+      if (!boxes_meet(run.box, s.box) || run.owner == left_out) continue;
+    }
     const Occluder* const end = occluders_.data() + std::min(n, first + kOccluderRun);
     for (const Occluder* o = occluders_.data() + first; o != end; ++o) walk(*o);
   }
