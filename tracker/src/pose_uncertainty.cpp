@@ -8,22 +8,13 @@
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/small_cholesky.h"
+#include "pose_perturbation.h"
 #include "real/sum_of_products.h"
 #include "real/vector_kernels.h"
 
 namespace edgetrack {
+using namespace pose_perturbation;
 namespace {
-
-constexpr int kDof = 6;
-
-/// The pose perturbation the covariance is over: a translation v (mm) and a turn w about the
-/// model's centre, scaled by the model's radius (mm at its farthest vertex), so that every
-/// column of the Jacobian is pixels per millimetre of some point's motion: balanced columns keep
-/// the fixed-point Cholesky well within range.
-struct Perturbation {
-  Vec3 centre;          ///< model frame, metres
-  real radius_mm{1};
-};
 
 template <typename Visit>
 void for_each_overlay_point(const EdgeModel& model, Visit visit) {
@@ -35,26 +26,6 @@ void for_each_overlay_point(const EdgeModel& model, Visit visit) {
   for (const Circle& c : model.circles) visit(c.centre);
 }
 
-Perturbation perturbation_of(const EdgeModel& model) {
-  using std::sqrt;
-  Perturbation p;
-  Vec3 sum;
-  int count = 0;
-  for_each_overlay_point(model, [&](const Vec3& v) {
-    sum = sum + v;
-    ++count;
-  });
-  if (count == 0) return p;
-  p.centre = (real(1) / real(count)) * sum;
-  real farthest(0);  // mm^2: one square root at the end
-  for_each_overlay_point(model, [&](const Vec3& v) {
-    const Vec3 d = to_millimetres(v - p.centre);
-    const real r2 = dot(d, d);
-    if (r2 > farthest) farthest = r2;
-  });
-  if (farthest > real(0)) p.radius_mm = sqrt(farthest);
-  return p;
-}
 
 /// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
 /// division per point: they are dear without a divider), `offset_mm` its offset from the
@@ -197,21 +168,7 @@ void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera&
   sum.flush();
 }
 
-/// Cholesky of the information matrix (turns already scaled) in place, and 1 / its diagonal:
-/// false where a direction is one the matches do not see.
-bool factor_information(real (&information)[kDof][kDof], real (&inv_diagonal)[kDof]) {
-  real largest(0);
-  for (int k = 0; k < kDof; ++k)
-    if (information[k][k] > largest) largest = information[k][k];
-  // A pivot below a millionth of the largest is a direction the matches do not see.
-  if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return false;
-  for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
-  return true;
-}
 
-/// A whitened component beyond this is a direction no match sees; it also keeps the squares
-/// within S40.23's range.
-const real kWhitenedCap = real(1e4);
 
 /// The information matrix of matches at a pose, factored, in the perturbation's coordinates.
 struct FactoredInformation {
@@ -232,40 +189,6 @@ bool factor_at(const std::vector<EdgeMatch>& matches, const EdgeModel& model, co
   sum_information(matches, camera, pose, f.centre_mm, cut, f.l);
   scale_turns(f.l, f.inv_radius);
   return factor_information(f.l, f.inv_diagonal);
-}
-
-/// The pose step's rows at `start` (a move v of the model's origin, mm, and a turn w about it,
-/// radians) in the perturbation's coordinates, a move v' of the model's centre and the turn
-/// times the radius, w' = r w: v = v' + d x w (d the centre's offset from the origin in the
-/// camera frame, mm), so H' = T^T H T and g' = T^T g with T = [[I, hat(d) / r], [0, I / r]], on
-/// the lower triangle `h` and `g` in place. Summed at the origin the turns' columns are as
-/// large as the model is far from it; about the centre they are balanced as factor_information
-/// needs.
-void to_perturbation(const Vec3& d, const real& inv_radius, real (&h)[kDof][kDof], real (&g)[kDof]) {
-  real full[kDof][kDof];
-  for (int i = 0; i < kDof; ++i)
-    for (int j = 0; j <= i; ++j) full[i][j] = full[j][i] = h[i][j];
-  // S = hat(d) / r; the columns of T's upper right block.
-  const real s[3][3] = {{real(0), -d.z * inv_radius, d.y * inv_radius},
-                        {d.z * inv_radius, real(0), -d.x * inv_radius},
-                        {-d.y * inv_radius, d.x * inv_radius, real(0)}};
-  // P = A S + B / r (the vv-w' block); C' = S^T P + (B^T S + C / r) / r.
-  real p[3][3], q[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      p[i][j] = sum_of_products(full[i][0], s[0][j], full[i][1], s[1][j], full[i][2], s[2][j]) + full[i][3 + j] * inv_radius;
-      q[i][j] = sum_of_products(full[3 + i][0], s[0][j], full[3 + i][1], s[1][j], full[3 + i][2], s[2][j]) +
-                full[3 + i][3 + j] * inv_radius;
-    }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) h[3 + i][j] = p[j][i];
-    for (int j = 0; j <= i; ++j)
-      h[3 + i][3 + j] = sum_of_products(s[0][i], p[0][j], s[1][i], p[1][j], s[2][i], p[2][j]) + q[i][j] * inv_radius;
-  }
-  real turned[3];
-  for (int i = 0; i < 3; ++i)
-    turned[i] = sum_of_products(s[0][i], g[0], s[1][i], g[1], s[2][i], g[2]) + g[3 + i] * inv_radius;
-  for (int i = 0; i < 3; ++i) g[3 + i] = turned[i];
 }
 
 }  // namespace
@@ -308,54 +231,38 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
   return deviation > unconstrained ? unconstrained : deviation;
 }
 
-real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
-                          const Se3& start, const Se3& solved, const real& sigma) {
+namespace pose_perturbation {
+
+Perturbation perturbation_of(const EdgeModel& model) {
   using std::sqrt;
-  const real unconstrained = real(kUnconstrainedPx);
-  const size_t m = matches.size();
-  if (!rows.kept || rows.residuals.size() != m || rows.jacobian.size() != m * kDof) return unconstrained;
-  real* const residual = rows.residuals.data();
-  real* column[kDof];
-  for (int k = 0; k < kDof; ++k) column[k] = rows.jacobian.data() + static_cast<size_t>(k) * m;
-  for (size_t i = 0; i < m; ++i)
-    if (matches[i].excluded) {
-      residual[i] = real(0);
-      for (int k = 0; k < kDof; ++k) column[k][i] = real(0);
-    }
-  const int count = static_cast<int>(m);
-  real h[kDof][kDof] = {}, pull[kDof];
-  for (int i = 0; i < kDof; ++i) {
-    for (int j = 0; j <= i; ++j) h[i][j] = sum_of_products(count, column[i], column[j]);
-    pull[i] = sum_of_products(count, column[i], residual);
-  }
-  const Perturbation perturbation = perturbation_of(model);
-  const real inv_radius = real(1) / perturbation.radius_mm;
-  const Vec3 centre_mm = to_millimetres(start * perturbation.centre);
-  to_perturbation(centre_mm - to_millimetres(start.translation()), inv_radius, h, pull);
-  real inv_diagonal[kDof];
-  if (!factor_information(h, inv_diagonal)) return unconstrained;
-  // The first solve's move from the start in the same coordinates: the model centre's
-  // displacement (mm) and the turn about it times the radius.
-  const Vec3 moved = to_millimetres(solved * perturbation.centre) - centre_mm;
-  const Vec3 turn = perturbation.radius_mm * rotation_log(solved.rotation() * start.rotation().transpose());
-  const real first[kDof] = {moved.x, moved.y, moved.z, turn.x, turn.y, turn.z};
-  // |L^T (Delta_2 - Delta_1)| with L L^T Delta_2 = -g: |L^-1 g + L^T Delta_1|.
-  real z[kDof];
-  real square(0);
-  for (int k = 0; k < kDof; ++k) {
-    real s = pull[k];
-    for (int j = 0; j < k; ++j) s -= h[k][j] * z[j];
-    z[k] = s * inv_diagonal[k];
-  }
-  for (int j = 0; j < kDof; ++j) {
-    real y(0);
-    for (int k = j; k < kDof; ++k) y += h[k][j] * first[k];
-    const real component = z[j] + y;
-    if (!(component < kWhitenedCap && component > -kWhitenedCap)) return unconstrained;
-    square += component * component;
-  }
-  const real sigmas = sqrt(square) / sigma;
-  return sigmas > unconstrained ? unconstrained : sigmas;
+  Perturbation p;
+  Vec3 sum;
+  int count = 0;
+  for_each_overlay_point(model, [&](const Vec3& v) {
+    sum = sum + v;
+    ++count;
+  });
+  if (count == 0) return p;
+  p.centre = (real(1) / real(count)) * sum;
+  real farthest(0);  // mm^2: one square root at the end
+  for_each_overlay_point(model, [&](const Vec3& v) {
+    const Vec3 d = to_millimetres(v - p.centre);
+    const real r2 = dot(d, d);
+    if (r2 > farthest) farthest = r2;
+  });
+  if (farthest > real(0)) p.radius_mm = sqrt(farthest);
+  return p;
 }
 
+bool factor_information(real (&information)[kDof][kDof], real (&inv_diagonal)[kDof]) {
+  real largest(0);
+  for (int k = 0; k < kDof; ++k)
+    if (information[k][k] > largest) largest = information[k][k];
+  // A pivot below a millionth of the largest is a direction the matches do not see.
+  if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return false;
+  for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
+  return true;
+}
+
+}  // namespace pose_perturbation
 }  // namespace edgetrack
