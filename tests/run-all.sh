@@ -41,15 +41,25 @@ trees=(
   "mcu-s40_23|-DEDGETRACK_REAL=s40_23 ${mcu_firmware[*]}"
 )
 
+# CPU seconds (user + system) of every finished child so far: unlike wall time, this hardly
+# depends on what else the machine runs, so a run on a busy machine still shows where CI's time goes.
+cpu_so_far() {
+  times >"$build_root/.times"   # here, not in $(...): a subshell's children are not this shell's
+  cpu=$(awk 'NR == 2 { split($0, f, /[ ms]+/); printf "%.0f", f[1] * 60 + f[2] + f[3] * 60 + f[4] }' \
+    "$build_root/.times")
+}
+
+mkdir -p "$build_root"
 failed=()
 start=$SECONDS
+cpu_so_far; cpu_start=$cpu
 for entry in "${trees[@]}"; do
   name=${entry%%|*}
   read -r -a args <<<"${entry#*|}"
   dir="$build_root/$name"
   echo "=== $name: configure and build"
   t0=$SECONDS
-  mkdir -p "$build_root"
+  cpu_so_far; cpu0=$cpu
   if ! cmake -S "$top" -B "$dir" -G Ninja "${launcher[@]}" "${args[@]}" >"$dir.configure.log" 2>&1; then
     cat "$dir.configure.log"; failed+=("$name (configure)"); continue
   fi
@@ -59,14 +69,18 @@ for entry in "${trees[@]}"; do
   if [[ $name == arm-* ]] && ! "$top/toolchains/check-soft-float.sh" "$dir"; then
     failed+=("$name (VFP instructions in a soft-float build)"); continue
   fi
+  t1=$SECONDS
+  cpu_so_far; cpu1=$cpu
   echo "=== $name: ctest"
   if ! ctest --test-dir "$dir" -j "$jobs" --output-on-failure --timeout 900; then
     failed+=("$name (tests)")
   fi
-  echo "=== $name: $((SECONDS - t0)) s"
+  cpu_so_far; cpu2=$cpu
+  echo "=== $name: $((SECONDS - t0)) s (build $((t1 - t0)) s, $((cpu1 - cpu0)) CPU s; ctest $((SECONDS - t1)) s, $((cpu2 - cpu1)) CPU s)"
 done
 
-echo "=== all trees: $((SECONDS - start)) s"
+cpu_so_far
+echo "=== all trees: $((SECONDS - start)) s, $((cpu - cpu_start)) CPU s"
 ccache --show-stats | grep -iE "hits|misses" | sed 's/^/=== ccache: /' || true
 if [ ${#failed[@]} -gt 0 ]; then
   echo "FAILED: ${failed[*]}"
