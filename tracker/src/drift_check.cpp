@@ -89,10 +89,12 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // Matches on the object's own edges that the test calls lines (texture, a real scene's
   // approximate model) give, without the rest, the pose the first solve found, within its noise:
   // only where their step from the start would end as far away as the check could report is the
-  // second solve run.
-  const real first_sigma = std::max(solved.residual_scale, sigma_floor);
+  // second solve run. The check allows the second pose's deviations, at its own scale, which is
+  // not known yet and may lie far below the first's (matches on lines spread the residuals the
+  // rest fit closely without them): the bound is taken at the least scale the check can allow,
+  // the floor, or it would refuse the frames the lines pulled most.
   verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
-                                             solved.camera_from_model, first_sigma);
+                                             solved.camera_from_model, sigma_floor);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;

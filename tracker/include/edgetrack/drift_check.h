@@ -49,7 +49,7 @@ struct DriftWorkspace {
 struct DriftVerdict {
   int lines = 0;  ///< matches whose used hypothesis the test called a line
   /// How far the other matches alone would move the pose, to first order, in standard
-  /// deviations (excluded_pull_sigmas); 0 when no match was called a line.
+  /// deviations at the residual scale's floor (excluded_pull_sigmas); 0 when no match was called a line.
   real pull_sigmas{0};
   bool checked = false;  ///< pull_sigmas above check_sigmas, and the second pose was solved
   /// px, the largest distance between the two poses' projections of the model's overlay points
@@ -78,8 +78,8 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
-/// pose by more than `lines.check_sigmas` standard deviations (the residual scale taken at least
-/// `sigma_floor`; bounded from the rows `solved`'s first solve kept in
+/// pose by more than `lines.check_sigmas` standard deviations at the residual scale `sigma_floor`
+/// (the least the second pose's own scale, which the check allows, is taken to be; bounded from the rows `solved`'s first solve kept in
 /// `drift_workspace.start_rows`, without them the bound is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the two
 /// poses compared. `matches` come back as they came, the first solve's marks included (held in
 /// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
