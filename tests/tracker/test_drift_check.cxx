@@ -4,7 +4,8 @@
 /// default settings, must lose no frame and stay within 1.5 times the mean error of each frame
 /// solved alone from its true pose (the target); with the check off the same run walks
 /// onto the lines. Also the exclusion mask, the gate (and that it bounds what the check does),
-/// the overlay distance the check compares poses by, and its settings by name and in the XML. The real scene: test_drift_check_real_scene.cxx.
+/// the overlay distance the check compares poses by, and its settings by name and in the XML.
+/// The real scene: test_drift_check_real_scene.cxx.
 #include <algorithm>
 #include <cstdio>
 #include <string>

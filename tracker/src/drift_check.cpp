@@ -129,8 +129,10 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
     // at the floor); a second pose far beyond it (twice: the robust rounds move on from the lines)
     // is another basin the rest fell into from a start they do not hold (a turn the prediction
     // missed), not the pose the lines pulled the frame from.
-    const real explained = real(2) * verdict.pull_sigmas * verdict.allowed_px / lines.check_sigmas * sigma_floor / sigma;
-    verdict.drifted = verdict.parted_px > verdict.allowed_px && verdict.fits_as_closely && !(verdict.parted_px > explained);
+    const real explained =
+        real(2) * verdict.pull_sigmas * verdict.allowed_px / lines.check_sigmas * sigma_floor / sigma;
+    verdict.drifted =
+        verdict.parted_px > verdict.allowed_px && verdict.fits_as_closely && !(verdict.parted_px > explained);
   }
   give_back_marks(drift_workspace.held, matches);
   return verdict;
