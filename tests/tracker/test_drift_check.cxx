@@ -3,8 +3,10 @@
 /// cube with dark lines 8 mm beside every edge, tracked from its true first pose with the
 /// default settings, must lose no frame and stay within 1.5 times the mean error of each frame
 /// solved alone from its true pose (the target); with the check off the same run walks
-/// onto the lines. Also the exclusion mask, the gate, the overlay distance the check compares
-/// poses by, and its settings by name and in the XML. The real scene: test_drift_check_real_scene.cxx.
+/// onto the lines. Also the exclusion mask, the gate (and that it bounds what the check does),
+/// the overlay distance the check compares poses by, and its settings by name and in the XML.
+/// The real scene: test_drift_check_real_scene.cxx.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -165,6 +167,74 @@ static void test_pull_gate() {
   TEST("leaving a true edge out moves it by less than 3 sigmas", noisy.solved && true_out < real(3), true);
 }
 
+/// A flat grey image with, beside each of `matches` whose edge is in `lined`, the profile of a
+/// thin dark line along its normal (the image darkening along it, as a match of positive
+/// contrast reads it): bright before the match, dark for two pixels, back beyond.
+static vpImage<unsigned char> lines_beside(const std::vector<EdgeMatch>& matches, const std::vector<int>& lined,
+                                           const PinholeCamera& camera) {
+  vpImage<unsigned char> grey(static_cast<unsigned>(camera.height), static_cast<unsigned>(camera.width), 230);
+  for (const EdgeMatch& m : matches) {
+    if (std::find(lined.begin(), lined.end(), m.point.edge) == lined.end()) continue;
+    for (int k = 1; k <= 4; ++k) {
+      const Vec2 at = m.found + real(k) * m.point.normal;
+      if (at.x >= real(0) && at.y >= real(0) && at.x < real(camera.width) && at.y < real(camera.height))
+        grey[static_cast<unsigned>(static_cast<int>(at.y))][static_cast<unsigned>(static_cast<int>(at.x))] =
+            k <= 2 ? 40 : 200;
+    }
+  }
+  return grey;
+}
+
+/// The gate bounds what the check can do. The check allows the second pose's deviations at its
+/// own residual scale, which the matches off the lines set; where many matches sat on lines the
+/// first solve's scale is many times it. Every other visible edge of the cube is matched on
+/// lines, 4.5 and -0.5 px aside by turns (2 px on average: a pull, and a spread the pose cannot
+/// take up), the rest within 0.05 px, solved by least squares from the true pose: the frame
+/// the check corrects when it solves every frame again (no first-solve rows: the gate passes
+/// everything) is corrected with the gate too.
+static void test_gate_bounds_the_check() {
+  const Result<EdgeModel> model = load_model(model_path(Scene::kCube));
+  if (!model.ok()) return;
+  const PinholeCamera camera = qvga_camera();
+  const Se3 start = true_poses(Scene::kCube, 1)[0];
+  std::vector<EdgeMatch> matches = cube_matches(model.value(), camera, start, -1, real(0), real(0.05));
+  std::vector<int> edges;
+  for (const EdgeMatch& m : matches)
+    if (std::find(edges.begin(), edges.end(), m.point.edge) == edges.end()) edges.push_back(m.point.edge);
+  std::vector<int> lined;
+  for (size_t e = 0; e < edges.size(); e += 2) lined.push_back(edges[e]);
+  int k = 0;
+  for (EdgeMatch& m : matches)
+    if (std::find(lined.begin(), lined.end(), m.point.edge) != lined.end())
+      m.found = m.found + (real(2) + real(k++ % 2 ? 2.5 : -2.5)) * m.point.normal;
+  const vpImage<unsigned char> grey = lines_beside(matches, lined, camera);
+  PoseParams plain;  // least squares: every match pulls
+  plain.tukey_c = real(0);
+  const ThinLineParams lines;
+  const real floor(0.3);  // StatusParams::edge_location_px
+  DriftWorkspace drift;
+  PoseWorkspace workspace;
+  workspace.start_rows = &drift.start_rows;
+  const PoseSolution solved = solve_pose(matches, camera, start, plain, workspace);
+  TEST("the frame with lines solves", solved.solved, true);
+  if (!solved.solved) return;
+  const DriftVerdict gated = check_drift(grey, matches, solved, model.value(), camera, start, plain, lines, floor,
+                                         workspace, drift);
+  drift.start_rows.kept = false;
+  const DriftVerdict every = check_drift(grey, matches, solved, model.value(), camera, start, plain, lines, floor,
+                                         workspace, drift);
+  std::printf("%s: %d of %zu matches on lines; first scale %.3f px, second %.3f; parted %.3f px, allowed %.3f; "
+              "gate %.2f sigmas\n",
+              real_name(), gated.lines, matches.size(), static_cast<double>(solved.residual_scale),
+              static_cast<double>(every.second.residual_scale), static_cast<double>(every.parted_px),
+              static_cast<double>(every.allowed_px), static_cast<double>(gated.pull_sigmas));
+  TEST("the lines' matches, and only they, are called lines", gated.lines == every.lines && gated.lines > 0, true);
+  TEST("the lines spread the first solve's residuals far beyond the rest's",
+       solved.residual_scale > real(3) * every.second.residual_scale, true);
+  TEST("solving every frame again, the check corrects this one (the case is one of drift)", every.drifted, true);
+  TEST("the gate passes it to the second solve, which corrects it", gated.checked && gated.drifted, true);
+}
+
 static void test_drift_settings() {
   ThinLineParams p;
   TEST("the check corrects by default", p.check == DriftAction::kCorrect, true);
@@ -220,6 +290,7 @@ static void test_drift_check() {
   test_overlay_distance();
   test_exclusion_mask();
   test_pull_gate();
+  test_gate_bounds_the_check();
   test_drift_settings();
   test_drift_in_clutter();
 }

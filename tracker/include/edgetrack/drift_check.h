@@ -7,7 +7,8 @@
 /// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
 /// are solved again from the same start; where the two poses' overlays part by more than the
 /// check allows and the rest fit the second pose as closely as all the matches fit the first
-/// (within the noise of a robust scale), the lines moved the pose: the tracker takes the second
+/// (within the noise of a robust scale), by no more than twice what the bound explains, the
+/// lines moved the pose: the tracker takes the second
 /// pose or reports the frame uncertain (ThinLineParams::check).
 #pragma once
 
@@ -49,7 +50,7 @@ struct DriftWorkspace {
 struct DriftVerdict {
   int lines = 0;  ///< matches whose used hypothesis the test called a line
   /// How far the other matches alone would move the pose, to first order, in standard
-  /// deviations (excluded_pull_sigmas); 0 when no match was called a line.
+  /// deviations at the residual scale's floor (excluded_pull_sigmas); 0 when no match was called a line.
   real pull_sigmas{0};
   bool checked = false;  ///< pull_sigmas above check_sigmas, and the second pose was solved
   /// px, the largest distance between the two poses' projections of the model's overlay points
@@ -61,7 +62,10 @@ struct DriftVerdict {
   /// agree with one another as well without those on them, as they do where the lines pulled the
   /// pose, not where true edges were left out.
   bool fits_as_closely = false;
-  bool drifted = false;  ///< parted_px above allowed_px, and fits_as_closely
+  /// parted_px above allowed_px, fits_as_closely, and parted_px within twice what the gate's
+  /// first-order bound explains (pull_sigmas times the uncertainty at the floor): beyond, the rest
+  /// settled in another basin from a start they do not hold.
+  bool drifted = false;
   PoseSolution second;   ///< the second pose, when checked
 };
 
@@ -78,10 +82,11 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
-/// pose by more than `lines.check_sigmas` standard deviations (the residual scale taken at least
-/// `sigma_floor`; bounded from the rows `solved`'s first solve kept in
-/// `drift_workspace.start_rows`, without them the bound is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the two
-/// poses compared. `matches` come back as they came, the first solve's marks included (held in
+/// pose by more than `lines.check_sigmas` standard deviations at the residual scale `sigma_floor`
+/// (the least the second pose's own scale, which the check allows, is taken to be; bounded from
+/// the rows `solved`'s first solve kept in `drift_workspace.start_rows`, without them the bound
+/// is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the
+/// two poses compared. `matches` come back as they came, the first solve's marks included (held in
 /// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
