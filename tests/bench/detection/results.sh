@@ -64,7 +64,7 @@ for real in double s40_23; do
       case $object in
         with) args+=(--from-truth --diagnose); label="with the object" ;;
         without) args+=(--no-object); label="without the object" ;;
-        unbounded) args+=(--max-points 0); label="with the object, no budget" ;;
+        unbounded) args+=(--max-points 0 --diagnose); label="with the object, no budget" ;;
       esac
       r=$work/run-$real-$scene-$object.txt
       "$bench" "${args[@]}" >"$r"
@@ -100,16 +100,19 @@ echo "The grid's reach: the rotation is the largest angle from a view of the ran
 echo "(500 random views), the centre half a distance step plus half a diagonal of the position grid at the"
 echo "farthest distance."
 echo
-echo "| real | model | not right | no near match | screened out | converged elsewhere | score chose wrong | threshold refused | budget ran out | grid reach |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| real | model | budget | not right | no near match | screened out | converged elsewhere | score chose wrong | threshold refused | budget ran out | grid reach |"
+echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for real in double s40_23; do
   for scene in cube wood_toy; do
-    r=$work/run-$real-$scene-with.txt
-    [ -f "$r" ] || continue
-    printf '| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s deg, %s mm |\n' "$real" "$scene" \
-      "$(( $(value trials "$r") - $(value right "$r") ))" "$(value no_near_match "$r")" "$(value screened_out "$r")" \
-      "$(value converged_elsewhere "$r")" "$(value score_chose_wrong "$r")" "$(value threshold_refused "$r")" "$(value budget_ran_out "$r")" \
-      "$(value reach_deg "$r")" "$(value reach_mm "$r")"
+    for object in with unbounded; do
+      r=$work/run-$real-$scene-$object.txt
+      [ -f "$r" ] || continue
+      [ "$object" = with ] && label="default ($budget)" || label=none
+      printf '| %s | %s | %s | %d | %s | %s | %s | %s | %s | %s | %s deg, %s mm |\n' "$real" "$scene" "$label" \
+        "$(( $(value trials "$r") - $(value right "$r") ))" "$(value no_near_match "$r")" "$(value screened_out "$r")" \
+        "$(value converged_elsewhere "$r")" "$(value score_chose_wrong "$r")" "$(value threshold_refused "$r")" "$(value budget_ran_out "$r")" \
+        "$(value reach_deg "$r")" "$(value reach_mm "$r")"
+    done
   done
 done
 echo
