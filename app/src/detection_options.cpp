@@ -89,7 +89,8 @@ Result<TemplateParams> template_params_from(const Args& args) {
 OptionSpec detector_option_spec() {
   return {"--detector", "NAME=VALUE[,NAME=VALUE...]",
           "the detector's settings over the configuration's, named as in its <edgetrack><detector> block: "
-          "max_points_searched, the work budget of one detection (docs/APP.md)",
+          "max_points_searched, the work budget of one detection (control points on a QVGA frame, scaled by "
+          "the frame's pixels; 0: none; docs/APP.md)",
           ""};
 }
 

@@ -165,10 +165,22 @@ void bind_inputs(py::module_& m) {
           [](TrackerParams& p, bool v) { p.grey = v ? GreyScaling::kWholeFrame : GreyScaling::kOnDemand; },
           "Convert every pixel to grey (the paper's way) instead of the searched boxes only.");
 
+  py::class_<DetectorParams>(m, "DetectorParams",
+                             "The detector's settings that a configuration's <edgetrack><detector> block sets; "
+                             "checked when a Detector or an AutoTracker is created.")
+      .def(py::init<>(), "The detector's defaults.")
+      .def_property(
+          "max_points_searched", [](const DetectorParams& p) { return p.max_points_searched; },
+          [](DetectorParams& p, int v) { p.max_points_searched = v; },
+          "The work budget of one detection: control points its screening and refining frames may search on a "
+          "QVGA frame, scaled by the frame's pixels (0: no limit; docs/APP.md).");
+
   py::class_<TrackerConfig>(m, "Config", "A camera and the tracker's settings, as a ViSP XML configuration gives them.")
       .def(py::init<>(), "ViSP's default camera (no image size) and settings.")
       .def_readwrite("camera", &TrackerConfig::camera, "The camera (replace it with read_camera_file's).")
       .def_readwrite("params", &TrackerConfig::params, "The settings (a copy: assign it back after changing it).")
+      .def_readwrite("detector", &TrackerConfig::detector,
+                     "The detector's settings, for Detector and AutoTracker (a copy: assign it back after changing it).")
       .def(
           "apply_file", [](TrackerConfig& c, const std::string& path) { return notes_of(value_or_raise(apply_visp_config(path, c))); },
           py::arg("path"),

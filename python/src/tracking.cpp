@@ -200,14 +200,22 @@ void bind_tracking(py::module_& m) {
                              "The winner's template score share.")
       .def_property_readonly("template_index", [](const Detection& d) { return d.template_index; }, "The winner's template.")
       .def_property_readonly("points_searched", [](const Detection& d) { return d.points_searched; },
-                             "Control points of every screening and refining frame.");
+                             "Control points of every screening and refining frame.")
+      .def_property_readonly("frames", [](const Detection& d) { return d.frames; },
+                             "Screening and refining frames run.")
+      .def_property_readonly("cut_short", [](const Detection& d) { return d.cut_short; },
+                             "The work budget ended the search with no confident candidate: then not found.");
 
   py::class_<PyDetector>(m, "Detector", "Finds the model in a frame with no initial pose.")
       .def(py::init([](const EdgeModel& model, const TrackerConfig& config, const TemplateSet& templates) {
              return std::unique_ptr<PyDetector>(new PyDetector{
-                 value_or_raise(Detector::create(model, config.camera, templates, DetectorParams{}, config.params))});
+                 value_or_raise(Detector::create(model, config.camera, templates, config.detector, config.params))});
            }),
-           py::arg("model"), py::arg("config"), py::arg("templates"), "A detector of `model` with `config`'s camera and settings.")
+           py::arg("model"), py::arg("config"), py::arg("templates"),
+           "A detector of `model` with `config`'s camera and settings (its .detector for the detection's own).")
+      .def_property_readonly("points_budget", [](const PyDetector& d) { return d.detector.points_budget(); },
+                             "The work budget of one detection in control points, scaled to the frame's pixels "
+                             "(0: no limit).")
       .def(
           "detect",
           [](PyDetector& d, const py::object& frame, std::optional<PixelLayout> layout) {
@@ -221,7 +229,7 @@ void bind_tracking(py::module_& m) {
                             "and on each frame lost or long doubted, then tracks.")
       .def(py::init([](const EdgeModel& model, const TrackerConfig& config, const TemplateSet& templates) {
              return std::unique_ptr<PyAutoTracker>(new PyAutoTracker{value_or_raise(
-                 AutoInitTracker::create(model, config.camera, templates, DetectorParams{}, config.params))});
+                 AutoInitTracker::create(model, config.camera, templates, config.detector, config.params))});
            }),
            py::arg("model"), py::arg("config"), py::arg("templates"), "An automatic tracker of `model` with `config`.")
       .def(

@@ -146,5 +146,37 @@ class Tracking(unittest.TestCase):
         self.assertTrue(auto.confirmed)
         self.assertEqual(later[-1].status, edgetrack.Status.TRACKED)
 
+    def test_detection_budget_from_the_config(self):
+        config = edgetrack.read_config(CONFIG)
+        camera = config.camera
+        camera.width, camera.height = 640, 480
+        config.camera = camera
+        templates = edgetrack.make_templates(self.model, config.camera, 0.4, 0.7)
+        self.assertEqual(config.detector.max_points_searched, edgetrack.DetectorParams().max_points_searched)
+        self.assertGreater(config.detector.max_points_searched, 0, "a budget by default")
+        default = edgetrack.Detector(self.model, config, templates)
+        self.assertEqual(default.points_budget, 4 * config.detector.max_points_searched,
+                         "QVGA's budget scaled to 640 x 480's four times the pixels")
+        config.apply_text("<conf><edgetrack><detector><max_points_searched>1</max_points_searched>"
+                          "</detector></edgetrack></conf>")
+        self.assertEqual(config.detector.max_points_searched, 1, "the XML sets it")
+        cut = edgetrack.Detector(self.model, config, templates).detect(cube_frame(0))
+        self.assertEqual(cut.frames, 1, "a spent budget starts no second frame")
+        self.assertTrue(cut.found or cut.cut_short, "not found only as cut short")
+        self.assertFalse(cut.found and cut.cut_short)
+        detector = config.detector
+        detector.max_points_searched = 0
+        config.detector = detector
+        unlimited = edgetrack.Detector(self.model, config, templates)
+        self.assertEqual(unlimited.points_budget, 0, "0: no limit")
+        found = unlimited.detect(cube_frame(0))
+        self.assertTrue(found.found)
+        self.assertFalse(found.cut_short)
+        self.assertGreater(found.points_searched, 4)
+        detector.max_points_searched = -1
+        config.detector = detector
+        with self.assertRaisesRegex(edgetrack.Error, "budget"):
+            edgetrack.Detector(self.model, config, templates)
+
 if __name__ == "__main__":
     unittest.main()

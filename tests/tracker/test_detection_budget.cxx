@@ -4,9 +4,10 @@
 /// and returns (found where that frame already passed the acceptance check, else not found); a
 /// small one stops within one frame past it; with any budget a pose found is right (within 2 mm
 /// and 2 degrees), never a wrong one passed off as found; a detection the budget cut short is
-/// found only with a confident candidate; the PXA270's QVGA budget (5000 points, docs/APP.md)
-/// finds what the unlimited search finds on these frames, within it; and AutoInitTracker reports a first frame whose detection
-/// ran out of budget unfound lost, not detected.
+/// found only with a confident candidate; the default budget (the PXA270's QVGA budget,
+/// docs/APP.md) finds what the unlimited search finds on these frames, within it; the budget is
+/// scaled by the detection frame's pixels; and AutoInitTracker reports a first frame whose
+/// detection ran out of budget unfound lost, not detected.
 #include <cstdio>
 #include <vector>
 
@@ -25,8 +26,9 @@ namespace {
 constexpr int kLines = 12;
 const uint32_t kSeeds[] = {11, 12, 13};
 constexpr int kSmallBudget = 600;
-/// The budget that keeps a QVGA detection on the PXA270 under 300 M guest instructions (docs/APP.md).
-constexpr int kPxa270Budget = 5000;
+/// The default: the budget that keeps a QVGA detection on the PXA270 under 300 M guest
+/// instructions (docs/APP.md).
+const int kPxa270Budget = DetectorParams{}.max_points_searched;
 /// More control points than one frame of these QVGA views holds at the refining step (5 px): the
 /// wood toy 130-170 mm away spans under 150 px, its visible edges under 1000 px.
 constexpr int kOneFrameMost = 400;
@@ -39,12 +41,40 @@ Result<Detector> detector_with(const EdgeModel& model, const PinholeCamera& came
   return Detector::create(model, camera, std::move(templates).value(), params, TrackerParams{});
 }
 
+/// The budget is QVGA's, scaled by the detection frame's pixels: the same share of a frame's own
+/// cost at any size.
+void test_budget_scaled_by_pixels(const EdgeModel& model) {
+  const PinholeCamera qvga = qvga_camera();
+  TEST_EQUAL("QVGA's budget as given", scaled_points_budget(5000, qvga), 5000);
+  const PinholeCamera vga(qvga.px * real(2), qvga.py * real(2), qvga.u0 * real(2), qvga.v0 * real(2), 640, 480);
+  TEST_EQUAL("640 x 480: four times QVGA's pixels, four times the points", scaled_points_budget(5000, vga), 20000);
+  const PinholeCamera small(qvga.px / real(2), qvga.py / real(2), qvga.u0 / real(2), qvga.v0 / real(2), 160, 120);
+  TEST_EQUAL("160 x 120: a quarter", scaled_points_budget(5000, small), 1250);
+  TEST_EQUAL("no budget stays none", scaled_points_budget(0, vga), 0);
+  TEST_EQUAL("a budget is at least one point", scaled_points_budget(1, small), 1);
+  TEST_EQUAL("no overflow on a large budget and frame", scaled_points_budget(1000000000, vga) > 1000000000, true);
+  TEST("the default is a budget", DetectorParams{}.max_points_searched > 0, true);
+  // A detector at 640 x 480 searches the scaled budget (its templates made at that camera).
+  TemplateParams few = oblique_range();
+  few.views.subdivisions = 0;
+  few.views.in_plane_steps = 4;
+  Result<TemplateSet> templates = make_template_set(model, vga, few);
+  TEST("templates at 640 x 480 are made", templates.ok(), true);
+  if (!templates.ok()) return;
+  Result<Detector> detector = Detector::create(model, vga, std::move(templates).value(), DetectorParams{}, TrackerParams{});
+  TEST("a default detector at 640 x 480 is made", detector.ok(), true);
+  if (detector.ok())
+    TEST_EQUAL("  its budget: the default scaled to its pixels", detector.value().points_budget(),
+               4 * DetectorParams{}.max_points_searched);
+}
+
 }  // namespace
 
 static void test_detection_budget() {
   const Result<EdgeModel> model = load_model(model_path(Scene::kWoodToy));
   TEST("the model loads", model.ok(), true);
   if (!model.ok()) return;
+  test_budget_scaled_by_pixels(model.value());
   const PinholeCamera camera = qvga_camera();
   const Vec3 centre = model_extent(model.value()).centre;
   Result<Detector> tiny = detector_with(model.value(), camera, 1);
@@ -53,6 +83,8 @@ static void test_detection_budget() {
   Result<Detector> pxa270 = detector_with(model.value(), camera, kPxa270Budget);
   TEST("the detectors are made", tiny.ok() && small.ok() && unlimited.ok() && pxa270.ok(), true);
   if (!tiny.ok() || !small.ok() || !unlimited.ok() || !pxa270.ok()) return;
+  TEST_EQUAL("at QVGA the budget is as given", pxa270.value().points_budget(), kPxa270Budget);
+  TEST_EQUAL("  and none stays none", unlimited.value().points_budget(), 0);
   Rgb565Frame frame;
   int not_found = 0;
   for (const uint32_t seed : kSeeds) {

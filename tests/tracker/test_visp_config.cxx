@@ -162,7 +162,8 @@ void readout_block() {
 /// The detector's work budget, in edgetrack's block; none by default.
 void detector_block() {
   TrackerConfig config;
-  TEST_EQUAL("no detection budget by default", config.detector.max_points_searched, 0);
+  TEST_EQUAL("the detection budget by default", config.detector.max_points_searched, DetectorParams{}.max_points_searched);
+  TEST("  which is a limit", config.detector.max_points_searched > 0, true);
   auto read = apply_visp_config(
       write("detector.xml", "<conf><edgetrack><detector><max_points_searched>5000</max_points_searched></detector>"
                             "</edgetrack></conf>"),

@@ -132,12 +132,13 @@ enum class Failure {
   kScreenedOut,   ///< a near match, but not among the ones refined in full
   kConverged,     ///< a near match refined, but no refined pose within 2 mm and 2 degrees
   kScoreChose,    ///< a refined pose right, another one won
-  kThreshold      ///< the winner right, but refused by the acceptance rule
+  kThreshold,     ///< the winner right, but refused by the acceptance rule
+  kBudget         ///< not right, and the work budget ended the search (Detection::cut_short)
 };
-constexpr int kFailures = 6;
+constexpr int kFailures = 7;
 const char* failure_key(Failure f) {
   static const char* const kKeys[kFailures] = {"none", "no_near_match", "screened_out", "converged_elsewhere",
-                                               "score_chose_wrong", "threshold_refused"};
+                                               "score_chose_wrong", "threshold_refused", "budget_ran_out"};
   return kKeys[static_cast<int>(f)];
 }
 
@@ -156,6 +157,7 @@ Failure classify(const Detector& detector, const Detection& d, const Se3& truth,
   }
   const bool winner_right = within(pose_error(d.camera_from_model, truth, centre, symmetries));
   if (d.found && winner_right) return Failure::kNone;
+  if (d.cut_short) return Failure::kBudget;
   if (winner_right) return Failure::kThreshold;
   if (refined_right) return Failure::kScoreChose;
   if (refined_near) return Failure::kConverged;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -42,6 +44,14 @@ bool better(const RefinedCandidate& a, const RefinedCandidate& b, const Detector
 }
 
 }  // namespace
+
+int scaled_points_budget(int qvga_points, const PinholeCamera& detecting) {
+  if (qvga_points <= 0) return 0;
+  constexpr int64_t kQvgaPixels = 320 * 240;
+  const int64_t pixels = static_cast<int64_t>(detecting.width) * detecting.height;
+  const int64_t scaled = (static_cast<int64_t>(qvga_points) * pixels + kQvgaPixels / 2) / kQvgaPixels;
+  return static_cast<int>(std::min<int64_t>(std::max<int64_t>(scaled, 1), std::numeric_limits<int>::max()));
+}
 
 Result<bool> check_detector_params(const DetectorParams& p) {
   auto bad = [](const std::string& what) { return Error{"", 0, "detector parameter out of range: " + what}; };
@@ -136,6 +146,7 @@ Result<Detector> Detector::create(const EdgeModel& model, const PinholeCamera& c
   detector.model_ = model;
   detector.detecting_ = detecting;
   detector.tracking_range_ = tracking.me.range;
+  detector.points_budget_ = scaled_points_budget(params.max_points_searched, detecting);
   return detector;
 }
 

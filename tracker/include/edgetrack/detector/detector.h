@@ -132,25 +132,25 @@ struct DetectorParams {
   /// 0.7 to 0.8), while a right one keeps all but the points of an edge the light leaves faint
   /// (0.8 to 1 on nearly every right pose of the cube and the wood toy).
   real confident_kept_share = real(0.8);
-  /// The detection's work budget: the most control points the screening and refining frames of
-  /// one detection may search (Detection::points_searched; 0, the default: no limit). A
-  /// detection's cost past the matching is about proportional to them, and without a limit a
-  /// frame whose matches all fail costs every candidate's full schedule. 5000 bounds a QVGA
-  /// detection on the PXA270 to 300 M guest instructions (0.7 s at 624 MHz): the matching about
-  /// 50 M, then about 30-36 k a point on the mean but up to about 47 k in the costliest detections
-  /// (frames whose robust rounds all run, wide searches; docs/results/detection.md), so 5000
-  /// points and the frame that takes it over stay under. No default: points are a cost at one
-  /// image size and one range of distances; a frame twice as wide shows a view's edges twice as
-  /// long (twice the points at a sample step in pixels), and a range a decade wide yields many
-  /// more matches, where 5000 points end most detections before
-  /// the right candidate (ViSP's mbt/cube at 640x480 with its files as shipped: found on none of
-  /// its first 20 frames).
+  /// The detection's work budget, in control points the screening and refining frames of one
+  /// detection may search (Detection::points_searched) on a QVGA frame (320 x 240); a detection
+  /// frame of another size gets it scaled by its pixels (Detector::points_budget; 0: no limit).
+  /// A detection's cost past the matching is about proportional to its points, and without a
+  /// limit a frame whose matches all fail costs every candidate's full schedule. The default
+  /// bounds a QVGA detection on the PXA270 to 300 M guest instructions (0.7 s at 624 MHz): the
+  /// matching about 50 M, then about 30-36 k a point on the mean but up to about 47 k in the
+  /// costliest detections (docs/results/detection.md), so 5000 points and the frame that takes
+  /// it over stay under. Scaled by the pixels, the budget keeps the detection's worst cost in
+  /// proportion to the frame's own (the grey conversion and the matching cost per pixel): a
+  /// frame twice as wide shows each candidate's edges twice as long (twice the points a frame),
+  /// and its default range of distances (the model spanning a tenth to the whole of the
+  /// shorter side) reaches nearer candidates whose screening frames cost the more.
   /// No frame starts once it is spent (the last one started may take it over by its own visible
   /// points). The search order (screen, search) puts the likely candidates first, so the budget
   /// cuts the tail; a detection it cut short is found only with a confident candidate (a fit no
   /// later one could better), never with a merely acceptable pose the rest of the search might
   /// have replaced: "not found", and the next frame is detected on again.
-  int max_points_searched = 0;
+  int max_points_searched = 5000;
 };
 
 /// One candidate after refinement.
@@ -208,6 +208,9 @@ class Detector {
   const std::vector<TemplateMatch>& matches() const { return matches_; }
   const TemplateSet& templates() const { return templates_; }
   const DetectorParams& params() const { return params_; }
+  /// DetectorParams::max_points_searched scaled from QVGA to the detection frame's pixels (the
+  /// templates' detection_camera()); 0: no limit.
+  int points_budget() const { return points_budget_; }
 
  private:
   Detector(TemplateSet templates, const DetectorParams& params, Tracker screen, Tracker wide, Tracker tracker,
@@ -281,17 +284,23 @@ class Detector {
   std::vector<const uint32_t*> runs_;
   std::vector<std::vector<TemplateMatch>> per_distance_;
   std::vector<TemplateMatch> matches_;
+  int points_budget_ = 0;    ///< points_budget()
   int points_searched_ = 0;  ///< this detection's, so far
   int frames_ = 0;           ///< this detection's, so far
-  /// DetectorParams::max_points_searched is spent.
-  bool budget_spent() const { return params_.max_points_searched > 0 && points_searched_ >= params_.max_points_searched; }
+  /// points_budget() is spent.
+  bool budget_spent() const { return points_budget_ > 0 && points_searched_ >= points_budget_; }
 };
+
+/// A work budget of `qvga_points` control points on a QVGA frame, scaled to a detection frame of
+/// `detecting`'s pixels (at least 1; 0 when `qvga_points` is 0: no limit).
+int scaled_points_budget(int qvga_points, const PinholeCamera& detecting);
 
 /// Checks the detector's parameters; an Error names the first one out of its range.
 Result<bool> check_detector_params(const DetectorParams& params);
 
 /// Sets the detector's setting `name` that a configuration (<edgetrack><detector>) or the
-/// command line (--detector) may give: max_points_searched, the detection's work budget. An
+/// command line (--detector) may give: max_points_searched, the detection's work budget (QVGA's;
+/// DetectorParams::max_points_searched). An
 /// empty string when set; otherwise the problem (an unknown name, a value out of range).
 std::string set_detector_param(DetectorParams& params, const std::string& name, double value);
 
