@@ -16,10 +16,10 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mkdir -p "${1:-$top/out}" && cd "${1:-$top/out}" && pwd)
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
 
 "$top/toolchains/install-deps.sh"
 source "$top/tests/bench/lib.sh"
+mbt=$visp_images/mbt
 echo "== building edgetrack (host, double) and (ARMv5TE soft-float, s40_23)"
 host=$(bench_tree host double edgetrack)
 arm=$(bench_tree arm s40_23 edgetrack)

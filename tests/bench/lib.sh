@@ -2,6 +2,7 @@
 # Sourced by tests/bench/*/results.sh: builds the trees a benchmark needs, once, under build/bench-*.
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bench_build_root=${EDGETRACK_BUILD_ROOT:-$top/build}
+source "$top/tests/visp_images.sh"
 
 # bench_tree <host|arm|aarch64|armv7hf|mcu> <real> <target>...: configures build/bench-<kind>-<real>
 # (arm: the ARMv5TE PXA270; aarch64 and armv7hf: the hard-float Linux targets; mcu: the Cortex-M3

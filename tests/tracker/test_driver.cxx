@@ -16,6 +16,7 @@ DECLARE(test_motion_model);
 DECLARE(test_cao_format);
 DECLARE(test_contours);
 DECLARE(test_rolling_shutter);
+DECLARE(test_row_times_match_indices);
 DECLARE(test_input_checks);
 DECLARE(test_face_visibility);
 DECLARE(test_cylinder_windows);
@@ -49,6 +50,7 @@ void register_tests() {
   REGISTER(test_cao_format);
   REGISTER(test_contours);
   REGISTER(test_rolling_shutter);
+  REGISTER(test_row_times_match_indices);
   REGISTER(test_input_checks);
   REGISTER(test_face_visibility);
   REGISTER(test_cylinder_windows);

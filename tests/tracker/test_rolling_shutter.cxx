@@ -2,6 +2,9 @@
 /// Control points at their rows' read times (rolling_shutter.h): each moved point projects, at
 /// the frame's pose, where the pose of its row puts the edge; the edge's normal turns with the
 /// shear; a global shutter, or no velocity, leaves the points as they were, bit for bit.
+/// RowTimes::again reads the points by each match's point_index: a caller's matches whose index
+/// names no point, or points other than those move() kept, are refused and nothing is read.
+#include <climits>
 #include <cmath>
 
 #include "edgetrack/control_points.h"
@@ -33,6 +36,23 @@ bool same_bits(const ControlPoint& a, const ControlPoint& b) {
   return a.point_in_model.x == b.point_in_model.x && a.point_in_model.y == b.point_in_model.y &&
          a.point_in_model.z == b.point_in_model.z && a.pixel.x == b.pixel.x && a.pixel.y == b.pixel.y &&
          a.normal.x == b.normal.x && a.normal.y == b.normal.y;
+}
+
+/// Matches found for `points`, one per point, each naming its point.
+std::vector<EdgeMatch> matches_for(const std::vector<ControlPoint>& points) {
+  std::vector<EdgeMatch> matches(points.size());
+  for (size_t k = 0; k < points.size(); ++k) {
+    matches[k].point = points[k];
+    matches[k].point_index = static_cast<int>(k);
+    matches[k].found = points[k].pixel;
+  }
+  return matches;
+}
+
+bool same_model_points(const std::vector<EdgeMatch>& a, const std::vector<EdgeMatch>& b) {
+  bool same = a.size() == b.size();
+  for (size_t k = 0; same && k < a.size(); ++k) same = same_bits(a[k].point, b[k].point);
+  return same;
 }
 
 }  // namespace
@@ -79,4 +99,55 @@ static void test_rolling_shutter() {
        moved[0].pixel.x < sampled[0].pixel.x && moved[4].pixel.x > sampled[4].pixel.x, true);
 }
 
+static void test_row_times_match_indices() {
+  const PinholeCamera camera = qvga();
+  const Se3 pose(Mat33::identity(), Vec3{real(0), real(0), real(0.3)});
+  const Twist velocity{Vec3{real(0.02), real(0), real(0)}, Vec3{real(0), real(0.002), real(0)}};
+  const Twist own{Vec3{real(0.03), real(0), real(0)}, Vec3{real(0), real(0.001), real(0)}};
+  const real readout(1);
+  const std::vector<ControlPoint> sampled = column_points(camera, pose);
+
+  RowTimes never_moved;
+  std::vector<ControlPoint> points = sampled;
+  std::vector<EdgeMatch> matches = matches_for(points);
+  TEST("again() before any move() refuses the points",
+       never_moved.again(points, matches, camera, pose, own, readout), false);
+
+  RowTimes row_times;
+  row_times.move(points, camera, pose, velocity, readout);
+  matches = matches_for(points);
+  const std::vector<ControlPoint> moved_once = points;
+  const std::vector<EdgeMatch> found = matches;
+  bool refused = true, untouched = true;
+  for (const int index : {-1, static_cast<int>(sampled.size()), INT_MAX, INT_MIN}) {
+    std::vector<EdgeMatch> bad = found;
+    bad[2].point_index = index;
+    const std::vector<EdgeMatch> bad_as_given = bad;
+    refused = refused && !row_times.again(points, bad, camera, pose, own, readout);
+    untouched = untouched && same_model_points(bad, bad_as_given);
+  }
+  for (size_t k = 0; k < points.size(); ++k) untouched = untouched && same_bits(points[k], moved_once[k]);
+  TEST("a match whose point_index names no point is refused", refused, true);
+  TEST("a refused call changes neither the points nor the matches", untouched, true);
+
+  std::vector<ControlPoint> fewer(points.begin(), points.end() - 1);
+  TEST("points other than those move() kept are refused", row_times.again(fewer, matches, camera, pose, own, readout),
+       false);
+
+  TEST("the tracker's own matches are taken", row_times.again(points, matches, camera, pose, own, readout), true);
+  bool paired = true;
+  for (size_t k = 0; k < matches.size(); ++k)
+    paired = paired && matches[k].point.point_in_model.x == points[k].point_in_model.x &&
+             matches[k].point.point_in_model.y == points[k].point_in_model.y &&
+             matches[k].point.point_in_model.z == points[k].point_in_model.z;
+  TEST("each match takes its own point's new model point", paired, true);
+  TEST("the new velocity moves the model points again", points[0].point_in_model.x != moved_once[0].point_in_model.x,
+       true);
+
+  row_times.move(points, camera, pose, Twist{}, readout);
+  TEST("after a move() with no velocity the earlier frame's points are gone",
+       row_times.again(points, matches, camera, pose, own, readout), false);
+}
+
 TESTMAIN(test_rolling_shutter)
+TESTMAIN(test_row_times_match_indices)

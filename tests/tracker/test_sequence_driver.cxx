@@ -42,6 +42,7 @@ DECLARE(test_thin_lines);
 DECLARE(test_drift_check);
 DECLARE(test_detection_budget);
 DECLARE(test_rolling_shutter_tracking_cube);
+DECLARE(test_rolling_shutter_drift_check_cube);
 
 void register_tests() {
   REGISTER(test_tracking_cube);
@@ -84,6 +85,7 @@ void register_tests() {
   REGISTER(test_drift_check);
   REGISTER(test_detection_budget);
   REGISTER(test_rolling_shutter_tracking_cube);
+  REGISTER(test_rolling_shutter_drift_check_cube);
 }
 
 DEFINE_MAIN

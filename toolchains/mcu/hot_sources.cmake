@@ -36,7 +36,9 @@ if(EDGETRACK_MCU_LTO)
   set_property(TARGET tracker_firmware tracker_firmware_cube_xml APPEND PROPERTY LINK_OPTIONS -flto-partition=none)
   # GCC 12.2's link-time modref analysis: with it, edge_model.cpp at -Os put circles and cylinder
   # outlines in the wrong place (tracker_test_contours: no circle points sampled); without it, or
-  # without link-time constant propagation (-fno-ipa-cp), or at -O2, right. Not reduced further.
+  # without link-time constant propagation (-fno-ipa-cp), or at -O2, right. It follows what the link
+  # inlines around edge_model's sin and cos (on_circle), not their code, which has no type punning
+  # or aliasing to get wrong: some trees pass with it on, so it stays off until GCC's fault is reduced.
   target_compile_options(tracker PRIVATE -fno-ipa-modref -ffat-lto-objects)
   # The other images (the command line, the tests) link libtracker's machine code, as without
   # link-time optimisation: optimised at the link, the command line's frames called fixed64's

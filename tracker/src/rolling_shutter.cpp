@@ -66,17 +66,26 @@ void move_to_row_times(std::vector<ControlPoint>& points, const PinholeCamera& c
 
 void RowTimes::move(std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose,
                     const Twist& velocity, const real& readout) {
-  if (readout == real(0) || is_zero(velocity)) return;  // a global shutter copies nothing
+  if (readout == real(0) || is_zero(velocity)) {
+    sampled_.clear();  // a global shutter copies nothing, and again() finds no earlier frame's points
+    return;
+  }
   sampled_ = points;
   move_to_row_times(points, camera, pose, velocity, readout);
 }
 
-void RowTimes::again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
+bool RowTimes::again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
                      const Se3& pose, const Twist& velocity, const real& readout) {
+  // The matches may be a caller's: each index is checked before any is read.
+  const size_t count = sampled_.size();
+  if (points.size() != count) return false;
+  for (const EdgeMatch& m : matches)
+    if (m.point_index < 0 || static_cast<size_t>(m.point_index) >= count) return false;
   moved_ = sampled_;
   move_to_row_times(moved_, camera, pose, velocity, readout);
   for (EdgeMatch& m : matches) m.point.point_in_model = moved_[static_cast<size_t>(m.point_index)].point_in_model;
-  for (size_t k = 0; k < points.size(); ++k) points[k].point_in_model = moved_[k].point_in_model;
+  for (size_t k = 0; k < count; ++k) points[k].point_in_model = moved_[k].point_in_model;
+  return true;
 }
 
 size_t RowTimes::heap_bytes() const { return capacity_bytes(sampled_) + capacity_bytes(moved_); }

@@ -475,7 +475,7 @@ void Tracker::State::attempt(const FrameView& frame, const Se3& start, unsigned 
 void Tracker::State::resolve_at_own_velocity(const Se3& start, const PoseParams& pose_params, PoseSolution& solution) {
   if (params_.readout == real(0) || !solution.solved || is_zero(motion_.velocity()) || motion_.lost_last_frame()) return;
   const Twist own = (solution.camera_from_model * motion_.trusted().inverse()).log();
-  row_times_.again(visible_, matches_, camera_, start, own, params_.readout);
+  if (!row_times_.again(visible_, matches_, camera_, start, own, params_.readout)) return;
   PoseSolution second = solve_pose(matches_, camera_, start, pose_params, pose_workspace_);
   second.evaluations += solution.evaluations;
   second.iterations += solution.iterations;
@@ -560,6 +560,7 @@ const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
   if (!camera_.distorted() || !same_bits(solved, solved_pixels_pose_)) return nullptr;
   remembered_pixels_.pixel.resize(matches_.size());
   remembered_pixels_.in_front.resize(matches_.size());
+  // matches_ are the tracker's own, searched from visible_: each point_index is below its size.
   for (size_t k = 0; k < matches_.size(); ++k) {
     const size_t v = static_cast<size_t>(matches_[k].point_index);
     remembered_pixels_.pixel[k] = solved_pixels_.pixel[v];

@@ -19,7 +19,7 @@ if ! "$host_double" track --help >/dev/null 2>&1; then
   echo "app results: edgetrack has no track command (no tracker frame loop in this checkout)" >&2
   exit 1
 fi
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 models=$top/data/models
 
 "$host_double" synth --out "$work/paper" >"$work/synth.txt"

@@ -12,7 +12,7 @@ source "$here/../lib.sh"
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/castle.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-castle=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+castle=$visp_images/mbt-depth/Castle-simu
 for needed in Models/chateau.cao Config/chateau.xml CameraPose/Camera_001.txt Images/Image_0001.pgm; do
   [ -e "$castle/$needed" ] || { echo "castle: $castle/$needed is missing (Debian's visp-images-data)" >&2; exit 1; }
 done

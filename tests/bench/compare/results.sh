@@ -16,7 +16,7 @@ if ! "$edgetrack" compare --help >/dev/null 2>&1; then
   echo "compare: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
   exit 1
 fi
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 models=$top/data/models
 repeat=5
 target=5

@@ -12,7 +12,7 @@ source "$here/../lib.sh"
 seeds=(1 2 3)
 fast_speed=4
 hide=30:41      # frames the board covers the whole object on, in the "covered" sequences
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 models=$top/data/models
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/detection_sequences.XXXXXX")

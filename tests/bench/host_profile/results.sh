@@ -13,7 +13,7 @@ source "$here/../lib.sh"
 frames=50
 top_functions=12
 revisions=(${HOST_PROFILE_REVISIONS:-})
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/host_profile.XXXXXX")
 trap 'rm -rf "$work"' EXIT

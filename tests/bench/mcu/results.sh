@@ -218,7 +218,7 @@ setting() { sed -n "s/.*<$1>\([^<]*\)<\/$1>.*/\1/p" "$2" | head -n 1; }
 buffer_bytes() { sed -n "s/^tracker memory: $1 \([0-9]*\) bytes$/\1/p" "$2"; }
 
 settings_section() {
-  local cube_xml=/usr/share/visp-images-data/ViSP-images/mbt/cube.xml
+  local cube_xml=$visp_images/mbt/cube.xml
   # ViSP's moving-edge settings for its mbt cube (mask size, sample step, range, threshold) with the
   # generated sequence's camera.
   { echo '<?xml version="1.0"?>'; echo '<conf>'; sed -n '/<ecm>/,/<\/ecm>/p' "$cube_xml"

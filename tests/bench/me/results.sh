@@ -7,7 +7,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
-data=${VISP_INPUT_IMAGE_PATH:-/usr/share/visp-images-data}/ViSP-images
+data=$visp_images
 cube0="$data/mbt/cube/image0000.pgm"
 mkdir -p "$bench_build_root"
 host=$(bench_tree host double me_sites_ports me_sites_upstream)

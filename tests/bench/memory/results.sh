@@ -8,7 +8,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 arm_run=(qemu-arm -cpu pxa270 -L /usr/arm-linux-gnueabi)
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/memory.XXXXXX")

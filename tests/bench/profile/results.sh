@@ -15,7 +15,7 @@ frames=60
 top_functions=25
 host_frames=50
 revisions=(${PROFILE_REVISIONS:-})
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/profile.XXXXXX")
 trap 'rm -rf "$work"' EXIT

@@ -10,7 +10,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 dir=$(bench_tree host double edgetrack_python cpp_track_loop)
 last=${EDGETRACK_BENCH_PYTHON_LAST:-217}
 frames=$((last + 1)) rounds=${EDGETRACK_BENCH_ROUNDS:-3}

@@ -9,7 +9,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 work=$(mktemp -d "${TMPDIR:-/tmp}/startup.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 dir=$(bench_tree host double edgetrack visp_track_sequence)

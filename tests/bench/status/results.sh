@@ -8,9 +8,9 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
-castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+mbt=$visp_images/mbt
+castel=$visp_images/mbt-depth/castel
+castle_simu=$visp_images/mbt-depth/Castle-simu
 models=$top/data/models
 seeds=(1 2 3)
 mkdir -p "$bench_build_root"

@@ -13,7 +13,7 @@ frames=60
 runs=5
 cpi=1.5  # assumed XScale cycles per instruction for the 624 MHz estimate
 target=2000000  # the S40.23 target, guest instructions per frame
-visp_xml=/usr/share/visp-images-data/ViSP-images/mbt/cube.xml  # ViSP's settings for the per-point row
+visp_xml=$visp_images/mbt/cube.xml  # ViSP's settings for the per-point row
 mkdir -p "$bench_build_root"
 work=$(mktemp -d "${TMPDIR:-/tmp}/tracker_bench.XXXXXX")
 trap 'rm -rf "$work"' EXIT

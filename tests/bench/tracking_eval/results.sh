@@ -23,7 +23,7 @@ if ! "$edgetrack" compare --help >/dev/null 2>&1; then
   echo "tracking_eval: edgetrack has no compare command (ViSP's mbt module not found at configure time)" >&2
   exit 1
 fi
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+mbt=$visp_images/mbt
 models=$top/data/models
 fast_speed=4.2   # the paper's path 4.2 times faster: about 12 px per QVGA frame
 cover_share=0.3

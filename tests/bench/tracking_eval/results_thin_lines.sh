@@ -16,9 +16,9 @@ edgetrack=$bench/app/edgetrack
 profiles=$bench/tests/bench/tracking_eval/tracking_eval_drift_profiles
 dynamics=$bench/tests/bench/tracking_eval/tracking_eval_clutter_dynamics
 edgetrack_s40=$(bench_tree host s40_23 edgetrack)/app/edgetrack
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
-castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
-castle_simu=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+mbt=$visp_images/mbt
+castel=$visp_images/mbt-depth/castel
+castle_simu=$visp_images/mbt-depth/Castle-simu
 models=$top/data/models
 on=(--thin-lines enabled=1)
 off=(--thin-lines check=0)

@@ -9,8 +9,7 @@ set -u
 # fail, expect_error, expect_usage_error, less
 source "$(dirname "$0")/cli_common.sh" "$@"
 
-grids=/usr/share/visp-images-data/ViSP-images/calibration
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+grids=$visp_images/calibration
 
 calibrate_grids() {
   "$edgetrack" calibrate --target circles --count 6x6 --spacing 0.034 --visp "$work/camera.xml" \

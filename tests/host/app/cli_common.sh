@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # What every command-line test script starts with, sourced with the script's own arguments
-# (EDGETRACK TMPDIR CASE): $edgetrack, $name (the case), $work (its fresh directory), $mbt (ViSP's
-# mbt images), $data (the repository's data/), and the helpers below.
+# (EDGETRACK TMPDIR CASE): $edgetrack, $name (the case), $work (its fresh directory), $visp_images
+# (ViSP's example images), $mbt (their mbt folder), $data (the repository's data/), and the helpers below.
 edgetrack=$1
 work=$2/$3
 name=$3
-mbt=/usr/share/visp-images-data/ViSP-images/mbt
+source "$(dirname "${BASH_SOURCE[0]}")/../../visp_images.sh"
+mbt=$visp_images/mbt
 data=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../../data" && pwd)
 rm -rf "$work" && mkdir -p "$work"
 

@@ -138,7 +138,7 @@ case $name in
   castle_simu_matrix_poses)
     # ViSP's Castle-simu: initialised from its first 4x4 camera pose file, evaluated against the
     # directory of them (Camera_001.txt ... Camera_040.txt are frames 1-40, as Image_0001.pgm ...).
-    castle=/usr/share/visp-images-data/ViSP-images/mbt-depth/Castle-simu
+    castle=$visp_images/mbt-depth/Castle-simu
     "$edgetrack" track --model "$castle/Models/chateau.cao" --camera "$castle/Config/chateau.xml" \
       --init-pose "$castle/CameraPose/Camera_001.txt" --images "$castle/Images" --quiet --poses "$work/poses.csv" \
       >/dev/null || fail "track failed"
@@ -300,7 +300,7 @@ case $name in
     # from the frames after the given pose, at most 3 of the 30 frames are not tracked; with the
     # learning off (--status, or the XML's <edgetrack><status> block) the fixed bounds call
     # every frame uncertain (measured: 30 of 30).
-    castel=/usr/share/visp-images-data/ViSP-images/mbt-depth/castel
+    castel=$visp_images/mbt-depth/castel
     track_castel() {
       "$edgetrack" track --model "$castel/chateau.cao" --camera "$castel/chateau.xml" --init-pose "$castel/chateau.0.pos" \
         --images "$castel/castel/image_%04d.pgm" --quiet "$@"

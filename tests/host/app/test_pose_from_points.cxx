@@ -25,7 +25,7 @@ static double angle_deg(const Se3& a, const Se3& b) {
 }
 
 static void test_pose_from_points() {
-  const std::string mbt = "/usr/share/visp-images-data/ViSP-images/mbt";
+  const std::string mbt = std::string(EDGETRACK_VISP_IMAGES) + "/mbt";
   auto points = read_init_points(mbt + "/cube.init");
   TEST("cube.init reads", points.ok(), true);
   auto truth = edgetrack::read_pos(mbt + "/cube.0.pos");

@@ -125,7 +125,7 @@ void check(const char* name, const Figures& f, int frames, double worst_frame, d
 }
 
 void real_mbt_cube() {
-  const std::string mbt = "/usr/share/visp-images-data/ViSP-images/mbt";
+  const std::string mbt = std::string(EDGETRACK_VISP_IMAGES) + "/mbt";
   auto model = edgetrack::load_model(mbt + "/cube.cao");
   auto camera = edgetrack_app::read_camera(mbt + "/cube.xml", 640, 480);
   auto initial = edgetrack::read_pos(mbt + "/cube.0.pos");

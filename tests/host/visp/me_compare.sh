@@ -9,7 +9,8 @@
 #                                                    the same level for at least 99% of colours)
 set -euo pipefail
 up=$1 ours=$2 target=$3
-data=${VISP_INPUT_IMAGE_PATH:-/usr/share/visp-images-data}/ViSP-images
+source "$(dirname "$0")/../../visp_images.sh"
+data=$visp_images
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 if [ "$target" = masks ]; then

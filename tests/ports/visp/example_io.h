@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// Input and output of the example programs, ViSP API only so that they build against upstream
-/// too: the data set's place (VISP_INPUT_IMAGE_PATH, as upstream's examples), its binary PGM
+/// too: the data set's place (VISP_INPUT_IMAGE_PATH when set, as upstream's examples, else the
+/// build's EDGETRACK_VISP_IMAGES), its binary PGM
 /// frames (standing in for upstream's vpImageIo::read, not ported), and the site listing.
 #pragma once
 
@@ -17,7 +18,7 @@ namespace example {
 
 inline std::string visp_images_path() {
   const char* env = std::getenv("VISP_INPUT_IMAGE_PATH");
-  return std::string(env != nullptr ? env : "/usr/share/visp-images-data") + "/ViSP-images";
+  return env != nullptr ? std::string(env) + "/ViSP-images" : std::string(EDGETRACK_VISP_IMAGES);
 }
 
 /// "<dir>/image.NNNN.pgm", as upstream's examples name their frames.

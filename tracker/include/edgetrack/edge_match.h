@@ -12,7 +12,9 @@ constexpr int kMaxHypotheses = 4;
 struct EdgeMatch {
   ControlPoint point;
   /// Where `point` sits in the control points it was searched from (search_moving_edges), so
-  /// that the tracker pairs the match back with its visible point without comparing points.
+  /// that the tracker pairs the match back with its visible point without comparing points
+  /// (-1: none). Read by RowTimes::again, which checks it against the points it kept, and by
+  /// the tracker on its own matches only.
   int point_index = -1;
   Vec2 found;            ///< the image edge point q_i: the strongest edge along the normal, pixels
   bool outlier = false;  ///< set by the pose step when it gave the match no weight (ViSP's M_ESTIMATOR)

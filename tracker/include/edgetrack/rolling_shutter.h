@@ -50,13 +50,14 @@ void move_to_row_times(std::vector<ControlPoint>& points, const PinholeCamera& c
 class RowTimes {
  public:
   /// move_to_row_times, keeping the points as sampled for again() (with readout 0 or a zero
-  /// velocity, nothing: again() is then not called).
+  /// velocity, nothing: again() then has no points to move).
   void move(std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose, const Twist& velocity,
             const real& readout);
   /// The model points of `points` (those move() moved) and of `matches` (found for them, each
   /// at its EdgeMatch::point_index) moved from where they were sampled with `velocity` instead;
-  /// their pixels and normals, where the search looked, stay.
-  void again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
+  /// their pixels and normals, where the search looked, stay. False, and nothing changed, when
+  /// `points` are not as many as move() kept or a match's point_index names none of them.
+  bool again(std::vector<ControlPoint>& points, std::vector<EdgeMatch>& matches, const PinholeCamera& camera,
              const Se3& pose, const Twist& velocity, const real& readout);
   /// The heap its buffers hold, for Tracker::memory.
   size_t heap_bytes() const;
