@@ -14,7 +14,7 @@ set(EDGETRACK_MCU_FRAME_OPTIONS -Os -DFIXEDPOINT_FORCE_INLINE
 # Nor is excluded_pull.cpp, the drift check's gate (once a frame, its sums over the matches
 # fixed64's dot_product): kept apart from pose_uncertainty.cpp, it took 2.8 KB less for 2.8 K more
 # instructions a frame with the check on.
-set(edgetrack_hot_tracker moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support)
+set(edgetrack_hot_tracker moving_edges pose_uncertainty edge_id_buffer contrast_memory edge_support thin_lines)
 list(TRANSFORM edgetrack_hot_tracker REPLACE "(.+)" "${PROJECT_SOURCE_DIR}/tracker/src/\\1.cpp")
 set_source_files_properties(${edgetrack_hot_tracker} DIRECTORY ${PROJECT_SOURCE_DIR}/tracker
                             PROPERTIES COMPILE_OPTIONS "${EDGETRACK_MCU_FRAME_OPTIONS}")

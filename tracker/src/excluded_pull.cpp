@@ -59,12 +59,19 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
   real* const residual = rows.residuals.data();
   real* column[kDof];
   for (int k = 0; k < kDof; ++k) column[k] = rows.jacobian.data() + static_cast<size_t>(k) * m;
-  for (size_t i = 0; i < m; ++i)
-    if (matches[i].excluded) {
-      residual[i] = real(0);
-      for (int k = 0; k < kDof; ++k) column[k][i] = real(0);
+  // The rows of the matches not excluded, moved to the front of each column: the sums below
+  // skip the excluded rows rather than add their zeros (the same sums, a fifth fewer products
+  // where the test calls a fifth of the matches lines).
+  size_t kept = 0;
+  for (size_t i = 0; i < m; ++i) {
+    if (matches[i].excluded) continue;
+    if (kept != i) {
+      residual[kept] = residual[i];
+      for (int k = 0; k < kDof; ++k) column[k][kept] = column[k][i];
     }
-  const int count = static_cast<int>(m);
+    ++kept;
+  }
+  const int count = static_cast<int>(kept);
   real h[kDof][kDof] = {}, pull[kDof];
   for (int i = 0; i < kDof; ++i) {
     for (int j = 0; j <= i; ++j) h[i][j] = sum_of_products(count, column[i], column[j]);
@@ -83,12 +90,8 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
   const real first[kDof] = {moved.x, moved.y, moved.z, turn.x, turn.y, turn.z};
   // |L^T (Delta_2 - Delta_1)| with L L^T Delta_2 = -g: |L^-1 g + L^T Delta_1|.
   real z[kDof];
+  forward_substitute(h, inv_diagonal, pull, z);
   real square(0);
-  for (int k = 0; k < kDof; ++k) {
-    real s = pull[k];
-    for (int j = 0; j < k; ++j) s -= h[k][j] * z[j];
-    z[k] = s * inv_diagonal[k];
-  }
   for (int j = 0; j < kDof; ++j) {
     real y(0);
     for (int k = j; k < kDof; ++k) y += h[k][j] * first[k];

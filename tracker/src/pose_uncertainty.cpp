@@ -121,17 +121,12 @@ void scale_turns(real a[kDof][kDof], const real& inv_radius) {
 
 /// |L^-1 g|^2 (`inv_diagonal`: 1 / L's diagonal), or a negative value when a component passes
 /// `cap` (the variance is then off scale).
-real whitened_square(const real l[kDof][kDof], const real inv_diagonal[kDof], const real g[kDof], const real& cap) {
-  using std::fabs;
+real whitened_square(const real (&l)[kDof][kDof], const real (&inv_diagonal)[kDof], const real (&g)[kDof],
+                     const real& cap) {
   real z[kDof];
+  if (!forward_substitute(l, inv_diagonal, g, z, cap)) return real(-1);
   real sum(0);
-  for (int k = 0; k < kDof; ++k) {
-    real s = g[k];
-    for (int j = 0; j < k; ++j) s -= l[k][j] * z[j];
-    z[k] = s * inv_diagonal[k];
-    if (fabs(z[k]) > cap) return real(-1);
-    sum += z[k] * z[k];
-  }
+  for (int k = 0; k < kDof; ++k) sum += z[k] * z[k];
   return sum;
 }
 
@@ -261,6 +256,18 @@ bool factor_information(real (&information)[kDof][kDof], real (&inv_diagonal)[kD
   // A pivot below a millionth of the largest is a direction the matches do not see.
   if (!(largest > real(0)) || !cholesky_in_place(information, kDof, real(1e-6) * largest)) return false;
   for (int k = 0; k < kDof; ++k) inv_diagonal[k] = real(1) / information[k][k];
+  return true;
+}
+
+bool forward_substitute(const real (&l)[kDof][kDof], const real (&inv_diagonal)[kDof], const real (&g)[kDof],
+                        real (&z)[kDof], const real& cap) {
+  using std::fabs;
+  for (int k = 0; k < kDof; ++k) {
+    real s = g[k];
+    for (int j = 0; j < k; ++j) s -= l[k][j] * z[j];
+    z[k] = s * inv_diagonal[k];
+    if (fabs(z[k]) > cap) return false;
+  }
   return true;
 }
 

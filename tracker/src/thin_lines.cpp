@@ -6,31 +6,44 @@
 namespace edgetrack {
 namespace {
 
-/// The grey level at the pixel holding `at` + k `step`, or -1 outside the image.
-int level(const vpImage<unsigned char>& grey, const Vec2& at, const Vec2& step, int k) {
-  const real x = at.x + real(k) * step.x, y = at.y + real(k) * step.y;
-  if (x < real(0) || y < real(0)) return -1;
-  const unsigned j = static_cast<unsigned>(static_cast<int>(x)), i = static_cast<unsigned>(static_cast<int>(y));
+/// The grey level at the pixel holding `at`, or -1 outside the image.
+int level(const vpImage<unsigned char>& grey, const Vec2& at) {
+  if (at.x < real(0) || at.y < real(0)) return -1;
+  const unsigned j = static_cast<unsigned>(static_cast<int>(at.x)), i = static_cast<unsigned>(static_cast<int>(at.y));
   if (i >= grey.getHeight() || j >= grey.getWidth()) return -1;
   return grey[i][j];
 }
+
+/// The longest profile a test reads into the darker side: dark_px and beyond_px, 8 each at most
+/// (set_thin_line_param).
+constexpr int kMostProfilePx = 16;
 
 }  // namespace
 
 bool on_thin_line(const vpImage<unsigned char>& grey, const Vec2& at, const Vec2& normal, bool brighter_along_normal,
                   const ThinLineParams& params) {
   const Vec2 darker = brighter_along_normal ? Vec2{-normal.x, -normal.y} : normal;
-  const int bright = level(grey, at, darker, -2);
+  // The profile's pixels a step apart, each point the last plus `darker`: in fixed point the
+  // same points as at + k darker, without a multiplication per pixel.
+  Vec2 point = at - (darker + darker);
+  const int bright = level(grey, point);
   if (bright < 0) return false;
-  // The darkest pixel within the line's width, then the brightest within as much again beyond it.
-  int dark = 256, dark_k = 0;
-  for (int k = 1; k <= params.dark_px; ++k) {
-    const int v = level(grey, at, darker, k);
-    if (v < 0) return false;
-    if (v < dark) dark = v, dark_k = k;
+  point = at;
+  // The darkest pixel within the line's width, then the brightest within as much again beyond
+  // it: the profile read once, as far as the darkest could reach.
+  const int read = std::min(params.dark_px + params.beyond_px, kMostProfilePx);
+  const int width = std::min(params.dark_px, read);
+  int profile[kMostProfilePx + 1];
+  for (int k = 1; k <= read; ++k) {
+    point = point + darker;
+    profile[k] = level(grey, point);
+    if (k <= width && profile[k] < 0) return false;
   }
+  int dark = 256, dark_k = 0;
+  for (int k = 1; k <= width; ++k)
+    if (profile[k] < dark) dark = profile[k], dark_k = k;
   int beyond = -1;
-  for (int k = dark_k + 1; k <= dark_k + params.beyond_px; ++k) beyond = std::max(beyond, level(grey, at, darker, k));
+  for (int k = dark_k + 1; k <= std::min(dark_k + params.beyond_px, read); ++k) beyond = std::max(beyond, profile[k]);
   if (beyond < 0 || bright <= dark) return false;
   return real(beyond - dark) >= params.return_share * real(bright - dark);
 }
