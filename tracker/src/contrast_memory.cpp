@@ -78,7 +78,11 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
       if (projected) {
-        if (!projected->in_front[k] || !(fabs(dot(m.point.normal, projected->pixel[k] - m.found)) < within)) continue;
+        const size_t v = static_cast<size_t>(m.point_index);
+        if (!projected->in_front[v]) continue;
+        if (through_lens ? !(fabs(dot(m.point.normal, projected->pixel[v] - m.found)) < within)
+                         : !projects_near(camera, false, projected->in_camera[v], m.point.normal, m.found, within))
+          continue;
       } else {
         const Vec3 p = camera_from_model * m.point.point_in_model;
         if (p.z <= real(0) || !projects_near(camera, through_lens, p, m.point.normal, m.found, within)) continue;
