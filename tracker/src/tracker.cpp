@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "edgetrack/angles.h"
@@ -46,22 +47,23 @@ class StepClock {
 /// where `pose` projects it, pixels: what the moving-edge search had to reach. The shift
 /// n . (project(P) - pixel) is |a X + b Y + c Z| / Z; the largest is found by comparing cross
 /// products, so that one division is left for the frame (an ARMv5TE has no divider). Through a
-/// lens the shift needs the projection itself. `projected` holds each point at `pose`
-/// (project_points).
-real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera,
-                          const ProjectedPoints& projected) {
+/// lens the shift needs the projection itself. `projected`, given through a lens and else when
+/// shared (shares_projections), holds each point at `pose` (project_points).
+real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose,
+                          const ProjectedPoints* projected) {
   using std::fabs;
   if (camera.distorted()) {
     real worst(0);
     for (size_t p = 0; p < points.size(); ++p)
-      if (projected.in_front[p]) worst = std::max(worst, fabs(dot(points[p].normal, projected.pixel[p] - points[p].pixel)));
+      if (projected->in_front[p])
+        worst = std::max(worst, fabs(dot(points[p].normal, projected->pixel[p] - points[p].pixel)));
     return worst;
   }
   real worst_numerator(0), worst_depth(1);
   for (size_t k = 0; k < points.size(); ++k) {
-    if (!projected.in_front[k]) continue;
     const ControlPoint& p = points[k];
-    const Vec3& in_camera = projected.in_camera[k];
+    const Vec3 in_camera = projected ? projected->in_camera[k] : pose * p.point_in_model;
+    if (in_camera.z <= real(0)) continue;
     const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
     const real numerator = fabs(sum_of_products(p.normal.x * camera.px, in_camera.x, p.normal.y * camera.py,
                                                 in_camera.y, offset, in_camera.z));
@@ -127,7 +129,8 @@ class Tracker::State {
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
   StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
-  ProjectedPoints solved_pixels_;  ///< the visible points at the solved pose (judge)
+  /// The visible points at the solved pose (judge), where shares_projections().
+  ProjectedPoints solved_pixels_;
   Se3 solved_pixels_pose_;  ///< the pose solved_pixels_ were projected with
 
  private:
@@ -169,6 +172,11 @@ class Tracker::State {
   /// solved_pixels_ when judge projected the visible points with `solved` (the last attempt's
   /// pose), else null: the contrast memory then projects the matches' points.
   const ProjectedPoints* projected_matches(const Se3& solved) const;
+  /// Whether the status measures and the contrast memory share one transform of each visible
+  /// point at the solved pose (solved_pixels_): in floating point, and through a lens (a
+  /// projection is dear); fixed point's targets keep the RAM (the firmware's arena at cube.xml's
+  /// settings has no room for it) and transform each point where it is used.
+  bool shares_projections() const { return std::numeric_limits<real>::is_iec559 || camera_.distorted(); }
   /// A camera created without an image size takes the first frame's: the camera is checked
   /// with it and the image buffers sized (the one frame that allocates them).
   std::optional<Error> take_frame_size(const FrameView& frame);
@@ -308,9 +316,11 @@ void Tracker::State::reserve_for_limits() {
   pose_workspace_.reserve(points, camera_.distorted());
   if (drift_check_runs(params_.thin_lines)) drift_workspace_.reserve(points);
   contrast_memory_.reserve(points, static_cast<size_t>(limits_.primitives));
-  solved_pixels_.in_camera.reserve(points);
-  solved_pixels_.pixel.reserve(points);
-  solved_pixels_.in_front.reserve(points);
+  if (shares_projections()) {
+    solved_pixels_.in_camera.reserve(points);
+    solved_pixels_.pixel.reserve(points);
+    solved_pixels_.in_front.reserve(points);
+  }
   if (params_.readout != real(0)) row_times_.reserve(points);
   if (limits_.colour_frames) {
     grey_.resize(static_cast<unsigned>(camera_.height), static_cast<unsigned>(camera_.width));
@@ -514,9 +524,13 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.residual_scale = result.pose.residual_scale;
   const Se3& solved = result.pose.camera_from_model;
   // Each point at the solved pose once, for the measures and the contrast memory.
-  project_points(visible_, camera_, solved, solved_pixels_);
-  solved_pixels_pose_ = solved;
-  m.correction_px = largest_normal_shift(visible_, camera_, solved_pixels_);
+  const ProjectedPoints* projected = nullptr;
+  if (shares_projections()) {
+    project_points(visible_, camera_, solved, solved_pixels_);
+    solved_pixels_pose_ = solved;
+    projected = &solved_pixels_;
+  }
+  m.correction_px = largest_normal_shift(visible_, camera_, solved, projected);
   const Se3 change = solved * start.inverse();
   m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
   m.rotation_change_deg = real(kDegreesPerRadian) * norm(rotation_log(change.rotation()));
@@ -528,7 +542,7 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.after_loss = motion_.lost_last_frame();
   const EdgeSupport support =
       edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_,
-                   &solved_pixels_);
+                   projected);
   m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
   m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =
@@ -553,7 +567,8 @@ void Tracker::State::conclude(FrameResult& result) {
 }
 
 const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) const {
-  const bool current = same_bits(solved, solved_pixels_pose_) && solved_pixels_.in_front.size() == visible_.size();
+  const bool current = shares_projections() && same_bits(solved, solved_pixels_pose_) &&
+                       solved_pixels_.in_front.size() == visible_.size();
   return current ? &solved_pixels_ : nullptr;
 }
 
