@@ -128,10 +128,14 @@ static void test_edge_contrast() {
   TEST_NEAR("nor of a match off the solved projection", found[4], 1030, 1e-9);
   TEST_NEAR("nor of a match far weaker than its primitive's others: the primitive's mean", found[5], 1015, 1e-9);
   TEST("borrowed", borrowed[5] != 0, true);
-  // The same memory from projections made once (the tracker shares its status's): the same
-  // references; a match whose point is marked behind the camera is not remembered.
+  // The same memory from projections made once (the tracker shares its status's, a match's at
+  // its point_index): the same references; a match whose point is marked behind the camera is
+  // not remembered.
   std::vector<ControlPoint> kept_points;
-  for (const EdgeMatch& m : kept) kept_points.push_back(m.point);
+  for (EdgeMatch& m : kept) {
+    m.point_index = static_cast<int>(kept_points.size());
+    kept_points.push_back(m.point);
+  }
   ProjectedPoints projected;
   project_points(kept_points, camera, pose, projected);
   ContrastMemory shared;

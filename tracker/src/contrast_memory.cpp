@@ -40,11 +40,11 @@ real depth_in_camera(const Se3& camera_from_model, const Vec3& point) {
 
 /// Whether the point p (camera frame, z > 0) projects within `within` pixels of `found` along
 /// `normal`: the distance times z, so that the projection needs no division. `through_lens`:
-/// camera.distorted(), asked once per frame.
-bool projects_near(const PinholeCamera& camera, bool through_lens, const Vec3& p, const Vec2& normal,
+/// camera.distorted(), asked once per frame; `pixel`, when given, p's projection through it.
+bool projects_near(const PinholeCamera& camera, bool through_lens, const Vec3& p, const Vec2* pixel, const Vec2& normal,
                    const Vec2& found, const real& within) {
   using std::fabs;
-  if (through_lens) return fabs(dot(normal, camera.project_through_lens(p) - found)) < within;
+  if (through_lens) return fabs(dot(normal, (pixel ? *pixel : camera.project_through_lens(p)) - found)) < within;
   const real along_times_z = normal.x * (camera.px * p.x + (camera.u0 - found.x) * p.z) +
                              normal.y * (camera.py * p.y + (camera.v0 - found.y) * p.z);
   return fabs(along_times_z) < within * p.z;
@@ -77,12 +77,20 @@ void ContrastMemory::remember(const std::vector<EdgeMatch>& matches, const Pinho
     for (size_t k = first; k < end; ++k) {
       const EdgeMatch& m = matches[k];
       if (m.outlier || fabs(m.contrast) < half_mean) continue;
+      // The match's point at the pose, and through a lens its pixel: shared, else computed here.
+      Vec3 own;
+      const Vec3* p = &own;
+      const Vec2* pixel = nullptr;
       if (projected) {
-        if (!projected->in_front[k] || !(fabs(dot(m.point.normal, projected->pixel[k] - m.found)) < within)) continue;
+        const size_t v = static_cast<size_t>(m.point_index);
+        if (!projected->in_front[v]) continue;
+        p = &projected->in_camera[v];
+        pixel = &projected->pixel[v];
       } else {
-        const Vec3 p = camera_from_model * m.point.point_in_model;
-        if (p.z <= real(0) || !projects_near(camera, through_lens, p, m.point.normal, m.found, within)) continue;
+        own = camera_from_model * m.point.point_in_model;
+        if (own.z <= real(0)) continue;
       }
+      if (!projects_near(camera, through_lens, *p, pixel, m.point.normal, m.found, within)) continue;
       remembered_.push_back({m.point.point_in_model, m.contrast});
     }
     if (remembered_.size() > group_first) add_group(matches[first].point.edge, group_first);

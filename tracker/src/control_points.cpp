@@ -258,13 +258,24 @@ void keep_visible(std::vector<ControlPoint>& points, const EdgeIdBuffer& edge_id
 
 void project_points(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& camera_from_model,
                     ProjectedPoints& out) {
-  out.pixel.assign(points.size(), Vec2{real(0), real(0)});
-  out.in_front.assign(points.size(), 0);
-  for (size_t p = 0; p < points.size(); ++p) {
+  // Every slot is written: resized, not filled first. The arrays through local pointers: a
+  // store to in_front (bytes) could alias the vectors' own pointers.
+  const size_t count = points.size();
+  out.in_camera.resize(count);
+  out.pixel.resize(count);
+  out.in_front.resize(count);
+  Vec3* in_camera_out = out.in_camera.data();
+  Vec2* pixel_out = out.pixel.data();
+  unsigned char* in_front_out = out.in_front.data();
+  const bool through_lens = camera.distorted();
+  for (size_t p = 0; p < count; ++p) {
     const Vec3 in_camera = camera_from_model * points[p].point_in_model;
-    if (in_camera.z <= real(0)) continue;
-    out.pixel[p] = camera.project(in_camera);
-    out.in_front[p] = 1;
+    const bool in_front = in_camera.z > real(0);
+    Vec2 pixel{real(0), real(0)};
+    if (in_front) pixel = through_lens ? camera.project_through_lens(in_camera) : camera.project_without_lens(in_camera);
+    in_camera_out[p] = in_camera;
+    pixel_out[p] = pixel;
+    in_front_out[p] = in_front;
   }
 }
 

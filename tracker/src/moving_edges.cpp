@@ -4,6 +4,7 @@
 #include "edgetrack/moving_edges.h"
 
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <type_traits>
 #if defined(__x86_64__)
@@ -254,10 +255,12 @@ unsigned chunk_peaks_sse2(int* likelihood, int* conv, const ChunkCandidates& c, 
   return candidates & ((2u << c.last) - 1) & ~((1u << c.first) - 1);
 }
 
-#if defined(__x86_64__)
+#if defined(__x86_64__) && defined(EDGETRACK_VECTOR_KERNELS_TWICE)
 /// chunk_peaks_sse2 eight at a time; the far end's slot kChunk + 1, past the two vectors, alone.
-/// conv's 8 slots past the n-th are set to 0.
-[[gnu::target("avx2")]] unsigned chunk_peaks_avx2(int* likelihood, int* conv, ChunkCandidates c, int threshold) {
+/// conv's 8 slots past the n-th are set to 0. Inlined into the search's AVX2 build
+/// (search_sites_avx2).
+[[gnu::target("avx2")]] inline unsigned chunk_peaks_avx2(int* likelihood, int* conv, const ChunkCandidates& c,
+                                                         int threshold) {
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(conv + kLead + c.n), _mm256_setzero_si256());
   for (int k = 0; k < c.n; k += 8) {
     const __m256i magnitude = _mm256_abs_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(conv + kLead + k)));
@@ -283,8 +286,8 @@ unsigned chunk_peaks_sse2(int* likelihood, int* conv, const ChunkCandidates& c, 
 #endif
 
 /// for_each_path_peak's vector path: the responses a chunk of the path at a time (MaskResponse
-/// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time,
-/// branch-free.
+/// loads the mask once per chunk), and the maxima of each chunk tested four pixels at a time
+/// (AVX2: eight), branch-free.
 template <class Visit>
 void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits, const ControlPoint& point, Visit visit) {
   const int range = limits.range, threshold = limits.threshold;
@@ -301,7 +304,7 @@ void path_peaks_in_chunks(const MaskResponse& response, const SiteLimits& limits
     }
     const bool far_end = start + n == length;
     const ChunkCandidates chunk{n, start == 0 ? kLead : 1, far_end ? n + 1 : n, far_end};
-#if defined(__x86_64__)
+#if defined(__x86_64__) && defined(EDGETRACK_VECTOR_KERNELS_TWICE)
     unsigned candidates = limits.avx2 ? chunk_peaks_avx2(likelihood, conv, chunk, threshold)
                                       : chunk_peaks_sse2(likelihood, conv, chunk, threshold);
 #else
@@ -491,12 +494,16 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
   return matches;
 }
 
-void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
-                         unsigned int range, int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
-                         const std::vector<unsigned char>* strict) {
-  matches.clear();
+namespace {
+
+/// search_moving_edges with its limits.
+void search_sites(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                  const SiteLimits& limits, int hypotheses, std::vector<EdgeMatch>& matches,
+                  const std::vector<real>* references, const std::vector<unsigned char>* strict) {
+  // The slots of the last frame's matches are written over, field by field, rather than built
+  // anew: a new EdgeMatch would zero its alternatives, which only alternative_count of are read.
+  size_t kept = 0;
   matches.reserve(points.size());
-  const SiteLimits limits(me, range);
   // The points of one straight edge share its normal, so its mask is looked up once per run.
   Vec2 mask_normal{real(0), real(0)};
   std::optional<MaskResponse> mask_response;
@@ -513,14 +520,47 @@ void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<C
     const PathSearch found = search_path(response, limits, point, reference, hypotheses > 1 ? hypotheses + 1 : 0);
     SitePixel site;
     if (!choose_site(found, reference, strict && (*strict)[p] != 0, site)) continue;
-    matches.emplace_back();
-    EdgeMatch& match = matches.back();
+    if (kept == matches.size()) matches.emplace_back();
+    EdgeMatch& match = matches[kept++];
     match.point = point;
     match.point_index = static_cast<int>(p);
-    match.contrast = real(site.conv);
     match.found = refined_edge_point(response, site.i, site.j, site.conv, point);
+    match.outlier = false;
+    match.excluded = false;
+    match.contrast = real(site.conv);
+    match.alternative_count = 0;
+    match.chosen = 0;
     if (hypotheses > 1) add_alternatives(response, found, hypotheses, site, match);
   }
+  matches.erase(matches.begin() + static_cast<std::ptrdiff_t>(kept), matches.end());
+}
+
+#if defined(__x86_64__) && defined(EDGETRACK_VECTOR_KERNELS_TWICE)
+/// search_sites built for AVX2 with its callees in this file inlined, the chunks' peaks among
+/// them: a call per site's path cost more than the peaks' test.
+[[gnu::target("avx2"), gnu::flatten]] void search_sites_avx2(const vpImage<unsigned char>& grey,
+                                                            const std::vector<ControlPoint>& points, const vpMe& me,
+                                                            const SiteLimits& limits, int hypotheses,
+                                                            std::vector<EdgeMatch>& matches,
+                                                            const std::vector<real>* references,
+                                                            const std::vector<unsigned char>* strict) {
+  search_sites(grey, points, me, limits, hypotheses, matches, references, strict);
+}
+#endif
+
+}  // namespace
+
+void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
+                         unsigned int range, int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references,
+                         const std::vector<unsigned char>* strict) {
+  const SiteLimits limits(me, range);
+#if defined(__x86_64__) && defined(EDGETRACK_VECTOR_KERNELS_TWICE)
+  if (limits.avx2) {
+    search_sites_avx2(grey, points, me, limits, hypotheses, matches, references, strict);
+    return;
+  }
+#endif
+  search_sites(grey, points, me, limits, hypotheses, matches, references, strict);
 }
 
 }  // namespace edgetrack

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "edgetrack/angles.h"
@@ -46,19 +47,22 @@ class StepClock {
 /// where `pose` projects it, pixels: what the moving-edge search had to reach. The shift
 /// n . (project(P) - pixel) is |a X + b Y + c Z| / Z; the largest is found by comparing cross
 /// products, so that one division is left for the frame (an ARMv5TE has no divider). Through a
-/// lens the shift needs the projection itself: `projected` holds each point's (project_points).
+/// lens the shift needs the projection itself. `projected`, given through a lens and else when
+/// shared (shares_projections), holds each point at `pose` (project_points).
 real largest_normal_shift(const std::vector<ControlPoint>& points, const PinholeCamera& camera, const Se3& pose,
-                          const ProjectedPoints& projected) {
+                          const ProjectedPoints* projected) {
   using std::fabs;
   if (camera.distorted()) {
     real worst(0);
     for (size_t p = 0; p < points.size(); ++p)
-      if (projected.in_front[p]) worst = std::max(worst, fabs(dot(points[p].normal, projected.pixel[p] - points[p].pixel)));
+      if (projected->in_front[p])
+        worst = std::max(worst, fabs(dot(points[p].normal, projected->pixel[p] - points[p].pixel)));
     return worst;
   }
   real worst_numerator(0), worst_depth(1);
-  for (const ControlPoint& p : points) {
-    const Vec3 in_camera = pose * p.point_in_model;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const ControlPoint& p = points[k];
+    const Vec3 in_camera = projected ? projected->in_camera[k] : pose * p.point_in_model;
     if (in_camera.z <= real(0)) continue;
     const real offset = dot(p.normal, Vec2{camera.u0, camera.v0} - p.pixel);
     const real numerator = fabs(sum_of_products(p.normal.x * camera.px, in_camera.x, p.normal.y * camera.py,
@@ -125,9 +129,9 @@ class Tracker::State {
   bool started_ = false;            ///< a frame has been trusted since the start or the last reset
   bool start_is_guess_ = false;     ///< the last reset's StartPose was kGuess
   StatusStatistics status_statistics_;  ///< what a tracked frame looks like on this scene
-  ProjectedPoints solved_pixels_;  ///< through a lens, where the solved pose projects the visible points (judge)
+  /// The visible points at the solved pose (judge), where shares_projections().
+  ProjectedPoints solved_pixels_;
   Se3 solved_pixels_pose_;  ///< the pose solved_pixels_ were projected with
-  ProjectedPoints remembered_pixels_;  ///< solved_pixels_ per match, for the contrast memory (conclude)
 
  private:
   /// The grey step: converts what the moving edges will read (read_boxes_) and returns the image
@@ -165,9 +169,14 @@ class Tracker::State {
                        PoseSolution& solution);
   /// The motion model and the contrast memory take the frame's result; the next frame's start.
   void conclude(FrameResult& result);
-  /// Through a lens, solved_pixels_ per match when judge projected the matches' points with
-  /// `solved` (the last attempt's pose), else null: the contrast memory then projects them.
-  const ProjectedPoints* projected_matches(const Se3& solved);
+  /// solved_pixels_ when judge projected the visible points with `solved` (the last attempt's
+  /// pose), else null: the contrast memory then projects the matches' points.
+  const ProjectedPoints* projected_matches(const Se3& solved) const;
+  /// Whether the status measures and the contrast memory share one transform of each visible
+  /// point at the solved pose (solved_pixels_): in floating point, and through a lens (a
+  /// projection is dear); fixed point's targets keep the RAM (the firmware's arena at cube.xml's
+  /// settings has no room for it) and transform each point where it is used.
+  bool shares_projections() const { return std::numeric_limits<real>::is_iec559 || camera_.distorted(); }
   /// A camera created without an image size takes the first frame's: the camera is checked
   /// with it and the image buffers sized (the one frame that allocates them).
   std::optional<Error> take_frame_size(const FrameView& frame);
@@ -271,8 +280,8 @@ TrackerMemory Tracker::memory() const {
   m.grey_image = static_cast<size_t>(s.grey_.getWidth()) * s.grey_.getHeight();
   m.control_points = capacity_bytes(s.visible_) + capacity_bytes(s.read_boxes_) +
                      capacity_bytes(s.references_) + capacity_bytes(s.borrowed_) +
-                     capacity_bytes(s.solved_pixels_.pixel) + capacity_bytes(s.solved_pixels_.in_front) +
-                     capacity_bytes(s.remembered_pixels_.pixel) + capacity_bytes(s.remembered_pixels_.in_front);
+                     capacity_bytes(s.solved_pixels_.in_camera) + capacity_bytes(s.solved_pixels_.pixel) +
+                     capacity_bytes(s.solved_pixels_.in_front);
   m.matches = capacity_bytes(s.matches_);
   m.pose_workspace = s.pose_workspace_.heap_bytes() + s.drift_workspace_.heap_bytes() + s.row_times_.heap_bytes();
   m.contrast_memory = s.contrast_memory_.heap_bytes();
@@ -307,11 +316,10 @@ void Tracker::State::reserve_for_limits() {
   pose_workspace_.reserve(points, camera_.distorted());
   if (drift_check_runs(params_.thin_lines)) drift_workspace_.reserve(points);
   contrast_memory_.reserve(points, static_cast<size_t>(limits_.primitives));
-  if (camera_.distorted()) {
-    for (ProjectedPoints* projected : {&solved_pixels_, &remembered_pixels_}) {
-      projected->pixel.reserve(points);
-      projected->in_front.reserve(points);
-    }
+  if (shares_projections()) {
+    solved_pixels_.in_camera.reserve(points);
+    solved_pixels_.pixel.reserve(points);
+    solved_pixels_.in_front.reserve(points);
   }
   if (params_.readout != real(0)) row_times_.reserve(points);
   if (limits_.colour_frames) {
@@ -515,12 +523,14 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.inlier_share = m.matched > 0 ? real(m.kept) / real(m.matched) : real(0);
   m.residual_scale = result.pose.residual_scale;
   const Se3& solved = result.pose.camera_from_model;
-  // Through a lens, each point's projection once for the two measures that need it.
-  if (camera_.distorted()) {
+  // Each point at the solved pose once, for the measures and the contrast memory.
+  const ProjectedPoints* projected = nullptr;
+  if (shares_projections()) {
     project_points(visible_, camera_, solved, solved_pixels_);
     solved_pixels_pose_ = solved;
+    projected = &solved_pixels_;
   }
-  m.correction_px = largest_normal_shift(visible_, camera_, solved, solved_pixels_);
+  m.correction_px = largest_normal_shift(visible_, camera_, solved, projected);
   const Se3 change = solved * start.inverse();
   m.translation_change_mm = to_millimetres(norm(solved.translation() - start.translation()));
   m.rotation_change_deg = real(kDegreesPerRadian) * norm(rotation_log(change.rotation()));
@@ -532,7 +542,7 @@ void Tracker::State::judge(const vpImage<unsigned char>& grey, const Se3& start,
   m.after_loss = motion_.lost_last_frame();
   const EdgeSupport support =
       edge_support(grey, visible_, read_boxes_, camera_, solved, params_.status.gradient_floor, support_bound_,
-                   camera_.distorted() ? &solved_pixels_ : nullptr);
+                   projected);
   m.support_share = m.visible > 0 ? real(support.supported) / real(m.visible) : real(0);
   m.gradient_angle_deg = support.mean_angle_deg;
   const FrameStatus judged =
@@ -556,17 +566,10 @@ void Tracker::State::conclude(FrameResult& result) {
   camera_from_model_ = motion_.prediction();
 }
 
-const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) {
-  if (!camera_.distorted() || !same_bits(solved, solved_pixels_pose_)) return nullptr;
-  remembered_pixels_.pixel.resize(matches_.size());
-  remembered_pixels_.in_front.resize(matches_.size());
-  // matches_ are the tracker's own, searched from visible_: each point_index is below its size.
-  for (size_t k = 0; k < matches_.size(); ++k) {
-    const size_t v = static_cast<size_t>(matches_[k].point_index);
-    remembered_pixels_.pixel[k] = solved_pixels_.pixel[v];
-    remembered_pixels_.in_front[k] = solved_pixels_.in_front[v];
-  }
-  return &remembered_pixels_;
+const ProjectedPoints* Tracker::State::projected_matches(const Se3& solved) const {
+  const bool current = shares_projections() && same_bits(solved, solved_pixels_pose_) &&
+                       solved_pixels_.in_front.size() == visible_.size();
+  return current ? &solved_pixels_ : nullptr;
 }
 
 }  // namespace edgetrack

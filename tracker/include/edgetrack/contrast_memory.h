@@ -36,8 +36,8 @@ class ContrastMemory {
   /// solved pose, and whose |contrast| is at least half its primitive's mean over the kept
   /// matches (a point under an occluder matched to noise by chance is not its edge). `matches`
   /// come grouped by primitive, one run per primitive, as the sampling orders them. `projected`, when given, holds
-  /// each match's point projected at camera_from_model (project_points), so that a lens's
-  /// projections are not computed again.
+  /// the points the matches were searched from at camera_from_model (project_points), a match's
+  /// at its point_index, so that no point is transformed or projected again.
   void remember(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& camera_from_model,
                 const real& within, const ProjectedPoints* projected = nullptr);
   /// For each point, the contrast remembered at the nearest remembered point of the same

@@ -54,10 +54,11 @@ size_t sample_control_points(const EdgeModel& model, const PinholeCamera& camera
                              const SamplingParams& params, const FaceVisibility& faces,
                              std::vector<ControlPoint>& points);
 
-/// Where a pose projects each of some points (control points, or the points of matches), and
-/// whether each is in front of the camera (else its pixel is (0, 0)): through a lens a projection
-/// is dear, so the frame's status measures and the contrast memory share one per point.
+/// Each of some points (control points) in the camera frame at a pose, whether it is in front of
+/// the camera, and where it projects then (else (0, 0)): the frame's status measures and the
+/// contrast memory share one transform per point, and through a lens one projection.
 struct ProjectedPoints {
+  std::vector<Vec3> in_camera;
   std::vector<Vec2> pixel;
   std::vector<unsigned char> in_front;
 };

@@ -9,6 +9,8 @@ namespace edgetrack {
 /// The most edge hypotheses a control point keeps (moving_edges.h), `found` included.
 constexpr int kMaxHypotheses = 4;
 
+/// search_moving_edges writes each field over a reused match's, all but the alternatives past
+/// alternative_count (never read): a new field must be set there too.
 struct EdgeMatch {
   ControlPoint point;
   /// Where `point` sits in the control points it was searched from (search_moving_edges), so

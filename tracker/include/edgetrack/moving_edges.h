@@ -57,7 +57,7 @@ std::vector<EdgeMatch> search_moving_edges(const vpImage<unsigned char>& grey, c
                                            const vpMe& me, unsigned int range, int hypotheses = 1,
                                            const std::vector<real>* references = nullptr,
                                            const std::vector<unsigned char>* strict = nullptr);
-/// The same into `matches` (emptied first, memory reused).
+/// The same into `matches` (its earlier matches replaced, memory reused).
 void search_moving_edges(const vpImage<unsigned char>& grey, const std::vector<ControlPoint>& points, const vpMe& me,
                          unsigned int range, int hypotheses, std::vector<EdgeMatch>& matches, const std::vector<real>* references = nullptr,
                          const std::vector<unsigned char>* strict = nullptr);

@@ -59,9 +59,12 @@ struct PinholeCamera {
 
   /// The pixel a point in the camera frame projects to, through the lens; the point must have Z > 0.
   Vec2 project(const Vec3& point_in_camera) const {
-    if (!distorted())
-      return {u0 + px * point_in_camera.x / point_in_camera.z, v0 + py * point_in_camera.y / point_in_camera.z};
+    if (!distorted()) return project_without_lens(point_in_camera);
     return project_through_lens(point_in_camera);
+  }
+  /// project() of a camera that is not distorted(), for a loop that asked once.
+  Vec2 project_without_lens(const Vec3& point_in_camera) const {
+    return {u0 + px * point_in_camera.x / point_in_camera.z, v0 + py * point_in_camera.y / point_in_camera.z};
   }
   /// project() through the lens, out of line: the pinhole's stays short where it is inlined.
   Vec2 project_through_lens(const Vec3& point_in_camera) const;
