@@ -91,7 +91,8 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // only where their step from the start would end as far away as the check could report is the
   // second solve run, in deviations at the scale the rest are predicted to fit at after that step.
   verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
-                                             solved.camera_from_model, sigma_floor, &verdict.gate_scale_px);
+                                             solved.camera_from_model, sigma_floor, &verdict.gate_scale_px,
+                                             lines.check_sigmas);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;

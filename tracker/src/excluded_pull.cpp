@@ -80,7 +80,8 @@ real predicted_scale(size_t count, real* residual, real* const (&column)[kDof], 
 }  // namespace
 
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
-                          const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px) {
+                          const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px,
+                          const real& decided_within) {
   using std::sqrt;
   if (scale_px) *scale_px = sigma_floor;
   const real unconstrained = real(kUnconstrainedPx);
@@ -129,6 +130,10 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
     if (!(component < kWhitenedCap && component > -kWhitenedCap)) return unconstrained;
     square += component * component;
   }
+  const real distance = sqrt(square);
+  const real at_floor = distance / sigma_floor;
+  // A larger scale only lowers the bound: within `decided_within` at the floor it is decided.
+  if (!(at_floor > decided_within)) return at_floor;
   // The kept rows' own step, Delta_2 = -L^-T z, back in the solver's coordinates: x = T Delta_2.
   real step[kDof];
   for (int j = kDof - 1; j >= 0; --j) {
@@ -146,7 +151,7 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
   // model the rest fit no closer than all of them did, and the check could not act).
   const real scale = std::max(predicted_scale(kept, residual, column, x), sigma_floor);
   if (scale_px) *scale_px = scale;
-  const real sigmas = sqrt(square) / scale;
+  const real sigmas = distance / scale;
   return sigmas > unconstrained ? unconstrained : sigmas;
 }
 
