@@ -165,6 +165,19 @@ static void test_pull_gate() {
   // Within a deviation, not 0: S47.16's LM ends where its resolution does, short of the optimum.
   TEST("leaving nothing out moves it by less than a deviation (the pose is their optimum)", none_out < real(1), true);
   TEST("leaving a true edge out moves it by less than 3 sigmas", noisy.solved && true_out < real(3), true);
+  // A model that fits loosely (every match off its edge by a noise of 1 px, a scale well over the
+  // floor): the rest fit their own pose no closer than all of them did, and the gate is taken at
+  // the scale they are predicted to have there, near the first solve's, not at the floor.
+  std::vector<EdgeMatch> loose = cube_matches(model.value(), camera, start, -1, real(0), real(1));
+  const PoseSolution fitted = solve_pose(loose, camera, start, plain, workspace);
+  for (EdgeMatch& m : loose) m.excluded = m.point.edge == kept;
+  real gate_scale(0);
+  const real loose_out = excluded_pull_sigmas(loose, rows, model.value(), start, fitted.camera_from_model, sigma, &gate_scale);
+  std::printf("%s: loose fit, first scale %.3f px, gate's predicted scale %.3f px, %.2f sigmas\n", real_name(),
+              static_cast<double>(fitted.residual_scale), static_cast<double>(gate_scale), static_cast<double>(loose_out));
+  TEST("on a loose fit the gate's scale is the one the rest are predicted to fit at, near the first's",
+       fitted.solved && gate_scale > real(0.7) * fitted.residual_scale && gate_scale < real(1.4) * fitted.residual_scale,
+       true);
 }
 
 /// A flat grey image with, beside each of `matches` whose edge is in `lined`, the profile of a

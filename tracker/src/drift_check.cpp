@@ -89,12 +89,10 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // Matches on the object's own edges that the test calls lines (texture, a real scene's
   // approximate model) give, without the rest, the pose the first solve found, within its noise:
   // only where their step from the start would end as far away as the check could report is the
-  // second solve run. The check allows the second pose's deviations, at its own scale, which is
-  // not known yet and may lie far below the first's (matches on lines spread the residuals the
-  // rest fit closely without them): the bound is taken at the least scale the check can allow,
-  // the floor, or it would refuse the frames the lines pulled most.
+  // second solve run, in deviations at the scale the rest are predicted to fit at after that step.
   verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
-                                             solved.camera_from_model, sigma_floor);
+                                             solved.camera_from_model, sigma_floor, &verdict.gate_scale_px,
+                                             lines.check_sigmas);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;
@@ -126,11 +124,11 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
     const real noise = real(2 * kMadRelativeError) / sqrt(real(static_cast<int>(kept)));
     verdict.fits_as_closely = !(verdict.second.residual_scale > (real(1) + noise) * solved.residual_scale);
     // The lines' pull bounds the parting to first order (the gate's bound times the uncertainty
-    // at the floor); a second pose far beyond it (twice: the robust rounds move on from the lines)
+    // at the gate's scale); a second pose far beyond it (twice: the robust rounds move on from the lines)
     // is another basin the rest fell into from a start they do not hold (a turn the prediction
     // missed), not the pose the lines pulled the frame from.
     const real explained =
-        real(2) * verdict.pull_sigmas * verdict.allowed_px / lines.check_sigmas * sigma_floor / sigma;
+        real(2) * verdict.pull_sigmas * verdict.allowed_px / lines.check_sigmas * verdict.gate_scale_px / sigma;
     verdict.drifted =
         verdict.parted_px > verdict.allowed_px && verdict.fits_as_closely && !(verdict.parted_px > explained);
   }

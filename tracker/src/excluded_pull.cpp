@@ -3,9 +3,13 @@
 /// from the first solve's, in its standard deviations (excluded_pull_sigmas). Once a frame, and
 /// only with the check on: apart from the pose's covariance (pose_uncertainty.cpp), whose loops
 /// run over every match, so that the microcontroller builds it for size.
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "edgetrack/millimetres.h"
+#include "edgetrack/order_statistic.h"
+#include "edgetrack/pose_solver.h"
 #include "edgetrack/pose_uncertainty.h"
 #include "pose_perturbation.h"
 #include "real/sum_of_products.h"
@@ -48,11 +52,38 @@ void to_perturbation(const Vec3& d, const real& inv_radius, real (&h)[kDof][kDof
   for (int i = 0; i < 3; ++i) g[3 + i] = turned[i];
 }
 
+/// The residual scale the kept rows are predicted to have after their Gauss-Newton step x from
+/// the start (solver coordinates), 1.4826 times the median |r_i + J_i x| over the `count` rows, as
+/// PoseSolution::residual_scale is over the matches off the lines; 0 where over half the rows
+/// weigh nothing. The rows carry the first solve's start weights (1 - u^2, u a distance over the
+/// Tukey cut, several scales out): about the median a weighted residual is the match's own within
+/// a few percent, and a row of weight 0 (beyond the cut at the start) is counted above the median,
+/// as the second solve's scale counts such a match. What is left is at most the residual: a scale
+/// no larger than the second's, so the gate errs towards running the second solve. The predicted
+/// magnitudes are written over the residuals, which the gate has summed.
+real predicted_scale(size_t count, real* residual, real* const (&column)[kDof], const real (&x)[kDof]) {
+  using std::fabs;
+  size_t weighed = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if (column[0][i] == real(0) && column[1][i] == real(0)) continue;  // weight 0: no row
+    real predicted = residual[i];
+    for (int k = 0; k < kDof; ++k) predicted += column[k][i] * x[k];
+    residual[weighed++] = fabs(predicted);
+  }
+  const size_t middle = count / 2;
+  if (weighed <= middle) return real(0);
+  if constexpr (std::is_floating_point<real>::value) return real(kMadToSigma) * kth_smallest(residual, weighed, middle);
+  std::nth_element(residual, residual + middle, residual + weighed);  // as median_of_values in fixed point
+  return real(kMadToSigma) * residual[middle];
+}
+
 }  // namespace
 
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
-                          const Se3& start, const Se3& solved, const real& sigma) {
+                          const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px,
+                          const real& decided_within) {
   using std::sqrt;
+  if (scale_px) *scale_px = sigma_floor;
   const real unconstrained = real(kUnconstrainedPx);
   const size_t m = matches.size();
   if (!rows.kept || rows.residuals.size() != m || rows.jacobian.size() != m * kDof) return unconstrained;
@@ -99,7 +130,28 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
     if (!(component < kWhitenedCap && component > -kWhitenedCap)) return unconstrained;
     square += component * component;
   }
-  const real sigmas = sqrt(square) / sigma;
+  const real distance = sqrt(square);
+  const real at_floor = distance / sigma_floor;
+  // A larger scale only lowers the bound: within `decided_within` at the floor it is decided.
+  if (!(at_floor > decided_within)) return at_floor;
+  // The kept rows' own step, Delta_2 = -L^-T z, back in the solver's coordinates: x = T Delta_2.
+  real step[kDof];
+  for (int j = kDof - 1; j >= 0; --j) {
+    real s = -z[j];
+    for (int k = j + 1; k < kDof; ++k) s -= h[k][j] * step[k];
+    step[j] = s * inv_diagonal[j];
+  }
+  const Vec3 d = centre_mm - to_millimetres(start.translation());
+  const Vec3 turn_by = inv_radius * Vec3{step[3], step[4], step[5]};
+  const Vec3 shift = Vec3{step[0], step[1], step[2]} + cross(d, turn_by);
+  const real x[kDof] = {shift.x, shift.y, shift.z, turn_by.x, turn_by.y, turn_by.z};
+  // The check allows the second pose's deviations at that pose's own scale: the gate takes the
+  // scale the kept matches are predicted to fit at there, not the first's (which matches on
+  // lines inflate, the frames the lines pull most) nor the floor alone (on a loosely fitting
+  // model the rest fit no closer than all of them did, and the check could not act).
+  const real scale = std::max(predicted_scale(kept, residual, column, x), sigma_floor);
+  if (scale_px) *scale_px = scale;
+  const real sigmas = distance / scale;
   return sigmas > unconstrained ? unconstrained : sigmas;
 }
 

@@ -50,8 +50,11 @@ struct DriftWorkspace {
 struct DriftVerdict {
   int lines = 0;  ///< matches whose used hypothesis the test called a line
   /// How far the other matches alone would move the pose, to first order, in standard
-  /// deviations at the residual scale's floor (excluded_pull_sigmas); 0 when no match was called a line.
+  /// deviations at gate_scale_px (excluded_pull_sigmas); 0 when no match was called a line.
   real pull_sigmas{0};
+  /// px, the residual scale the other matches are predicted to fit at after that move, at least
+  /// the floor: the scale of pull_sigmas.
+  real gate_scale_px{0};
   bool checked = false;  ///< pull_sigmas above check_sigmas, and the second pose was solved
   /// px, the largest distance between the two poses' projections of the model's overlay points
   /// (vertices, cylinder axis ends, circle centres)
@@ -63,7 +66,7 @@ struct DriftVerdict {
   /// pose, not where true edges were left out.
   bool fits_as_closely = false;
   /// parted_px above allowed_px, fits_as_closely, and parted_px within twice what the gate's
-  /// first-order bound explains (pull_sigmas times the uncertainty at the floor): beyond, the rest
+  /// first-order bound explains (pull_sigmas times the uncertainty at gate_scale_px): beyond, the rest
   /// settled in another basin from a start they do not hold.
   bool drifted = false;
   PoseSolution second;   ///< the second pose, when checked
@@ -82,8 +85,8 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
-/// pose by more than `lines.check_sigmas` standard deviations at the residual scale `sigma_floor`
-/// (the least the second pose's own scale, which the check allows, is taken to be; bounded from
+/// pose by more than `lines.check_sigmas` standard deviations at the residual scale they are
+/// predicted to fit at, at least `sigma_floor` (the second pose's own, which the check allows; bounded from
 /// the rows `solved`'s first solve kept in `drift_workspace.start_rows`, without them the bound
 /// is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the
 /// two poses compared. `matches` come back as they came, the first solve's marks included (held in

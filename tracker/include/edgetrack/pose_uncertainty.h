@@ -38,11 +38,17 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
 /// g = J^T W delta, summed from that solve's own rows at the start, `rows`), against the move
 /// Delta_1 from `start` to `solved`, measured by the covariance sigma^2 H^-1:
 /// |L^T (Delta_2 - Delta_1)| / sigma, in the coordinates pose_uncertainty_px takes (a move of
-/// the model's centre and a turn about it). By Cauchy-Schwarz no overlay point of the two poses
-/// then parts, to first order, by more than this many times the RMS displacement
-/// pose_uncertainty_px bounds. The excluded matches' rows are set to 0 in `rows`. At most
-/// kUnconstrainedPx, which it also is when H is singular or `rows` were not kept.
+/// the model's centre and a turn about it). sigma is the residual scale the kept matches are
+/// predicted to have after Delta_2 (a MAD of their rows' residuals moved by it), at least
+/// `sigma_floor`; it is written to `scale_px` where given (`sigma_floor` when no step was
+/// taken, or where the bound at `sigma_floor` is already at most `decided_within`: a caller
+/// that only asks whether it passes that many deviations need not predict the scale). By
+/// Cauchy-Schwarz no overlay point of the two poses then parts, to first order, by more than
+/// this many times the RMS displacement pose_uncertainty_px bounds at sigma. `rows` are spent
+/// (the kept rows moved to the front, their residuals overwritten). At most kUnconstrainedPx,
+/// which it also is when H is singular or `rows` were not kept.
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
-                          const Se3& start, const Se3& solved, const real& sigma);
+                          const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px = nullptr,
+                          const real& decided_within = real(0));
 
 }  // namespace edgetrack
