@@ -367,7 +367,7 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
   // near plane and on the guard band is not clipped: its corners are theirs as they are.
   const size_t points = model.cylinder_points.size();
   cylinder_points_.resize(points);
-  if (std::numeric_limits<real>::is_iec559 && !camera_.distorted()) {
+  if (std::numeric_limits<real>::is_iec559 && points > 0 && !camera_.distorted()) {
     move_rim_points_in_lanes(model.cylinder_points, camera_from_model, camera_, cylinder_points_);
   } else {
     for (size_t i = 0; i < points; ++i) {
