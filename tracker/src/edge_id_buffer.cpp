@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "edgetrack/contours.h"
 #include "edgetrack/cylinder_windows.h"
@@ -11,6 +12,7 @@
 #include "edgetrack/floor_to_int.h"
 #include "edgetrack/raster.h"
 #include "edgetrack/tracker_memory.h"
+#include "real/vector_kernels.h"
 
 namespace edgetrack {
 
@@ -297,6 +299,57 @@ void EdgeIdBuffer::collect_faces(const EdgeModel& model, const Se3& camera_from_
   }
 }
 
+namespace {
+
+/// collect_cylinder_sides' rim points in floating point through a pinhole camera, a batch at a
+/// time: each moved, projected (project_vertex) and tested against the guard band in a vector
+/// lane with the one-by-one loop's expressions (the same bits), then stored, and rounded
+/// (to_screen) on the guard band, as the loop does.
+template <class CylinderPoint>
+void move_rim_points_in_lanes(const std::vector<Vec3>& rim, const Se3& camera_from_model, const PinholeCamera& camera,
+                              std::vector<CylinderPoint>& out) {
+  constexpr int kBatch = 32;
+  vector_kernels::run([&]() __attribute__((always_inline)) {
+    const Se3 pose = camera_from_model;
+    const real u0 = camera.u0, v0 = camera.v0, px = camera.px, py = camera.py;
+    // on_guard_band's bounds; its test without branches.
+    const real lo_x = real(-kGuardPixels), hi_x = real(camera.width - 1 + kGuardPixels);
+    const real lo_y = real(-kGuardPixels), hi_y = real(camera.height - 1 + kGuardPixels);
+    real x[kBatch], y[kBatch], z[kBatch], projected_x[kBatch], projected_y[kBatch], w[kBatch], band[kBatch];
+    const size_t count = rim.size();
+    for (size_t first = 0; first < count; first += kBatch) {
+      const int n = count - first < size_t(kBatch) ? static_cast<int>(count - first) : kBatch;
+      for (int k = 0; k < n; ++k) {
+        const Vec3 p = pose * rim[first + static_cast<size_t>(k)];
+        x[k] = p.x;
+        y[k] = p.y;
+        z[k] = p.z;
+      }
+      for (int k = 0; k < n; ++k) {
+        w[k] = real(1) / z[k];
+        projected_x[k] = u0 + px * x[k] * w[k];
+        projected_y[k] = v0 + py * y[k] * w[k];
+        const real &sx = projected_x[k], &sy = projected_y[k];
+        band[k] = (sx - lo_x >= real(0)) & (hi_x - sx >= real(0)) & (sy - lo_y >= real(0)) & (hi_y - sy >= real(0))
+                      ? real(1)
+                      : real(0);
+      }
+      for (int k = 0; k < n; ++k) {
+        CylinderPoint& p = out[first + static_cast<size_t>(k)];
+        p.in_camera = Vec3{x[k], y[k], z[k]};
+        p.in_front = in_front_of_near_plane(&p.in_camera, 1);
+        p.on_band = false;
+        if (!p.in_front) continue;
+        p.projected = ProjectedVertex{projected_x[k], projected_y[k], w[k]};
+        p.on_band = band[k] != real(0);
+        if (p.on_band) p.screen = to_screen(p.projected);
+      }
+    }
+  });
+}
+
+}  // namespace
+
 void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& camera_from_model) {
   // Where a cylinder's rim boxes apply (cylinder_windows.h), no facet is clipped: each projects to
   // one triangle, whose signed area (as fill_triangle rounds it) says which way it faces.
@@ -314,15 +367,19 @@ void EdgeIdBuffer::collect_cylinder_sides(const EdgeModel& model, const Se3& cam
   // near plane and on the guard band is not clipped: its corners are theirs as they are.
   const size_t points = model.cylinder_points.size();
   cylinder_points_.resize(points);
-  for (size_t i = 0; i < points; ++i) {
-    CylinderPoint& p = cylinder_points_[i];
-    p.in_camera = camera_from_model * model.cylinder_points[i];
-    p.in_front = in_front_of_near_plane(&p.in_camera, 1);
-    p.on_band = false;
-    if (!p.in_front) continue;
-    p.projected = project_vertex(camera_, p.in_camera);
-    p.on_band = on_guard_band(camera_, p.projected);
-    if (p.on_band) p.screen = to_screen(p.projected);
+  if (std::numeric_limits<real>::is_iec559 && points > 0 && !camera_.distorted()) {
+    move_rim_points_in_lanes(model.cylinder_points, camera_from_model, camera_, cylinder_points_);
+  } else {
+    for (size_t i = 0; i < points; ++i) {
+      CylinderPoint& p = cylinder_points_[i];
+      p.in_camera = camera_from_model * model.cylinder_points[i];
+      p.in_front = in_front_of_near_plane(&p.in_camera, 1);
+      p.on_band = false;
+      if (!p.in_front) continue;
+      p.projected = project_vertex(camera_, p.in_camera);
+      p.on_band = on_guard_band(camera_, p.projected);
+      if (p.on_band) p.screen = to_screen(p.projected);
+    }
   }
   facets_.resize(model.cylinder_surface.size());
   for (size_t k = 0; k < model.cylinder_surface.size(); ++k) {

@@ -27,6 +27,21 @@ void for_each_overlay_point(const EdgeModel& model, Visit visit) {
 }
 
 
+/// d(n . pixel)/d(v, w) from (nu, nv) = n^T d(pixel)/d(x/Z, y/Z) / Z, the image covector of the
+/// normal at the camera-frame point `in_camera_mm` (inline_pixel_gradient's second half).
+__attribute__((always_inline)) inline void gradient_of_covector(const real& nu, const real& nv, const Vec3& in_camera_mm,
+                                                                const real& inv_z, const Vec3& offset_mm, real g[kDof]) {
+  const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
+  // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).
+  const Vec3 turn = -cross(a, offset_mm);
+  g[0] = a.x;
+  g[1] = a.y;
+  g[2] = a.z;
+  g[3] = turn.x;
+  g[4] = turn.y;
+  g[5] = turn.z;
+}
+
 /// d(n . pixel)/d(v, w) for the camera-frame point `in_camera_mm` with 1 / Z `inv_z` (one
 /// division per point: they are dear without a divider), `offset_mm` its offset from the
 /// model's centre in the camera frame, w in radians (scale_turns scales it by the radius).
@@ -44,15 +59,7 @@ __attribute__((always_inline)) inline void inline_pixel_gradient(const PinholeCa
     nu = n.x * camera.px * inv_z;
     nv = n.y * camera.py * inv_z;
   }
-  const Vec3 a{nu, nv, -(nu * (in_camera_mm.x * inv_z) + nv * (in_camera_mm.y * inv_z))};
-  // d(point)/dw = -hat(offset), so a . d(point)/dw = -(a x offset).
-  const Vec3 turn = -cross(a, offset_mm);
-  g[0] = a.x;
-  g[1] = a.y;
-  g[2] = a.z;
-  g[3] = turn.x;
-  g[4] = turn.y;
-  g[5] = turn.z;
+  gradient_of_covector(nu, nv, in_camera_mm, inv_z, offset_mm, g);
 }
 
 /// inline_pixel_gradient, out of line: one copy for the per-vertex loop and fixed point.
@@ -130,6 +137,59 @@ real whitened_square(const real (&l)[kDof][kDof], const real (&inv_diagonal)[kDo
   return sum;
 }
 
+/// sum_information's rows through a pinhole camera in floating point, a batch of matches at a
+/// time: the kept matches' values gathered into arrays, each match's row computed in a vector
+/// lane with the one-by-one loop's expressions in its order (the same bits), and the rows within
+/// the cut added in match order (the same sums).
+void sum_information_in_lanes(const std::vector<EdgeMatch>& matches, const PinholeCamera& camera, const Se3& pose,
+                              const Vec3& centre_mm, const real& inv_cut, InformationSum& sum) {
+  using std::fabs;
+  constexpr int kBatch = 32;
+  vector_kernels::run([&]() __attribute__((always_inline)) {
+    // In locals: the stores to the arrays could otherwise alias them.
+    const Se3 at = pose;
+    const Vec3 centre = centre_mm;
+    const real u0 = camera.u0, v0 = camera.v0, px = camera.px, py = camera.py, cut = inv_cut;
+    real x[kBatch], y[kBatch], z[kBatch], nx[kBatch], ny[kBatch], ux[kBatch], uy[kBatch];
+    real rows[kDof][kBatch];
+    real kept[kBatch];  // 1 where the match's row is summed
+    const size_t count = matches.size();
+    for (size_t m = 0; m < count;) {
+      int n = 0;
+      for (; m < count && n < kBatch; ++m) {
+        const EdgeMatch& match = matches[m];
+        if (match.excluded || match.outlier) continue;
+        x[n] = match.point.point_in_model.x;
+        y[n] = match.point.point_in_model.y;
+        z[n] = match.point.point_in_model.z;
+        nx[n] = match.point.normal.x;
+        ny[n] = match.point.normal.y;
+        ux[n] = match.used().x;
+        uy[n] = match.used().y;
+        ++n;
+      }
+      for (int k = 0; k < n; ++k) {
+        const Vec3 in_camera = to_millimetres(at * Vec3{x[k], y[k], z[k]});
+        const real inv_z = real(1) / in_camera.z;
+        const real delta =
+            nx[k] * (u0 + px * (in_camera.x * inv_z) - ux[k]) + ny[k] * (v0 + py * (in_camera.y * inv_z) - uy[k]);
+        const real u = fabs(delta) * cut;
+        kept[k] = !(in_camera.z <= real(0)) && !(u >= real(1)) ? real(1) : real(0);
+        const real root_weight = real(1) - u * u;
+        real g[kDof];
+        gradient_of_covector(nx[k] * px * inv_z, ny[k] * py * inv_z, in_camera, inv_z, in_camera - centre, g);
+        for (int i = 0; i < kDof; ++i) rows[i][k] = root_weight * g[i];
+      }
+      for (int k = 0; k < n; ++k) {
+        if (kept[k] == real(0)) continue;
+        real row[kDof];
+        for (int i = 0; i < kDof; ++i) row[i] = rows[i][k];
+        sum.add(row);
+      }
+    }
+  });
+}
+
 /// Sums the lower triangle of the information matrix over `matches` at `pose` (each row of
 /// W^(1/2) J with Tukey's weights cut at `cut` px, of the distances to each match's used()
 /// hypothesis; excluded matches and outliers left out). Turns in radians.
@@ -139,6 +199,13 @@ void sum_information(const std::vector<EdgeMatch>& matches, const PinholeCamera&
   const bool through_lens = camera.distorted();
   const real inv_cut = real(1) / cut;
   InformationSum sum(information);
+  if constexpr (std::numeric_limits<real>::is_iec559) {
+    if (!through_lens) {
+      sum_information_in_lanes(matches, camera, pose, centre_mm, inv_cut, sum);
+      sum.flush();
+      return;
+    }
+  }
   real g[kDof];
   for (const EdgeMatch& match : matches) {
     if (match.excluded || match.outlier) continue;

@@ -175,7 +175,7 @@ work_kind_awk='
     if (f ~ /PointToLineProblem|solve_pose|solve_once|kth_smallest|median_of|tukey|rotation_exp|so3_|choose_nearest/) return "pose problem (residuals, Jacobian, weights, medians)"
     if (f ~ /EdgeIdBuffer|setup_triangle|draw_line|walk_line|clip_|project_vertex|cylinder_rim_boxes|in_front_of_near_plane|contour|on_guard_band/) return "Edge-ID rendering"
     if (f ~ /check_drift|thin_line|excluded_pull|to_perturbation|hold_marks|give_back_marks|mark_outliers_at|largest_overlay_distance/) return "drift check (thin-line test, gate; its second solves count as pose and MINPACK)"
-    if (f ~ /edge_support|project_points|pose_uncertainty|pixel_gradient|sum_information|InformationSum|factor_at|judge|conclude|Status/) return "status (edge support, pose uncertainty)"
+    if (f ~ /edge_support|support_in_lanes|project_points|pose_uncertainty|pixel_gradient|sum_information|InformationSum|factor_at|judge|conclude|Status/) return "status (edge support, pose uncertainty)"
     if (f ~ /ContrastMemory/) return "contrast memory"
     if (f ~ /sample_|keep_visible|FaceVisibility/) return "control points (sampling, visibility tests)"
     return "other (grey scaling, prediction, the track call itself, allocation)"
