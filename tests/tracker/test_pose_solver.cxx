@@ -136,6 +136,23 @@ static void test_pose_solver() {
   TEST_EQUAL("no match is left out", chosen.outliers, 0);
   TEST_NEAR("the pose from the nearest hypotheses is right (mm)", position_error_mm(chosen.camera_from_model, truth),
             0, 10 * tol_mm);
+  // A caller's matches may claim more alternatives than a match holds, or fewer than none: the
+  // pose step reads the array only (under UBSan an index past it stops the test).
+  std::vector<EdgeMatch> overclaimed = two_hypotheses, underclaimed = spoiled;
+  for (size_t i = 0; i < overclaimed.size(); i += 10) {
+    overclaimed[i].alternative_count = 1000;
+    for (int a = 1; a < kMaxHypotheses - 1; ++a) overclaimed[i].alternatives[a] = spoiled[i].found;
+    underclaimed[i].alternative_count = -3;
+  }
+  const PoseSolution over = solve_pose(overclaimed, camera, start, params);
+  TEST_NEAR("a count over the array's reads the alternatives it holds (mm)",
+            position_error_mm(over.camera_from_model, chosen.camera_from_model), 0, 10 * tol_mm);
+  const PoseSolution under = solve_pose(underclaimed, camera, start, params);
+  TEST_NEAR("a negative count is none (mm)", position_error_mm(under.camera_from_model, robust.camera_from_model), 0,
+            tol_mm);
+  underclaimed[0].chosen = 7;
+  TEST("and a chosen hypothesis it does not hold is its strongest edge", &underclaimed[0].used() == &underclaimed[0].found,
+       true);
   PoseParams plain = params;
   plain.tukey_c = real(0);
   std::vector<EdgeMatch> spoiled_again = spoiled;

@@ -69,6 +69,14 @@ static void test_thin_line_profiles() {
   TEST_EQUAL("the one without an alternative off the line goes", matches.size(), size_t(1));
   TEST_NEAR("the other takes its first alternative off the line", static_cast<double>(matches[0].found.x), 14.5, 1e-9);
   TEST_EQUAL("and keeps none of those before it", matches[0].alternative_count, 0);
+  std::vector<EdgeMatch> overclaimed{match_at(real(8.5))};
+  overclaimed[0].alternatives[0] = Vec2{real(8.5), real(10)};
+  overclaimed[0].alternatives[1] = Vec2{real(8.5), real(10)};
+  overclaimed[0].alternatives[2] = Vec2{real(14.5), real(10)};
+  overclaimed[0].alternative_count = 1000;  // a caller's count past the array: only the three held are read
+  reject_thin_line_matches(line_then_step, overclaimed, params);
+  TEST("a match claiming more alternatives than it holds takes the last one held",
+       overclaimed.size() == 1 && overclaimed[0].found.x == real(14.5) && overclaimed[0].alternative_count == 0, true);
   std::vector<EdgeMatch> on_step{match_at(real(8.5))};
   TEST_EQUAL("a match on a step edge stays", reject_thin_line_matches(step, on_step, params), 0);
   TEST_EQUAL("unchanged", on_step.size(), size_t(1));

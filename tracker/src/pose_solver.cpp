@@ -243,7 +243,7 @@ class PointToLineProblem {
       }
     for (size_t i = 0; i < count; ++i) {
       const EdgeMatch& m = matches[i];
-      if (!all && m.alternative_count == 0) continue;
+      if (!all && m.alternatives_held() == 0) continue;
       if (all) set(w.model_mm, i, to_millimetres(m.point.point_in_model));
       const Vec2& n = m.point.normal;
       set(w.unweighted, i,
@@ -533,11 +533,12 @@ bool choose_nearest_hypotheses(std::vector<EdgeMatch>& matches, std::vector<real
   bool changed = false;
   for (size_t i = 0; i < matches.size(); ++i) {
     EdgeMatch& m = matches[i];
-    if (m.alternative_count == 0) continue;
+    const int held = m.alternatives_held();
+    if (held == 0) continue;
     const Vec2 used = m.used();
     const real delta = distances[i];
     real nearest = delta;
-    for (int h = 0; h <= m.alternative_count; ++h) {
+    for (int h = 0; h <= held; ++h) {
       const real d = delta + dot(m.point.normal, used - (h == 0 ? m.found : m.alternatives[h - 1]));
       if (fabs(d) < fabs(nearest)) {
         nearest = d;
@@ -647,7 +648,7 @@ PoseSolution solve_pose(std::vector<EdgeMatch>& matches, const PinholeCamera& ca
   const bool masked = excluded > 0;  // the drift check excluded some: the median and weights skip them
   // Without alternatives (one hypothesis per match) no choice can change between rounds.
   const bool alternatives = std::any_of(matches.begin(), matches.end(),
-                                        [](const EdgeMatch& m) { return m.alternative_count > 0; });
+                                        [](const EdgeMatch& m) { return m.alternatives_held() > 0; });
   if (taken < needed) return solution;
   for (EdgeMatch& m : matches) m.chosen = 0;  // the first solve uses the strongest edges
   PointToLineProblem::prepare_matches(matches, camera, true, workspace);

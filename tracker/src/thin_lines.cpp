@@ -81,14 +81,14 @@ int reject_thin_line_matches(const vpImage<unsigned char>& grey, std::vector<Edg
     const bool line = on_thin_line(grey, match.found, match.point.normal, brighter_along_normal, params);
     if (line) {
       ++changed;
+      const int held = match.alternatives_held();
       int a = 0;
-      while (a < match.alternative_count &&
-             on_thin_line(grey, match.alternatives[a], match.point.normal, brighter_along_normal, params))
+      while (a < held && on_thin_line(grey, match.alternatives[a], match.point.normal, brighter_along_normal, params))
         ++a;
-      if (a == match.alternative_count) continue;
+      if (a == held) continue;
       match.found = match.alternatives[a];
-      std::copy(match.alternatives + a + 1, match.alternatives + match.alternative_count, match.alternatives);
-      match.alternative_count -= a + 1;
+      std::copy(match.alternatives + a + 1, match.alternatives + held, match.alternatives);
+      match.alternative_count = held - (a + 1);
     }
     matches[kept++] = match;
   }

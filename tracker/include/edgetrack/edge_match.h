@@ -34,7 +34,13 @@ struct EdgeMatch {
   /// The hypothesis the pose step's last robust round used: 0 is `found`, a + 1 alternatives[a].
   int chosen = 0;
 
-  const Vec2& used() const { return chosen == 0 ? found : alternatives[chosen - 1]; }
+  /// alternative_count within what the array holds: a caller's match may say anything, and
+  /// nothing reads past alternatives[].
+  int alternatives_held() const {
+    return alternative_count < 0 ? 0 : alternative_count < kMaxHypotheses - 1 ? alternative_count : kMaxHypotheses - 1;
+  }
+  /// The chosen hypothesis; `found` when chosen names none held.
+  const Vec2& used() const { return chosen > 0 && chosen <= alternatives_held() ? alternatives[chosen - 1] : found; }
 };
 
 }  // namespace edgetrack
