@@ -5,7 +5,6 @@
 /// run over every match, so that the microcontroller builds it for size.
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/order_statistic.h"
@@ -72,9 +71,7 @@ real predicted_scale(size_t count, real* residual, real* const (&column)[kDof], 
   }
   const size_t middle = count / 2;
   if (weighed <= middle) return real(0);
-  if constexpr (std::is_floating_point<real>::value) return real(kMadToSigma) * kth_smallest(residual, weighed, middle);
-  std::nth_element(residual, residual + middle, residual + weighed);  // as median_of_values in fixed point
-  return real(kMadToSigma) * residual[middle];
+  return real(kMadToSigma) * kth_of_values(residual, weighed, middle);
 }
 
 }  // namespace
