@@ -78,7 +78,7 @@ real predicted_scale(size_t count, real* residual, real* const (&column)[kDof], 
 
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
                           const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px,
-                          const real& decided_within) {
+                          const real& decided_within, Se3* stepped) {
   using std::sqrt;
   if (scale_px) *scale_px = sigma_floor;
   const real unconstrained = real(kUnconstrainedPx);
@@ -142,6 +142,10 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
   const Vec3 turn_by = inv_radius * Vec3{step[3], step[4], step[5]};
   const Vec3 shift = Vec3{step[0], step[1], step[2]} + cross(d, turn_by);
   const real x[kDof] = {shift.x, shift.y, shift.z, turn_by.x, turn_by.y, turn_by.z};
+  if (stepped) {  // as the pose step's x moves the pose (PointToLineProblem::pose)
+    const real mm(kMillimetresPerMetre);
+    *stepped = start.retract(Vec3{shift.x / mm, shift.y / mm, shift.z / mm}, turn_by);
+  }
   // The check allows the second pose's deviations at that pose's own scale: the gate takes the
   // scale the kept matches are predicted to fit at there, not the first's (which matches on
   // lines inflate, the frames the lines pull most) nor the floor alone (on a loosely fitting
