@@ -90,9 +90,10 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   // approximate model) give, without the rest, the pose the first solve found, within its noise:
   // only where their step from the start would end as far away as the check could report is the
   // second solve run, in deviations at the scale the rest are predicted to fit at after that step.
+  Se3 warm_start = start;
   verdict.pull_sigmas = excluded_pull_sigmas(matches, drift_workspace.start_rows, model, start,
                                              solved.camera_from_model, sigma_floor, &verdict.gate_scale_px,
-                                             lines.check_sigmas);
+                                             lines.check_sigmas, &warm_start);
   if (!(verdict.pull_sigmas > lines.check_sigmas)) {
     for (EdgeMatch& match : matches) match.excluded = false;
     return verdict;
@@ -104,7 +105,10 @@ DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMat
   second.solver = PoseSolver::kNormalEquations;
   StartRows* const first_rows = workspace.start_rows;  // the first solve's, which the gate has read
   workspace.start_rows = nullptr;
-  verdict.second = solve_pose(matches, camera, start, second, workspace);
+  // From the gate's Gauss-Newton step of the same rows: LM's first step from `start` would land
+  // near it. The weights are the same from either start (the first solve weighs the distances
+  // at the control points' pixels, which `start` projected), so the solve has the same optimum.
+  verdict.second = solve_pose(matches, camera, warm_start, second, workspace);
   workspace.start_rows = first_rows;
   if (verdict.second.solved) {
     verdict.checked = true;

@@ -5,7 +5,6 @@
 /// run over every match, so that the microcontroller builds it for size.
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "edgetrack/millimetres.h"
 #include "edgetrack/order_statistic.h"
@@ -72,16 +71,14 @@ real predicted_scale(size_t count, real* residual, real* const (&column)[kDof], 
   }
   const size_t middle = count / 2;
   if (weighed <= middle) return real(0);
-  if constexpr (std::is_floating_point<real>::value) return real(kMadToSigma) * kth_smallest(residual, weighed, middle);
-  std::nth_element(residual, residual + middle, residual + weighed);  // as median_of_values in fixed point
-  return real(kMadToSigma) * residual[middle];
+  return real(kMadToSigma) * kth_of_values(residual, weighed, middle);
 }
 
 }  // namespace
 
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
                           const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px,
-                          const real& decided_within) {
+                          const real& decided_within, Se3* stepped) {
   using std::sqrt;
   if (scale_px) *scale_px = sigma_floor;
   const real unconstrained = real(kUnconstrainedPx);
@@ -145,6 +142,10 @@ real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows
   const Vec3 turn_by = inv_radius * Vec3{step[3], step[4], step[5]};
   const Vec3 shift = Vec3{step[0], step[1], step[2]} + cross(d, turn_by);
   const real x[kDof] = {shift.x, shift.y, shift.z, turn_by.x, turn_by.y, turn_by.z};
+  if (stepped) {  // as the pose step's x moves the pose (PointToLineProblem::pose)
+    const real mm(kMillimetresPerMetre);
+    *stepped = start.retract(Vec3{shift.x / mm, shift.y / mm, shift.z / mm}, turn_by);
+  }
   // The check allows the second pose's deviations at that pose's own scale: the gate takes the
   // scale the kept matches are predicted to fit at there, not the first's (which matches on
   // lines inflate, the frames the lines pull most) nor the floor alone (on a loosely fitting

@@ -5,11 +5,11 @@
 /// pose is bounded to first order (excluded_pull_sigmas): where that move is within
 /// ThinLineParams::check_sigmas of the pose's uncertainty, the lines did not pull the pose, no
 /// second solve can find they did, and the first solve stands, bit for bit. Otherwise the rest
-/// are solved again from the same start; where the two poses' overlays part by more than the
-/// check allows and the rest fit the second pose as closely as all the matches fit the first
-/// (within the noise of a robust scale), by no more than twice what the bound explains, the
-/// lines moved the pose: the tracker takes the second
-/// pose or reports the frame uncertain (ThinLineParams::check).
+/// are solved again from the same start (LM set off at the bound's Gauss-Newton step); where the
+/// two poses' overlays part by more than the check allows and the rest fit the second pose as
+/// closely as all the matches fit the first (within the noise of a robust scale), by no more than
+/// twice what the bound explains, the lines moved the pose: the tracker takes the second pose or
+/// reports the frame uncertain (ThinLineParams::check).
 #pragma once
 
 #include <vector>
@@ -88,8 +88,8 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 /// pose by more than `lines.check_sigmas` standard deviations at the residual scale they are
 /// predicted to fit at, at least `sigma_floor` (the second pose's own, which the check allows; bounded from
 /// the rows `solved`'s first solve kept in `drift_workspace.start_rows`, without them the bound
-/// is unconstrained), they are solved again from `start` (pose_params, in `workspace`) and the
-/// two poses compared. `matches` come back as they came, the first solve's marks included (held in
+/// is unconstrained), they are solved again from `start` (pose_params, in `workspace`; LM set off
+/// at the bound's Gauss-Newton step of them, which has the same optimum) and the two poses compared. `matches` come back as they came, the first solve's marks included (held in
 /// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,

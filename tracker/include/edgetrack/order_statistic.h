@@ -121,19 +121,25 @@ T kth_smallest(T* values, size_t n, size_t k) {
   return in[k];
 }
 
+/// The k-th smallest (0-based) of values[0..n), k < n, as std::nth_element places it at k;
+/// `values` is work (reordered). The same number either way: floating point by kth_smallest (a
+/// host CPU mispredicts nth_element's comparisons), fixed point (ARMv5TE, no such cost) by
+/// std::nth_element in place.
+template <class T>
+T kth_of_values(T* values, size_t n, size_t k) {
+  if constexpr (std::is_floating_point<T>::value) {
+    return kth_smallest(values, n, k);
+  } else {
+    std::nth_element(values, values + k, values + n);
+    return values[k];
+  }
+}
+
 /// The median of values[0..n), n > 0, as std::nth_element places it at n / 2 (the upper middle
-/// one for an even n); `values` is work (reordered). The same number either
-/// way: floating point by kth_smallest (a host CPU mispredicts nth_element's comparisons), fixed
-/// point (ARMv5TE, no such cost) by std::nth_element in place.
+/// one for an even n); `values` is work (reordered).
 template <class T>
 T median_of_values(T* values, size_t n) {
-  const size_t mid = n / 2;
-  if constexpr (std::is_floating_point<T>::value) {
-    return kth_smallest(values, n, mid);
-  } else {
-    std::nth_element(values, values + mid, values + n);
-    return values[mid];
-  }
+  return kth_of_values(values, n, n / 2);
 }
 
 }  // namespace edgetrack

@@ -46,9 +46,11 @@ real pose_uncertainty_px(const std::vector<EdgeMatch>& matches, const EdgeModel&
 /// Cauchy-Schwarz no overlay point of the two poses then parts, to first order, by more than
 /// this many times the RMS displacement pose_uncertainty_px bounds at sigma. `rows` are spent
 /// (the kept rows moved to the front, their residuals overwritten). At most kUnconstrainedPx,
-/// which it also is when H is singular or `rows` were not kept.
+/// which it also is when H is singular or `rows` were not kept. Where the scale was predicted,
+/// `stepped` (where given) becomes `start` moved by Delta_2: the kept rows' own pose to first
+/// order, from which a solve of them needs fewer steps; otherwise it is left as it was.
 real excluded_pull_sigmas(const std::vector<EdgeMatch>& matches, StartRows& rows, const EdgeModel& model,
                           const Se3& start, const Se3& solved, const real& sigma_floor, real* scale_px = nullptr,
-                          const real& decided_within = real(0));
+                          const real& decided_within = real(0), Se3* stepped = nullptr);
 
 }  // namespace edgetrack
