@@ -33,7 +33,7 @@ echo "best matches per distance; those within 16 degrees and a quarter radius of
 echo "the rest screened by 3 tracker frames at a 15 px sample step and ranked, tracked before uncertain before"
 echo "lost, then by the points kept; the best 8 refined in that order until one fits within a quarter pixel"
 echo "keeping 80 % of the points (confident): each first as a tracker on a still scene at a 5 px sample step at"
-echo "the tracking range, then again from its pose as a given one (the contrasts taken there), the first near"
+echo "the tracking range, then, unless already confident, again from its pose as a given one (the contrasts taken there), the first near"
 echo "miss (tracked, supported, not confident) refined again at once from its pose tilted 8 degrees each way"
 echo "about the camera's x and y axes, then a widened search for those left unacceptable, then, none"
 echo "confident, the best one's tilted restarts unless it was that near miss; the default work budget of $budget"

@@ -269,8 +269,9 @@ void Detector::finish(const FrameView& frame, RefinedCandidate& candidate) {
   // followed the contrasts of those: beside a parallel edge or on textured clutter the run can
   // settle a few pixels off. Started again as a given pose, the contrasts are taken where this
   // pose puts the model's edges and the first solve is weighted at it, as a tracked frame is.
+  // A confident run already fits within the edges' localisation and ends the search as it is.
   RefinedCandidate given = candidate;
-  if (params_.given_iterations > 0 && candidate.status != TrackingStatus::kLost &&
+  if (params_.given_iterations > 0 && candidate.status != TrackingStatus::kLost && !confident(candidate, params_) &&
       run_frames(tracker_, frame, params_.given_iterations, given, Tracker::StartPose::kGiven) &&
       better(given, candidate, params_))
     candidate = given;

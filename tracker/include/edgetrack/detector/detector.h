@@ -34,7 +34,8 @@ struct DetectorParams {
   /// nearest template's, up to the grid's reach off (14 degrees, docs/results/detection.md); a
   /// turn that large moves the outline of a model some 75 px in radius in the image (60 mm
   /// across at 150 mm) by up to 18 px, which a first frame's search (twice the range) reaches
-  /// from range 10 and not from 6 (12 px, about 9 degrees). The better of the two is
+  /// from range 10 and not from 6 (12 px, about 9 degrees). The better of the two, unless
+  /// already confident (it ends the search as it is), is
   /// run again for `given_iterations` from its pose as a given one (Tracker::StartPose::kGiven:
   /// the contrasts taken where it puts the model's edges, the first solve weighted at it), which
   /// is kept when better: the guessed runs take each point's strongest edge in the range, and
