@@ -86,11 +86,13 @@ int mark_outliers_at(std::vector<EdgeMatch>& matches, const PinholeCamera& camer
 /// The drift check of `solved`, the pose step's solution of `matches` from `start`: the matches
 /// whose used() hypothesis lies on a thin line are masked out; where the rest would move the
 /// pose by more than `lines.check_sigmas` standard deviations at the residual scale they are
-/// predicted to fit at, at least `sigma_floor` (the second pose's own, which the check allows; bounded from
-/// the rows `solved`'s first solve kept in `drift_workspace.start_rows`, without them the bound
-/// is unconstrained), they are solved again from `start` (pose_params, in `workspace`; LM set off
-/// at the bound's Gauss-Newton step of them, which has the same optimum) and the two poses compared. `matches` come back as they came, the first solve's marks included (held in
-/// `drift_workspace` meanwhile); nothing is allocated once the workspaces have room.
+/// predicted to fit at, at least `sigma_floor` (the second pose's own, which the check allows;
+/// bounded from the rows `solved`'s first solve kept in `drift_workspace.start_rows`, without
+/// them the bound is unconstrained), they are solved again from `start` (pose_params, in
+/// `workspace`; LM set off at the bound's Gauss-Newton step of them, which has the same optimum)
+/// and the two poses compared. `matches` come back as they came, the first solve's marks
+/// included (held in `drift_workspace` meanwhile); nothing is allocated once the workspaces
+/// have room.
 DriftVerdict check_drift(const vpImage<unsigned char>& grey, std::vector<EdgeMatch>& matches, const PoseSolution& solved,
                          const EdgeModel& model, const PinholeCamera& camera, const Se3& start,
                          const PoseParams& pose_params, const ThinLineParams& lines, const real& sigma_floor,
